@@ -1,0 +1,156 @@
+"""Task registry: TaskSpec rows, ``make``, ``list_tasks``; every task also goes to gymnasium.
+
+Games register their variants next to their class, as data::
+
+    register_variants(Snake, "Classics", {
+        "glyphbench/classics-snake-easy-v0": dict(size=8, max_turns=128),
+    })
+
+A spec's ``game`` may also be a ``"module:Class"`` string so that wrappers over heavy engines
+(JAX, NLE) are imported only when one of their tasks is made.
+"""
+
+from __future__ import annotations
+
+import difflib
+import fnmatch
+import importlib
+import re
+from dataclasses import dataclass, field
+from types import MappingProxyType
+from typing import Any, Iterable, Mapping
+
+import gymnasium as gym
+
+from .task import STANDARD_TURN_CAP, GlyphTask
+
+ID_PATTERN = re.compile(r"^glyphbench/[a-z0-9]+(?:-[a-z0-9]+)*-v\d+$")
+SUITES = ("Classics", "MiniGrid", "MiniHack", "Craftax", "MiniAtari", "Procgen",
+          "Atari", "FullCraftax", "NetHack")
+TIERS = ("standard", "extended")
+
+
+class UnknownTaskError(LookupError):
+    pass
+
+
+@dataclass(frozen=True)
+class TaskSpec:
+    id: str
+    suite: str
+    tier: str
+    game: type | str
+    params: Mapping[str, Any] = field(default_factory=dict)
+    max_turns: int = 100
+
+    def __post_init__(self) -> None:
+        if not ID_PATTERN.match(self.id):
+            raise ValueError(f"task id {self.id!r} does not match glyphbench/<suite>-<game>[-<variant>]-vN")
+        if self.suite not in SUITES:
+            raise ValueError(f"{self.id}: unknown suite {self.suite!r}; suites: {', '.join(SUITES)}")
+        if self.tier not in TIERS:
+            raise ValueError(f"{self.id}: tier must be one of {TIERS}, got {self.tier!r}")
+        if self.tier == "standard" and not 1 <= self.max_turns <= STANDARD_TURN_CAP:
+            raise ValueError(f"{self.id}: standard tasks end by {STANDARD_TURN_CAP} turns")
+        object.__setattr__(self, "params", MappingProxyType(dict(self.params)))
+
+    @property
+    def game_name(self) -> str:
+        g = self.game
+        return g.__name__ if isinstance(g, type) else g.rsplit(":", 1)[-1]
+
+    def load_class(self) -> type[GlyphTask]:
+        if isinstance(self.game, type):
+            return self.game
+        module, _, name = self.game.partition(":")
+        return getattr(importlib.import_module(module), name)
+
+    def make(self, **overrides: Any) -> GlyphTask:
+        params = dict(self.params)
+        max_turns = overrides.pop("max_turns", self.max_turns)
+        render_mode = overrides.pop("render_mode", None)
+        params.update(overrides)
+        cls = self.load_class()
+        env = cls(max_turns=max_turns, tier=self.tier, task_id=self.id, render_mode=render_mode, **params)
+        env.spec = _gym_spec(self)
+        return env
+
+
+_REGISTRY: dict[str, TaskSpec] = {}
+
+
+def register(spec: TaskSpec) -> TaskSpec:
+    if spec.id in _REGISTRY and _REGISTRY[spec.id] != spec:
+        raise ValueError(f"task {spec.id} is already registered")
+    _REGISTRY[spec.id] = spec
+    if spec.id not in gym.registry:
+        gym.register(id=spec.id, entry_point="glyphbench_rl.core.registry:_gym_entry",
+                     kwargs={"task_id": spec.id}, nondeterministic=False,
+                     disable_env_checker=False, order_enforce=True)
+    return spec
+
+
+def register_variants(game: type | str, suite: str, variants: Mapping[str, Mapping[str, Any]],
+                      tier: str = "standard") -> None:
+    """Register one game's variants; each value holds parameters plus ``max_turns``."""
+    for task_id, params in variants.items():
+        params = dict(params)
+        max_turns = params.pop("max_turns")
+        register(TaskSpec(task_id, suite, tier, game, params, max_turns))
+
+
+def _gym_entry(task_id: str, **overrides: Any) -> GlyphTask:
+    return get_spec(task_id).make(**overrides)
+
+
+def _gym_spec(spec: TaskSpec):
+    return gym.spec(spec.id)
+
+
+def get_spec(task_id: str) -> TaskSpec:
+    try:
+        return _REGISTRY[task_id]
+    except KeyError:
+        raise UnknownTaskError(unknown_task_message(task_id)) from None
+
+
+def unknown_task_message(task_id: str) -> str:
+    close = difflib.get_close_matches(str(task_id), list(_REGISTRY), n=3, cutoff=0.5)
+    if not close:  # try the short form "snake-easy" against "classics-snake-easy"
+        core = {tid.split("/", 1)[-1].rsplit("-v", 1)[0]: tid for tid in _REGISTRY}
+        close = [core[c] for c in difflib.get_close_matches(str(task_id), list(core), n=3, cutoff=0.4)]
+    hint = f"; closest: {', '.join(close)}" if close else "; run `glyphbench list` for all IDs"
+    return f"unknown task {task_id!r}{hint}"
+
+
+def make(task_id: str, **overrides: Any) -> GlyphTask:
+    """Build a task by ID; keyword overrides replace its parameters (or ``max_turns``)."""
+    return get_spec(task_id).make(**overrides)
+
+
+def list_tasks(suite: str | None = None, pattern: str | None = None,
+               tier: str | None = None) -> list[str]:
+    """Registered task IDs, in catalog order, filtered by suite (case-insensitive), glob, tier."""
+    if suite is not None:
+        wanted = {s.lower() for s in SUITES}
+        if suite.lower() not in wanted:
+            raise ValueError(f"unknown suite {suite!r}; suites: {', '.join(SUITES)}")
+    ids = []
+    for spec in _REGISTRY.values():
+        if suite is not None and spec.suite.lower() != suite.lower():
+            continue
+        if tier is not None and spec.tier != tier:
+            continue
+        if pattern is not None and not fnmatch.fnmatchcase(spec.id, pattern):
+            continue
+        ids.append(spec.id)
+    return sorted(ids, key=_sort_key)
+
+
+def _sort_key(task_id: str) -> tuple[int, str]:
+    suite = _REGISTRY[task_id].suite
+    return SUITES.index(suite), task_id
+
+
+def specs() -> Iterable[TaskSpec]:
+    return [_REGISTRY[t] for t in list_tasks()]

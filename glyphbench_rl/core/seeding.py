@@ -1,0 +1,69 @@
+"""Seed ranges and derived random streams.
+
+Training draws game instances from [0, 1,000,000) and held-out evaluation from
+[1,000,000, 2,000,000), so the two never overlap. Independent streams are derived with
+``numpy.random.SeedSequence`` (never ``seed + i``, whose streams collide across runs).
+"""
+
+from __future__ import annotations
+
+import hashlib
+from numbers import Integral
+
+import numpy as np
+
+TRAIN_SEEDS = range(0, 1_000_000)
+HELDOUT_SEEDS = range(1_000_000, 2_000_000)
+MAX_SEED = 2**63 - 1
+
+
+def check_seed(seed: object) -> int:
+    """Return ``seed`` as an int, or raise TypeError/ValueError saying what is wrong with it."""
+    if isinstance(seed, bool) or not isinstance(seed, Integral):
+        raise TypeError(
+            f"reset() needs an int seed, got {seed!r} ({type(seed).__name__}): every glyphbench "
+            f"episode is reproducible from its seed (training seeds {TRAIN_SEEDS.start:,}.."
+            f"{TRAIN_SEEDS.stop - 1:,}, held-out seeds {HELDOUT_SEEDS.start:,}..{HELDOUT_SEEDS.stop - 1:,})")
+    seed = int(seed)
+    if not 0 <= seed <= MAX_SEED:
+        raise ValueError(f"seed must be in 0..{MAX_SEED}, got {seed}")
+    return seed
+
+
+def split_of(seed: int) -> str:
+    """'train', 'heldout' or 'other' for a seed."""
+    if seed in TRAIN_SEEDS:
+        return "train"
+    if seed in HELDOUT_SEEDS:
+        return "heldout"
+    return "other"
+
+
+def _key(part: int | str) -> int:
+    if isinstance(part, str):  # stable across processes, unlike hash()
+        return int.from_bytes(hashlib.blake2b(part.encode(), digest_size=8).digest(), "little")
+    return int(part)
+
+
+def seed_sequence(seed: int, *keys: int | str) -> np.random.SeedSequence:
+    """The stream for ``seed`` named by ``keys`` (strings hash stably), e.g. ("level",)."""
+    return np.random.SeedSequence(seed, spawn_key=tuple(_key(k) for k in keys))
+
+
+def generator(seed: int, *keys: int | str) -> np.random.Generator:
+    return np.random.Generator(np.random.PCG64(seed_sequence(seed, *keys)))
+
+
+def training_seeds(run_seed: int, count: int, *keys: int | str) -> list[int]:
+    """``count`` distinct training seeds for a run, reproducible from ``run_seed`` and ``keys``."""
+    if count > len(TRAIN_SEEDS):
+        raise ValueError(f"at most {len(TRAIN_SEEDS)} distinct training seeds")
+    rng = generator(run_seed, "training-seeds", *keys)
+    return [int(s) + TRAIN_SEEDS.start for s in rng.choice(len(TRAIN_SEEDS), size=count, replace=False)]
+
+
+def heldout_seeds(count: int, start: int = 0) -> list[int]:
+    """The first ``count`` held-out seeds after ``start``: identical for every model (paired)."""
+    if start < 0 or count < 0 or start + count > len(HELDOUT_SEEDS):
+        raise ValueError(f"held-out seeds {start}..{start + count} exceed the held-out range")
+    return list(HELDOUT_SEEDS[start:start + count])

@@ -1,0 +1,244 @@
+"""GlyphTask: the gymnasium environment every game derives from.
+
+The invariants of the task contract are enforced here, once:
+turn cap and truncation, return clamp for standard tasks, forfeit turns, refusal of steps after
+the end, rewards accumulated (never overwritten) within a step, and the system prompt composed
+from the game's rules template, its parameters and its ActionSet.
+
+A game supplies: ``title``, ``rules``/``rewards``/``ends`` templates (formatted with the game's
+parameters), a ``Params`` dataclass, a glyph vocabulary ``glyphs`` (legend order), an ActionSet,
+and four hooks: ``_setup(rng)``, ``_act(action)``, ``_grid()`` and ``_hud()``. Inside ``_act``
+the game reports outcomes with ``self.reward(x)``, ``self.finish(won)`` and ``self.say(text)``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import string
+from typing import Any, ClassVar, Mapping
+
+import gymnasium as gym
+import numpy as np
+
+from .actions import ActionSet
+from .frame import Frame, build_frame
+from .seeding import check_seed
+
+STANDARD_TURN_CAP = 512
+_RETURN_EPS = 1e-9
+
+OBSERVATION_CONVENTIONS = (
+    "Each turn you see a status line (Step t/N and other counters), the grid (one character per "
+    "cell, north at the top), a legend of the glyphs on the grid, and a message when something "
+    "happened.")
+AXES_CONVENTION = "Columns are lettered from A at the left and rows numbered from 1 at the top; a cell is named like C4."
+ACTION_FORMAT = "Reply with exactly one action from the list as <action>NAME</action>."
+
+
+class EpisodeEnded(RuntimeError):
+    """A step was asked of an episode that has already terminated or been truncated."""
+
+
+@dataclasses.dataclass(frozen=True)
+class NoParams:
+    pass
+
+
+class GlyphTask(gym.Env[str, int]):
+    metadata: ClassVar[dict] = {"render_modes": ["ansi"], "render_fps": 4}
+
+    # -- declared by each game ----------------------------------------------------------------
+    title: ClassVar[str] = ""
+    rules: ClassVar[str] = ""       # how the game works; str.format template over prompt_fields()
+    rewards: ClassVar[str] = ""     # how reward is earned and lost; same template fields
+    ends: ClassVar[str] = ""        # "when ..." clause for termination, or "" if only the cap ends it
+    Params: ClassVar[type] = NoParams
+    ACTIONS: ClassVar[ActionSet | None] = None
+    glyphs: ClassVar[Mapping[str, str]] = {}   # legend vocabulary, in legend order
+    extra_chars: ClassVar[str] = ""            # non-ASCII characters used in HUD or messages
+    axes: ClassVar[bool] = False
+    default_max_turns: ClassVar[int] = 100
+
+    def __init__(self, *, max_turns: int | None = None, tier: str = "standard",
+                 task_id: str | None = None, render_mode: str | None = None, **params: Any) -> None:
+        self.task_id = task_id or type(self).__name__
+        self.tier = tier
+        self.params = self._make_params(params)
+        self.max_turns = self.default_max_turns if max_turns is None else max_turns
+        if isinstance(self.max_turns, bool) or not isinstance(self.max_turns, int) or self.max_turns < 1:
+            raise ValueError(f"{self.task_id}: max_turns must be a positive int, got {self.max_turns!r}")
+        if tier == "standard" and self.max_turns > STANDARD_TURN_CAP:
+            raise ValueError(f"{self.task_id}: standard tasks end by {STANDARD_TURN_CAP} turns, "
+                             f"max_turns={self.max_turns}")
+        if render_mode is not None and render_mode not in self.metadata["render_modes"]:
+            raise ValueError(f"render_mode must be one of {self.metadata['render_modes']}, got {render_mode!r}")
+        self.render_mode = render_mode
+        self._init()
+        self.actions: ActionSet = self._make_actions()
+        self.action_space = gym.spaces.Discrete(len(self.actions))
+        chars = set(string.printable) - set("\t\r\x0b\x0c") | set(self.extra_chars)
+        chars.update("".join(self.vocab()))
+        self.observation_space = gym.spaces.Text(max_length=200_000, min_length=1,
+                                                 charset=frozenset(chars))
+        self._seedseq: np.random.SeedSequence | None = None
+        self._started = False
+        self._reset_counters()
+
+    # -- hooks for games -------------------------------------------------------------------------
+    def _init(self) -> None:
+        """Derive per-instance constants from ``self.params`` (runs once, before the actions)."""
+
+    def _make_actions(self) -> ActionSet:
+        if self.ACTIONS is None:
+            raise NotImplementedError(f"{type(self).__name__} declares no ACTIONS")
+        return self.ACTIONS
+
+    def vocab(self) -> Mapping[str, str]:
+        """Glyph -> meaning for every glyph this instance can draw, in legend order."""
+        return self.glyphs
+
+    def prompt_fields(self) -> dict[str, Any]:
+        """Values the rules/rewards/ends templates may name (parameters plus derived values)."""
+        return dataclasses.asdict(self.params)
+
+    def _setup(self, rng: np.random.Generator) -> None:
+        raise NotImplementedError
+
+    def _act(self, action: int) -> None:
+        raise NotImplementedError
+
+    def _grid(self) -> list[str]:
+        raise NotImplementedError
+
+    def _hud(self) -> str:
+        return ""
+
+    # -- called by games inside _act ------------------------------------------------------------
+    def reward(self, amount: float) -> None:
+        """Add to this step's reward (penalties and progress in one step add up)."""
+        self._step_reward += amount
+
+    def finish(self, won: bool | None = None) -> None:
+        """End the episode this step (terminated); ``won`` is reported in info."""
+        self._terminated = True
+        self.won = won
+
+    def say(self, text: str) -> None:
+        self._messages.append(text)
+
+    # -- gymnasium API ------------------------------------------------------------------------------
+    def reset(self, *, seed: int | None = None, options: dict | None = None) -> tuple[str, dict]:
+        if seed is None:
+            if self._seedseq is None:
+                check_seed(seed)  # raises: the first reset must name its seed
+            # gymnasium convention: an unseeded reset continues the seeded stream, reproducibly
+            self._seedseq = self._seedseq.spawn(1)[0]
+            self.seed_value: int | None = None
+        else:
+            self.seed_value = check_seed(seed)
+            self._seedseq = np.random.SeedSequence(self.seed_value)
+        rng = np.random.Generator(np.random.PCG64(self._seedseq))
+        self._np_random = rng
+        self._np_random_seed = self.seed_value if self.seed_value is not None else -1
+        self._reset_counters()
+        self._setup(rng)
+        self._started = True
+        self._frame = self._build_frame()
+        return self._frame.render(), self._info(forfeit=False)
+
+    def step(self, action: int | str) -> tuple[str, float, bool, bool, dict]:
+        self._check_running()
+        index = self.actions.index(action)
+        self.turn += 1
+        self._step_reward = 0.0
+        self._messages = []
+        self._act(index)
+        return self._finish_step(self._step_reward, forfeit=False)
+
+    def forfeit(self, reason: str | None = None) -> tuple[str, float, bool, bool, dict]:
+        """A turn without a valid action: the world is unchanged, the turn counter advances."""
+        self._check_running()
+        self.turn += 1
+        self._messages = ["No valid action: nothing happened."]
+        return self._finish_step(0.0, forfeit=True, reason=reason)
+
+    def render(self) -> str | None:
+        if self.render_mode == "ansi":
+            return self._frame.render() if self._started else None
+        return None
+
+    # -- state ------------------------------------------------------------------------------------------
+    @property
+    def done(self) -> bool:
+        return self._terminated or self._truncated
+
+    @property
+    def frame(self) -> Frame:
+        if not self._started:
+            raise RuntimeError(f"{self.task_id}: call reset(seed=...) first")
+        return self._frame
+
+    def system_prompt(self) -> str:
+        fields = self.prompt_fields()
+        fields.setdefault("max_turns", self.max_turns)
+        lines = [f"You are playing {self.title}. " + self.rules.format_map(fields)]
+        if self.rewards:
+            lines.append("Rewards: " + self.rewards.format_map(fields))
+        ends = self.ends.format_map(fields)
+        lines.append(f"The episode ends {ends + ', or ' if ends else ''}after {self.max_turns} turns.")
+        lines.append(OBSERVATION_CONVENTIONS + (" " + AXES_CONVENTION if self.axes else ""))
+        lines.append("Actions:")
+        lines.extend(self.actions.prompt_lines())
+        lines.append(ACTION_FORMAT)
+        return "\n".join(lines)
+
+    # -- internals --------------------------------------------------------------------------------------
+    def _make_params(self, params: dict[str, Any]):
+        names = [f.name for f in dataclasses.fields(self.Params)]
+        unknown = sorted(set(params) - set(names))
+        if unknown:
+            raise ValueError(f"{self.task_id}: unknown parameter {unknown[0]!r}; "
+                             f"valid parameters: {', '.join(names + ['max_turns']) }")
+        return self.Params(**params)
+
+    def _reset_counters(self) -> None:
+        self.turn = 0
+        self.episode_return = 0.0
+        self.won: bool | None = None
+        self._terminated = False
+        self._truncated = False
+        self._step_reward = 0.0
+        self._messages: list[str] = []
+        self._clamped = False
+
+    def _check_running(self) -> None:
+        if not self._started:
+            raise RuntimeError(f"{self.task_id}: call reset(seed=...) before step()")
+        if self._terminated or self._truncated:
+            how = "terminated" if self._terminated else "truncated"
+            raise EpisodeEnded(f"{self.task_id}: the episode already ended ({how} at step "
+                               f"{self.turn}/{self.max_turns}); call reset() to start another")
+
+    def _finish_step(self, reward: float, *, forfeit: bool, reason: str | None = None):
+        if self.tier == "standard":
+            total = self.episode_return + reward
+            if total > 1.0 + _RETURN_EPS or total < -1.0 - _RETURN_EPS:
+                self._clamped = True
+                reward = min(1.0, max(-1.0, total)) - self.episode_return
+        self.episode_return += reward
+        if self.turn >= self.max_turns and not self._terminated:
+            self._truncated = True
+        self._frame = self._build_frame()
+        info = self._info(forfeit=forfeit)
+        if forfeit:
+            info["forfeit_reason"] = reason
+        return self._frame.render(), float(reward), self._terminated, self._truncated, info
+
+    def _build_frame(self) -> Frame:
+        hud = self._hud()
+        hud = f"Step {self.turn}/{self.max_turns} | {hud}" if hud else f"Step {self.turn}/{self.max_turns}"
+        return build_frame(self._grid(), self.vocab(), hud, " ".join(self._messages), self.axes)
+
+    def _info(self, *, forfeit: bool) -> dict[str, Any]:
+        return {"frame": self._frame, "turn": self.turn, "return": self.episode_return,
+                "won": self.won, "forfeit": forfeit, "clamped": self._clamped}

@@ -1,0 +1,3 @@
+"""Game families. Importing this package registers every task (heavy engines load lazily)."""
+
+from . import classics  # noqa: F401

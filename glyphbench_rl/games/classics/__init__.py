@@ -1,0 +1,3 @@
+"""Classics: puzzles and familiar games. Importing a module registers its tasks."""
+
+from . import snake  # noqa: F401

@@ -1,0 +1,91 @@
+"""Grid mechanics shared by the Classics games: directions, a mutable char board, search."""
+
+from __future__ import annotations
+
+from collections import deque
+from typing import Callable, Iterable
+
+from ...core.actions import ActionSet
+
+# Row/column deltas of the four compass moves, in action order.
+MOVES: dict[str, tuple[int, int]] = {"UP": (-1, 0), "DOWN": (1, 0), "LEFT": (0, -1), "RIGHT": (0, 1)}
+DELTAS: tuple[tuple[int, int], ...] = tuple(MOVES.values())
+OPPOSITE = {0: 1, 1: 0, 2: 3, 3: 2}
+
+# Shared palette so the same thing looks the same in every Classics game.
+WALL = "█"
+FLOOR = "·"
+PLAYER = "@"
+GOAL = "◎"
+
+
+def move_actions(verb: str = "move") -> ActionSet:
+    return ActionSet([(name, f"{verb} one cell {name.lower()}") for name in MOVES])
+
+
+class Board:
+    """A rectangular board of single-character cells, stored as a list of row lists."""
+
+    __slots__ = ("rows", "height", "width")
+
+    def __init__(self, height: int, width: int, fill: str) -> None:
+        self.height, self.width = height, width
+        self.rows = [[fill] * width for _ in range(height)]
+
+    @classmethod
+    def from_lines(cls, lines: Iterable[str]) -> "Board":
+        lines = list(lines)
+        board = cls(len(lines), len(lines[0]), " ")
+        board.rows = [list(line) for line in lines]
+        return board
+
+    def inside(self, r: int, c: int) -> bool:
+        return 0 <= r < self.height and 0 <= c < self.width
+
+    def __getitem__(self, rc: tuple[int, int]) -> str:
+        return self.rows[rc[0]][rc[1]]
+
+    def __setitem__(self, rc: tuple[int, int], ch: str) -> None:
+        self.rows[rc[0]][rc[1]] = ch
+
+    def lines(self) -> list[str]:
+        return ["".join(row) for row in self.rows]
+
+    def cells(self, ch: str) -> list[tuple[int, int]]:
+        return [(r, c) for r, row in enumerate(self.rows) for c, x in enumerate(row) if x == ch]
+
+
+def bfs_distances(start: tuple[int, int], passable: Callable[[int, int], bool]) -> dict[tuple[int, int], int]:
+    """Shortest 4-connected step counts from ``start`` to every reachable passable cell."""
+    dist = {start: 0}
+    queue = deque([start])
+    while queue:
+        r, c = queue.popleft()
+        d = dist[(r, c)] + 1
+        for dr, dc in DELTAS:
+            nxt = (r + dr, c + dc)
+            if nxt not in dist and passable(*nxt):
+                dist[nxt] = d
+                queue.append(nxt)
+    return dist
+
+
+def shortest_path(start: tuple[int, int], goal: tuple[int, int],
+                  passable: Callable[[int, int], bool]) -> list[str] | None:
+    """Action names of one shortest 4-connected path, or None when ``goal`` is unreachable."""
+    prev: dict[tuple[int, int], tuple[tuple[int, int], str] | None] = {start: None}
+    queue = deque([start])
+    while queue:
+        cur = queue.popleft()
+        if cur == goal:
+            path = []
+            while prev[cur] is not None:
+                cur, name = prev[cur]
+                path.append(name)
+            return path[::-1]
+        for name, (dr, dc) in MOVES.items():
+            nxt = (cur[0] + dr, cur[1] + dc)
+            if nxt not in prev and passable(*nxt):
+                prev[nxt] = (cur, name)
+                queue.append(nxt)
+    return None
