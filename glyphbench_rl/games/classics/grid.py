@@ -19,8 +19,9 @@ PLAYER = "@"
 GOAL = "◎"
 
 
-def move_actions(verb: str = "move") -> ActionSet:
-    return ActionSet([(name, f"{verb} one cell {name.lower()}") for name in MOVES])
+def move_actions(verb: str = "move", unit: str = " one cell") -> ActionSet:
+    """UP/DOWN/LEFT/RIGHT described as e.g. "move one cell up"."""
+    return ActionSet([(name, f"{verb}{unit} {name.lower()}") for name in MOVES])
 
 
 class Board:

@@ -1,0 +1,102 @@
+"""Maze: walk from the start to the exit of a randomly carved perfect maze."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...core import GlyphTask, register_variants
+from .grid import DELTAS, FLOOR, GOAL, PLAYER, WALL, Board, bfs_distances, move_actions
+
+
+@dataclass(frozen=True)
+class MazeParams:
+    cells: int = 5                  # the maze is cells x cells rooms; the grid is 2*cells+1 wide
+    time_weight: float = 0.9        # share of the win reward lost by using every turn
+
+    def __post_init__(self) -> None:
+        if not 2 <= self.cells <= 20:
+            raise ValueError(f"cells must be in 2..20, got {self.cells}")
+        if not 0 <= self.time_weight < 1:
+            raise ValueError(f"time_weight must be in [0, 1), got {self.time_weight}")
+
+
+def carve(cells: int, rng: np.random.Generator) -> Board:
+    """A perfect maze (one path between any two rooms) by randomised depth-first search."""
+    size = 2 * cells + 1
+    board = Board(size, size, WALL)
+    start = (int(rng.integers(cells)), int(rng.integers(cells)))
+    seen = {start}
+    stack = [start]
+    board[2 * start[0] + 1, 2 * start[1] + 1] = FLOOR
+    while stack:
+        r, c = stack[-1]
+        options = [(r + dr, c + dc) for dr, dc in DELTAS
+                   if 0 <= r + dr < cells and 0 <= c + dc < cells and (r + dr, c + dc) not in seen]
+        if not options:
+            stack.pop()
+            continue
+        nr, nc = options[int(rng.integers(len(options)))]
+        board[r + nr + 1, c + nc + 1] = FLOOR      # the wall between the two rooms
+        board[2 * nr + 1, 2 * nc + 1] = FLOOR
+        seen.add((nr, nc))
+        stack.append((nr, nc))
+    return board
+
+
+class Maze(GlyphTask):
+    title = "Maze"
+    rules = ("Walk through the maze from your position to the exit. Walls block movement; "
+             "walking into a wall wastes the turn. There is exactly one path between any two "
+             "open cells.")
+    rewards = "reaching the exit gives 1 minus {time_weight:g} x (turns used / {max_turns})."
+    ends = "when you reach the exit"
+    Params = MazeParams
+    ACTIONS = move_actions()
+    glyphs = {WALL: "wall", FLOOR: "open", PLAYER: "you", GOAL: "exit"}
+    default_max_turns = 100
+
+    def _setup(self, rng: np.random.Generator) -> None:
+        self.board = carve(self.params.cells, rng)
+        rooms = self.board.cells(FLOOR)
+        self.pos = rooms[int(rng.integers(len(rooms)))]
+        dist = bfs_distances(self.pos, lambda r, c: self.board[r, c] != WALL)
+        far = max(dist.values())
+        ends = sorted(cell for cell, d in dist.items() if d == far)
+        self.exit = ends[int(rng.integers(len(ends)))]
+        self.optimal = far   # shortest path length, for tests and baselines
+
+    def _act(self, action: int) -> None:
+        dr, dc = DELTAS[action]
+        r, c = self.pos[0] + dr, self.pos[1] + dc
+        if self.board[r, c] == WALL:   # the outer wall keeps indices in range
+            self.say("Bumped into a wall.")
+            return
+        self.pos = (r, c)
+        if self.pos == self.exit:
+            self.reward(1 - self.params.time_weight * self.turn / self.max_turns)
+            self.say("Reached the exit.")
+            self.finish(won=True)
+
+    def _grid(self) -> list[str]:
+        rows = self.board.rows
+        er, ec = self.exit
+        pr, pc = self.pos
+        out = []
+        for r, row in enumerate(rows):
+            if r == er or r == pr:
+                row = row.copy()
+                if r == er:
+                    row[ec] = GOAL
+                if r == pr:
+                    row[pc] = PLAYER
+            out.append("".join(row))
+        return out
+
+
+register_variants(Maze, "Classics", {
+    "glyphbench/classics-maze-easy-v0": dict(cells=5, max_turns=100),
+    "glyphbench/classics-maze-medium-v0": dict(cells=7, max_turns=200),
+    "glyphbench/classics-maze-hard-v0": dict(cells=10, max_turns=400),
+})
