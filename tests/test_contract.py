@@ -45,8 +45,6 @@ def test_same_seed_same_episode(task_id):
     _, a = play(task_id, 11, max_steps=200, forfeit_every=7)
     _, b = play(task_id, 11, max_steps=200, forfeit_every=7)
     assert a == b
-    _, c = play(task_id, 12, max_steps=200, forfeit_every=7)
-    assert c[0] != a[0] or c != a or get_spec(task_id).suite == "Classics" and False
 
 
 def test_determinism_across_processes():

@@ -1,0 +1,56 @@
+import json
+import subprocess
+import sys
+
+import pytest
+
+from glyphbench_rl.cli import main
+
+
+def test_list_counts_per_suite(capsys):
+    assert main(["list", "--suite", "classics"]) == 0
+    out, err = capsys.readouterr()
+    assert "glyphbench/classics-snake-easy-v0" in out
+    assert "Classics" in err and "total" in err
+
+
+def test_show_prints_prompt_and_observation(capsys):
+    assert main(["show", "glyphbench/classics-maze-easy-v0", "--seed", "4"]) == 0
+    out = capsys.readouterr().out
+    assert "=== system prompt ===" in out and "Step 0/100" in out and "<action>" in out
+
+
+def test_unknown_task_is_one_line_error(capsys):
+    assert main(["show", "glyphbench/classics-snak-easy-v0"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.count("\n") == 0 and "closest: glyphbench/classics-snake-easy-v0" in err
+
+
+def test_random_prints_returns(tmp_path, capsys):
+    out_json = tmp_path / "rows.json"
+    assert main(["random", "glyphbench/classics-snake-*", "--episodes", "3", "--json", str(out_json)]) == 0
+    out = capsys.readouterr().out
+    assert "mean over tasks" in out
+    rows = json.loads(out_json.read_text())
+    assert len(rows) == 3 and all(-1 <= r["mean_return"] <= 1 and r["episodes"] == 3 for r in rows)
+
+
+def test_bench_table(capsys):
+    assert main(["bench", "--tasks", "glyphbench/classics-snake-easy-v0", "--runs", "2", "--steps", "50"]) == 0
+    out = capsys.readouterr().out
+    assert "median step+render" in out and "glyphbench/classics-snake-easy-v0" in out
+
+
+def test_play_in_a_terminal_session():
+    """A person types names; a wrong name lists the valid ones; the game goes on."""
+    script = "left\nsideways\nRIGHT\nquit\n"
+    out = subprocess.run([sys.executable, "-m", "glyphbench_rl.cli", "play", "glyphbench/classics-2048-v0"],
+                         input=script, capture_output=True, text=True, timeout=60)
+    assert out.returncode == 0, out.stderr
+    assert "unknown action 'sideways'; valid actions: UP, DOWN, LEFT, RIGHT" in out.stdout
+    assert "Step 2/512" in out.stdout
+
+
+def test_bad_counts_are_refused(capsys):
+    assert main(["random", "glyphbench/classics-2048-v0", "--episodes", "0"]) == 2
+    assert "--episodes" in capsys.readouterr().err
