@@ -29,15 +29,16 @@ def cmd_list(args) -> int:
     if not args.counts:
         for task_id in ids:
             print(task_id)
+    # counts go to stderr beside the IDs so that stdout stays a clean task list
+    out = sys.stdout if args.counts else sys.stderr
     planned = _catalog_counts()
     have = Counter(get_spec(t).suite for t in ids)
-    print(f"\n{'suite':<12} {'tasks':>5}" + (f" {'of':>4}" if planned else ""), file=sys.stderr)
+    print(f"{'suite':<12} {'tasks':>5}" + (f" {'of':>4}" if planned else ""), file=out)
     for suite in SUITES:
         if have[suite] or (planned and args.suite is None and args.pattern is None):
             line = f"{suite:<12} {have[suite]:>5}" + (f" {planned[suite]:>4}" if planned else "")
-            print(line, file=sys.stderr)
-    print(f"{'total':<12} {len(ids):>5}" + (f" {sum(planned.values()):>4}" if planned else ""),
-          file=sys.stderr)
+            print(line, file=out)
+    print(f"{'total':<12} {len(ids):>5}" + (f" {sum(planned.values()):>4}" if planned else ""), file=out)
     return 0
 
 

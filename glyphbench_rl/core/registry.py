@@ -104,7 +104,7 @@ def _gym_entry(task_id: str, **overrides: Any) -> GlyphTask:
 
 
 def _gym_spec(spec: TaskSpec):
-    return gym.spec(spec.id)
+    return gym.registry.get(spec.id)
 
 
 def get_spec(task_id: str) -> TaskSpec:
