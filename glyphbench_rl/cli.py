@@ -57,6 +57,7 @@ def cmd_play(args) -> int:
     obs, _ = task.reset(seed=args.seed)
     print(task.system_prompt(), end="\n\n")
     print(obs)
+    print("(type an action name; 'help' lists them, 'quit' stops)")
     while not task.done:
         try:
             line = input("action> ").strip()
@@ -66,6 +67,9 @@ def cmd_play(args) -> int:
         if line.lower() in ("quit", "exit", "q"):
             break
         if not line:
+            continue
+        if line.lower() in ("help", "?"):
+            print("\n".join(task.actions.prompt_lines()))
             continue
         index = task.actions.lookup(line)
         if index is None:
