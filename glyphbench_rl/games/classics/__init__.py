@@ -3,3 +3,5 @@
 from . import snake  # noqa: F401
 from . import maze  # noqa: F401
 from . import twenty48  # noqa: F401
+from . import lightsout  # noqa: F401
+from . import sokoban  # noqa: F401
