@@ -13,3 +13,11 @@ def pytest_report_header(config):
 @pytest.fixture(params=ALL_TASKS)
 def task_id(request):
     return request.param
+
+
+@pytest.fixture(scope="session")
+def tiny_model_dir(tmp_path_factory):
+    """A tiny random Llama with a ChatML tokenizer trained offline (built once per session)."""
+    pytest.importorskip("transformers")
+    from glyphbench_rl.models import make_tiny_model
+    return make_tiny_model(tmp_path_factory.mktemp("tiny-model"))
