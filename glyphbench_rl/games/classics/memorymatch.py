@@ -1,0 +1,116 @@
+"""Memory Match (Concentration): turn cards over two at a time; matching pairs stay face up."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...core import GlyphTask, register_variants
+from .boards import cell_actions
+
+DOWN = "■"
+FACES = "abcdefghijklmnopqrstuvwxyz"
+
+
+@dataclass(frozen=True)
+class MemoryMatchParams:
+    rows: int = 4
+    cols: int = 5
+    pair_share: float = 0.5    # the return shared by the pairs; clearing the board adds the rest
+
+    def __post_init__(self) -> None:
+        if not 2 <= self.rows <= 8:
+            raise ValueError(f"rows must be in 2..8, got {self.rows}")
+        if not 2 <= self.cols <= 8:
+            raise ValueError(f"cols must be in 2..8, got {self.cols}")
+        if self.rows * self.cols % 2 or self.rows * self.cols > 2 * len(FACES):
+            raise ValueError(f"rows x cols must be even (cards come in pairs) and at most "
+                             f"{2 * len(FACES)}, got {self.rows}x{self.cols}")
+        if not 0 <= self.pair_share <= 1:
+            raise ValueError(f"pair_share must be in [0, 1], got {self.pair_share}")
+
+
+class MemoryMatch(GlyphTask):
+    title = "Memory Match"
+    rules = ("{cards} cards lie face down on a {rows}x{cols} board: {pairs} pairs of letters. "
+             "Each action turns one card over. After every second card: if the two letters "
+             "match, both stay face up; if not, both stay visible until your next action and "
+             "then turn face down. Find every pair.")
+    rewards = "+{pair_reward:.4g} per pair found; finding all {pairs} adds {clear_reward:g}."
+    ends = "when every pair is found"
+    Params = MemoryMatchParams
+    axes = True
+    default_max_turns = 60
+
+    def _init(self) -> None:
+        p = self.params
+        self.pairs = p.rows * p.cols // 2
+        self._vocab = {DOWN: "face down"} | {FACES[k]: "card" for k in range(self.pairs)}
+
+    def vocab(self):
+        return self._vocab
+
+    def prompt_fields(self) -> dict:
+        p = self.params
+        return super().prompt_fields() | {"cards": 2 * self.pairs, "pairs": self.pairs,
+                                          "pair_reward": p.pair_share / self.pairs,
+                                          "clear_reward": 1 - p.pair_share}
+
+    def _make_actions(self):
+        return cell_actions(self.params.rows, self.params.cols, [("", "turn over that card")])
+
+    def _setup(self, rng: np.random.Generator) -> None:
+        self.faces = rng.permutation(np.repeat(np.arange(self.pairs), 2)).tolist()
+        self.up = [False] * len(self.faces)     # face up: found pairs and the cards on show
+        self.showing: list[int] = []            # face-up cards not yet matched (0, 1 or 2)
+        self.found = 0
+        self._draw()
+
+    def _act(self, action: int) -> None:
+        turned = []
+        if len(self.showing) == 2:             # a failed pair turns back first
+            for i in self.showing:
+                self.up[i] = False
+            turned, self.showing = self.showing, []
+        if self.up[action]:
+            self.say("That card is already face up.")
+            self._draw(turned)
+            return
+        self.up[action] = True
+        self.showing.append(action)
+        if len(self.showing) == 2:
+            a, b = self.showing
+            if self.faces[a] == self.faces[b]:
+                self.showing = []
+                self.found += 1
+                self.reward(self.params.pair_share / self.pairs)
+                self.say("A pair.")
+                if self.found == self.pairs:
+                    self.reward(1 - self.params.pair_share)
+                    self.say("Every pair is found.")
+                    self.finish(won=True)
+            else:
+                self.say("No match.")
+        self._draw(turned + [action])
+
+    def _draw(self, cells=None) -> None:
+        """Redraw the rows holding ``cells`` (every row when None)."""
+        cols, faces, up = self.params.cols, self.faces, self.up
+        rows = range(self.params.rows) if cells is None else {i // cols for i in cells}
+        if cells is None:
+            self._lines = [""] * self.params.rows
+        for r in rows:
+            self._lines[r] = "".join(FACES[faces[i]] if up[i] else DOWN for i in range(r * cols, r * cols + cols))
+
+    def _grid(self) -> list[str]:
+        return self._lines
+
+    def _hud(self) -> str:
+        return f"Pairs {self.found}/{self.pairs}"
+
+
+register_variants(MemoryMatch, "Classics", {
+    "glyphbench/classics-memorymatch-easy-v0": dict(rows=4, cols=5, max_turns=60),
+    "glyphbench/classics-memorymatch-hard-v0": dict(rows=6, cols=6, max_turns=120),
+})

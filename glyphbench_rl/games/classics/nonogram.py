@@ -1,0 +1,160 @@
+"""Nonogram: fill the cells of a grid so each row and column shows its clue's runs.
+
+Boards are random pictures kept only when a line solver (repeatedly fixing the cells every
+arrangement of a line's runs agrees on) determines every cell: such a puzzle has exactly one
+solution and can be solved one line at a time, without guessing.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+
+from ...core import GlyphTask, register_variants
+from .boards import Bits, cell_actions, cell_of, clue_text, runs
+from .grid import FLOOR
+
+FILLED, MARK = "■", "x"
+_TRIES = 2000
+
+
+@dataclass(frozen=True)
+class NonogramParams:
+    size: int = 5
+    density: float = 0.6        # chance that a cell of the hidden picture is filled
+    time_weight: float = 0.5    # share of the win reward lost by using every turn
+
+    def __post_init__(self) -> None:
+        if not 2 <= self.size <= 12:
+            raise ValueError(f"size must be in 2..12, got {self.size}")
+        if not 0.2 <= self.density <= 0.9:
+            raise ValueError(f"density must be in [0.2, 0.9], got {self.density}")
+        if not 0 <= self.time_weight < 1:
+            raise ValueError(f"time_weight must be in [0, 1), got {self.time_weight}")
+
+
+@lru_cache(maxsize=None)
+def arrangements(length: int) -> dict[tuple[int, ...], tuple[int, ...]]:
+    """Clue -> every line (bitmask, bit i = cell i) of ``length`` cells that has that clue."""
+    out: dict[tuple[int, ...], list[int]] = {}
+    for line in range(1 << length):
+        out.setdefault(runs(line, length), []).append(line)
+    return {clue: tuple(lines) for clue, lines in out.items()}
+
+
+def line_solve(row_clues: list[tuple[int, ...]], col_clues: list[tuple[int, ...]]) -> list[int] | None:
+    """Rows (bitmasks) of the picture when line solving fixes every cell, else None (the clues
+    contradict each other or leave a cell open to line logic)."""
+    h, w = len(row_clues), len(col_clues)
+    lines = [(arrangements(w)[c], w) for c in row_clues] + [(arrangements(h)[c], h) for c in col_clues]
+    filled = [0] * (h + w)   # lines 0..h-1 are rows (bit c = column c), h.. are columns (bit r = row r)
+    empty = [0] * (h + w)
+    todo = set(range(h + w))
+    while todo:
+        i = todo.pop()
+        options, n = lines[i]
+        f, e = filled[i], empty[i]
+        options = [m for m in options if not m & e and m & f == f]
+        if not options:
+            return None
+        lines[i] = (options, n)
+        must_fill, may_fill = (1 << n) - 1, 0
+        for m in options:
+            must_fill &= m
+            may_fill |= m
+        new_f, new_e = must_fill & ~f, ((1 << n) - 1) & ~may_fill & ~e
+        if not new_f | new_e:
+            continue
+        filled[i] |= new_f
+        empty[i] |= new_e
+        base, cross = (h, i) if i < h else (0, i - h)   # the crossing lines and this line's bit in them
+        for j in range(n):
+            bit = 1 << j
+            if (new_f | new_e) & bit:
+                other = base + j
+                if new_f & bit:
+                    filled[other] |= 1 << cross
+                else:
+                    empty[other] |= 1 << cross
+                todo.add(other)
+    if any(filled[r] | empty[r] != (1 << w) - 1 for r in range(h)):
+        return None
+    return filled[:h]
+
+
+class Nonogram(GlyphTask):
+    title = "Nonogram"
+    rules = ("Fill cells of the {size}x{size} grid to reveal a hidden picture. The status line "
+             "gives the clues: Rows from top to bottom, then Cols from left to right, lines "
+             "separated by /. A clue lists the lengths of the runs of filled cells in that line, "
+             "in order, with at least one blank cell between runs; 0 means no filled cell. The "
+             "clues have exactly one solution. Marks (x) are notes for cells you know are blank.")
+    rewards = ("solving gives 1 minus {time_weight:g} x (turns used / {max_turns}); running out of "
+               "turns gives nothing.")
+    ends = "when the filled cells match the solution"
+    Params = NonogramParams
+    glyphs = {FLOOR: "blank", FILLED: "filled", MARK: "marked blank"}
+    axes = True
+    default_max_turns = 50
+
+    def _init(self) -> None:
+        n = self.params.size
+        self.bits = Bits(n, n)
+
+    def _make_actions(self):
+        n = self.params.size
+        return cell_actions(n, n, [("", "fill that cell, or clear it if filled"),
+                                   ("X", "put an x (a note: blank) on the cell named after the X, or take it off")])
+
+    def _setup(self, rng: np.random.Generator) -> None:
+        p, bits = self.params, self.bits
+        n = p.size
+        for _ in range(_TRIES):
+            cells = (rng.random(n * n) < p.density).tolist()
+            picture = sum(1 << i for i, on in enumerate(cells) if on)
+            rows = [runs(bits.row_bits(picture, r), n) for r in range(n)]
+            cols = [runs(bits.col_bits(picture, c), n) for c in range(n)]
+            if picture and line_solve(rows, cols) is not None:
+                break
+        else:
+            raise RuntimeError(f"{self.task_id}: no line-solvable picture in {_TRIES} tries; change density")
+        self.solution, self.row_clues, self.col_clues = picture, rows, cols
+        self.filled = self.marked = 0
+        self._lines = [FLOOR * n] * n
+        self._clues = f"Rows {clue_text(rows)} | Cols {clue_text(cols)}"
+
+    def _act(self, action: int) -> None:
+        n = self.params.size
+        mark, r, c = cell_of(action, n, n * n)
+        bit = 1 << r * n + c
+        if mark:
+            self.marked ^= bit
+            self.filled &= ~bit
+        else:
+            self.filled ^= bit
+            self.marked &= ~bit
+        whole = (1 << n) - 1
+        self._lines[r] = _row(n, self.filled >> r * n & whole, self.marked >> r * n & whole)
+        if self.filled == self.solution:
+            self.reward(1 - self.params.time_weight * self.turn / self.max_turns)
+            self.say("Solved: every clue is satisfied.")
+            self.finish(won=True)
+
+    def _grid(self) -> list[str]:
+        return self._lines
+
+    def _hud(self) -> str:
+        return self._clues
+
+
+@lru_cache(maxsize=1 << 16)
+def _row(n: int, filled: int, marked: int) -> str:
+    return "".join(FILLED if filled >> c & 1 else MARK if marked >> c & 1 else FLOOR for c in range(n))
+
+
+register_variants(Nonogram, "Classics", {
+    "glyphbench/classics-nonogram-easy-v0": dict(size=5, density=0.6, max_turns=50),
+    "glyphbench/classics-nonogram-hard-v0": dict(size=8, density=0.6, max_turns=150),
+})
