@@ -1,0 +1,117 @@
+"""Mechanics shared by the real-time Classics arcade games (one tick per turn).
+
+- ``Bag``: shuffled-bag draws (Tetris's 7-bag) from the task's rng.
+- ``fall`` / ``move_vertical``: integer gravity and a cell-by-cell vertical sweep, so a body
+  moving several cells in one tick never tunnels through a solid cell.
+- ``Lane``: a cyclic row that slides one cell every ``period`` ticks (Frogger's cars and logs).
+  Its content is a pure function of the tick, so a whole lane renders as one precomputed string
+  and a planner can read any future tick.
+- ``window`` / ``overlay``: a scrolling course is generated once as long row strings; a frame is
+  a slice of it (Flappy's pipes, Ski's slope, the Platformer's camera), with sprites drawn on top.
+- ``runs``: a random pattern of objects and gaps, the way rows of cars, logs and trees spawn.
+"""
+
+from __future__ import annotations
+
+from typing import Callable, Sequence, TypeVar
+
+import numpy as np
+
+T = TypeVar("T")
+
+
+class Bag:
+    """Draws every item once per shuffled bag, then refills: no long droughts, no floods."""
+
+    __slots__ = ("items", "rng", "queue")
+
+    def __init__(self, items: Sequence[T], rng: np.random.Generator) -> None:
+        self.items, self.rng = tuple(items), rng
+        self.queue: list[T] = []
+
+    def _fill(self) -> None:
+        self.queue.extend(self.items[int(i)] for i in self.rng.permutation(len(self.items)))
+
+    def draw(self) -> T:
+        if not self.queue:
+            self._fill()
+        return self.queue.pop(0)
+
+    def peek(self) -> T:
+        if not self.queue:
+            self._fill()
+        return self.queue[0]
+
+
+def fall(vy: int, gravity: int, max_fall: int) -> int:
+    """Vertical speed after one tick of gravity (rows per tick, positive = down), capped."""
+    return min(vy + gravity, max_fall)
+
+
+def move_vertical(y: int, dy: int, blocked: Callable[[int], bool]) -> tuple[int, bool]:
+    """Move ``dy`` rows one row at a time, stopping before the first blocked row.
+
+    Returns the new row and whether something stopped the move.
+    """
+    step = 1 if dy > 0 else -1
+    for _ in range(abs(dy)):
+        if blocked(y + step):
+            return y, True
+        y += step
+    return y, False
+
+
+def signed(value: int) -> str:
+    """A HUD integer with an explicit sign: "+2", "-1", "+0"."""
+    return f"{value:+d}"
+
+
+class Lane:
+    """A cyclic row of cells that slides ``direction`` (+1 right, -1 left) one cell every
+    ``period`` ticks; ``phase`` staggers lanes of equal speed."""
+
+    __slots__ = ("pattern", "direction", "period", "phase", "_rotations")
+
+    def __init__(self, pattern: str, direction: int, period: int, phase: int = 0) -> None:
+        if direction not in (-1, 1) or period < 1:
+            raise ValueError("a lane needs direction +1 or -1 and period >= 1")
+        self.pattern, self.direction, self.period, self.phase = pattern, direction, period, phase
+        n = len(pattern)
+        # rotation k: the pattern shifted k cells to the right (wrapping)
+        self._rotations = tuple(pattern[n - k:] + pattern[:n - k] for k in range(n))
+
+    def shift(self, tick: int) -> int:
+        """Cells moved (signed) by the end of ``tick``; moves happen at ticks 1, 2, ..."""
+        moves = (tick + self.phase) // self.period - self.phase // self.period
+        return self.direction * moves
+
+    def moves_at(self, tick: int) -> int:
+        """Cells moved (signed) during ``tick`` itself: 0 or the direction."""
+        return self.direction if tick >= 1 and (tick + self.phase) % self.period == 0 else 0
+
+    def row(self, tick: int) -> str:
+        """The lane's cells at the end of ``tick``."""
+        return self._rotations[self.shift(tick) % len(self.pattern)]
+
+
+def runs(rng: np.random.Generator, width: int, item: str, empty: str,
+         lengths: tuple[int, int], gaps: tuple[int, int]) -> str:
+    """``width`` cells of alternating gaps and runs of ``item`` whose lengths are drawn uniformly
+    from the inclusive ranges ``gaps`` and ``lengths`` (cut off at ``width``)."""
+    cells: list[str] = []
+    while len(cells) < width:
+        cells.extend(empty * int(rng.integers(gaps[0], gaps[1] + 1)))
+        cells.extend(item * int(rng.integers(lengths[0], lengths[1] + 1)))
+    return "".join(cells[:width])
+
+
+def window(rows: Sequence[str], top: int, left: int, height: int, width: int) -> list[str]:
+    """The ``height`` x ``width`` view of a course of equal-length row strings."""
+    return [row[left:left + width] for row in rows[top:top + height]]
+
+
+def overlay(rows: list[str], r: int, c: int, ch: str) -> None:
+    """Draw ``ch`` at (r, c) of a list of row strings, in place (off-view cells are skipped)."""
+    if 0 <= r < len(rows) and 0 <= c < len(rows[r]):
+        row = rows[r]
+        rows[r] = row[:c] + ch + row[c + 1:]
