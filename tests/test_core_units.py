@@ -69,3 +69,9 @@ def test_seed_ranges_and_streams():
         seeding.check_seed(1.0)
     with pytest.raises(ValueError):
         seeding.check_seed(-1)
+
+
+def test_comma_lists_mix_globs_and_ids():
+    from glyphbench_rl.core import resolve_tasks
+    ids = resolve_tasks("glyphbench/classics-snake-*, glyphbench/classics-2048-v0")
+    assert ids[-1] == "glyphbench/classics-2048-v0" and len(ids) == 4

@@ -24,6 +24,9 @@ def resolve_tasks(selection: str | list[str]) -> list[str]:
     duplicates keep their first position.
     """
     items = selection if isinstance(selection, list) else [selection]
+    # a comma list may mix IDs, globs and files: split it first (file names have no commas here)
+    items = [part for item in items for part in
+             ([item] if os.path.isfile(item.strip()) else item.split(","))]
     out: list[str] = []
     for item in items:
         item = item.strip()
@@ -35,8 +38,6 @@ def resolve_tasks(selection: str | list[str]) -> list[str]:
             ids = list_tasks(pattern=item)
             if not ids:
                 raise ValueError(f"no registered task matches {item!r}")
-        elif "," in item:
-            ids = [p for p in (s.strip() for s in item.split(",")) if p]
         else:
             ids = [item]
         for task_id in ids:

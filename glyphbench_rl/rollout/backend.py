@@ -30,6 +30,7 @@ class GenRequest:
     actions: ActionSet
     observation: str
     prompt_ids: list[int] | None = None   # token backends only
+    seed: int | None = None               # the episode's seed (per-episode streams)
 
 
 @dataclass
@@ -52,20 +53,26 @@ class PolicyBackend(Protocol):
 
 @dataclass
 class RandomBackend:
-    """Uniformly random valid actions, as replies in the action format; no model involved."""
+    """Uniformly random valid actions, as replies in the action format; no model involved.
+
+    Each episode draws from its own stream, named by (task, episode seed), so an episode's
+    actions do not depend on which other episodes share its batches (resumed or regrouped jobs
+    reproduce the same numbers).
+    """
 
     seed: int = 0
     name: str = "random"
     tokenizer: Any = None
-    _rng: np.random.Generator = field(init=False, repr=False)
-
-    def __post_init__(self) -> None:
-        self._rng = generator(self.seed, "random-backend")
+    _streams: dict = field(init=False, repr=False, default_factory=dict)
 
     def generate(self, requests: Sequence[GenRequest]) -> list[Generation]:
         out = []
         for r in requests:
-            name = r.actions[int(self._rng.integers(len(r.actions)))].name
+            key = (r.task_id, r.seed)
+            rng = self._streams.get(key)
+            if rng is None or r.turn == 0:
+                rng = self._streams[key] = generator(self.seed, "random-backend", r.task_id, r.seed or 0)
+            name = r.actions[int(rng.integers(len(r.actions)))].name
             out.append(Generation(f"<action>{name}</action>"))
         return out
 

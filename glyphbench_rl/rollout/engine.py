@@ -66,8 +66,12 @@ class RolloutEngine:
 
     # -- public ------------------------------------------------------------------------------------
     def run(self, episodes: Iterable[EpisodeSpec],
-            on_episode: Callable[[Trajectory], None] | None = None) -> list[Trajectory]:
-        """Play every episode to its end; trajectories come back in input order."""
+            on_episode: Callable[[Trajectory], None] | None = None, *,
+            keep: bool = True) -> list[Trajectory]:
+        """Play every episode to its end; trajectories come back in input order.
+
+        ``keep=False`` returns nothing and holds no finished trajectory (for jobs that hand each
+        one to ``on_episode`` and write it out)."""
         queue = list(episodes)
         for spec in queue:           # fail before any model call on a bad task ID
             get_spec(spec.task_id)
@@ -95,7 +99,8 @@ class RolloutEngine:
                     if ep.task.done:
                         del live[k]
                         ep.traj.context_drops = ep.harness.context_drops
-                        results[k] = ep.traj
+                        if keep:
+                            results[k] = ep.traj
                         if on_episode is not None:
                             on_episode(ep.traj)
         finally:
@@ -140,7 +145,7 @@ class RolloutEngine:
                     prompt_ids += t.reply_ids
             prompt_ids += self.chat.gen_ids
         return GenRequest(key, ep.spec.task_id, ep.task.turn, ep.harness.messages(),
-                          ep.task.actions, turn.user, prompt_ids)
+                          ep.task.actions, turn.user, prompt_ids, ep.spec.seed)
 
     def _apply(self, ep: _Live, req: GenRequest, gen: Generation) -> None:
         text = gen.text if isinstance(gen.text, str) else ""

@@ -8,7 +8,7 @@ from __future__ import annotations
 import importlib
 from typing import Any
 
-from .backend import PolicyBackend, RandomBackend
+from .backend import PolicyBackend
 
 # name -> "module:Class" (relative to this package) and whether it needs a model
 BACKENDS: dict[str, tuple[str, bool]] = {
@@ -25,13 +25,11 @@ def make_backend(name: str, model: str | None = None, **options: Any) -> PolicyB
         raise ValueError(f"unknown backend {name!r}; backends: {', '.join(BACKENDS)} "
                          f"(and 'scripted' from Python)")
     target, needs_model = BACKENDS[name]
-    if name == "random":
-        return RandomBackend(**options)
     if needs_model and not model:
         raise ValueError(f"backend {name!r} needs a model (--model)")
     module, _, cls_name = target.partition(":")
     cls = getattr(importlib.import_module(f"{__package__}.{module}"), cls_name)
     try:
-        return cls(model, **options)
+        return cls(model, **options) if needs_model else cls(**options)
     except TypeError as e:  # unknown keyword: say which backend refused it
         raise ValueError(f"backend {name!r}: {e}") from None

@@ -8,8 +8,8 @@ from glyphbench_rl.rollout import (BackendError, EpisodeSpec, Generation, Random
 
 
 class CountingBackend(RandomBackend):
-    def __post_init__(self):
-        super().__post_init__()
+    def __init__(self, seed=0):
+        super().__init__(seed=seed)
         self.batches = []
 
     def generate(self, requests):
@@ -94,3 +94,20 @@ def test_overhead_is_measured():
     eng.run([EpisodeSpec("glyphbench/classics-snake-easy-v0", s) for s in range(4)])
     assert eng.stats.turns > 0 and eng.stats.calls > 0
     assert 0 <= eng.stats.backend_s <= eng.stats.total_s
+
+
+def test_random_episodes_do_not_depend_on_batching():
+    specs = [EpisodeSpec(t, s) for t in ("glyphbench/classics-2048-v0", "glyphbench/classics-snake-easy-v0")
+             for s in range(3)]
+    a = RolloutEngine(RandomBackend(seed=2), max_episodes=1).run(specs)
+    b = RolloutEngine(RandomBackend(seed=2), max_episodes=6).run(specs[::-1])[::-1]
+    assert [[s.action for s in t.steps] for t in a] == [[s.action for s in t.steps] for t in b]
+    c = RolloutEngine(RandomBackend(seed=3), max_episodes=6).run(specs)
+    assert [[s.action for s in t.steps] for t in a] != [[s.action for s in t.steps] for t in c]
+
+
+def test_keep_false_hands_episodes_over_without_holding_them():
+    seen = []
+    out = RolloutEngine(RandomBackend()).run([EpisodeSpec("glyphbench/classics-snake-easy-v0", s) for s in range(3)],
+                                             seen.append, keep=False)
+    assert out == [] and sorted(t.seed for t in seen) == [0, 1, 2]
