@@ -1,5 +1,7 @@
 """glyphbench_rl: glyph-rendered game tasks and tools for RL post-training of language models."""
 
+from importlib.util import find_spec as _find_spec
+
 from .core import (ActionSet, EpisodeEnded, Frame, GlyphTask, TaskSpec, UnknownTaskError,
                    get_spec, list_tasks, make, resolve_tasks)
 from . import games as _games  # noqa: F401  (registers every task)
@@ -8,3 +10,17 @@ __version__ = "0.1.0"
 
 __all__ = ["ActionSet", "EpisodeEnded", "Frame", "GlyphTask", "TaskSpec", "UnknownTaskError",
            "get_spec", "list_tasks", "make", "resolve_tasks", "__version__"]
+
+# `vf-eval glyphbench-rl` makes verifiers v1 import this module and take the Taskset, Env and
+# Harness classes it exports. They load on first access, so `import glyphbench_rl` never imports
+# verifiers, and `from glyphbench_rl import *` names them only where verifiers is installed.
+_VERIFIERS_V1 = ("GlyphbenchTaskset", "GlyphbenchEnv", "GlyphbenchHarness")
+if _find_spec("verifiers") is not None:
+    __all__ += _VERIFIERS_V1
+
+
+def __getattr__(name: str):
+    if name in _VERIFIERS_V1:
+        from .integrations import verifiers_v1
+        return getattr(verifiers_v1, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -1,0 +1,77 @@
+"""The rows: one (task ID, held-out seed) pair per episode, nothing else.
+
+The game is rebuilt from its row when the episode runs (``GlyphbenchEnv.run``), so a row is a
+few bytes on the wire and a trace names exactly the instance that was played.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import verifiers.v1 as vf
+from pydantic import Field, model_validator
+
+from ...agent.harness import HarnessConfig
+from ...core import list_tasks, resolve_tasks
+from ...core.seeding import heldout_seeds
+
+
+class GlyphbenchTasksetConfig(vf.TasksetConfig):
+    """--env.taskset.*: which tasks, how many episodes each, and how prompts are composed."""
+
+    tasks: list[str] | None = None
+    """Task IDs, globs, comma lists or task-list files, as glyphbench_rl.resolve_tasks reads
+    them; None: every standard-tier task."""
+    episodes: int = Field(1, ge=1)
+    """Episodes per task, each on its own held-out seed (the same seeds for every model)."""
+    seed_start: int = Field(0, ge=0)
+    """Offset into the held-out seed range [1,000,000, 2,000,000)."""
+    history: int = 8
+    """Past observation/reply pairs kept in each prompt (the engine's harness.history)."""
+    legend: str = "always"
+    """always, or changed: leave the legend out while the prompt already holds it."""
+    max_context_tokens: int | None = None
+    """Prompt budget in estimated tokens (chars/4); old turns leave the prompt to fit."""
+
+    @model_validator(mode="after")
+    def _check(self):
+        # Fail while the config is parsed, before any model call: unknown IDs name the closest
+        # ones, and harness values get the engine's own one-line errors.
+        self.task_ids()
+        self.prompt_config()
+        heldout_seeds(self.episodes, self.seed_start)
+        return self
+
+    def task_ids(self) -> list[str]:
+        if self.tasks is None:
+            return list_tasks(tier="standard")
+        try:
+            return resolve_tasks(list(self.tasks))
+        except LookupError as e:   # UnknownTaskError: pydantic reports only ValueErrors cleanly
+            raise ValueError(str(e)) from None
+
+    def prompt_config(self) -> HarnessConfig:
+        return HarnessConfig(history=self.history, legend=self.legend,
+                             max_context_tokens=self.max_context_tokens)
+
+
+class GlyphbenchData(vf.TaskData):
+    task_id: str
+    seed: int
+
+
+class GlyphbenchTask(vf.Task[GlyphbenchData, vf.State, vf.TaskConfig]):
+    @property
+    def key(self) -> str:
+        # durable across task lists and orderings (the default hash includes the row index)
+        return f"{self.data.task_id}@{self.data.seed}"
+
+
+class GlyphbenchTaskset(vf.Taskset[GlyphbenchTask, GlyphbenchTasksetConfig]):
+    def load(self) -> Iterator[GlyphbenchTask]:
+        seeds = heldout_seeds(self.config.episodes, self.config.seed_start)
+        for task_id in self.config.task_ids():
+            for seed in seeds:
+                # prompt=None: the env opens each conversation with the first observation
+                yield GlyphbenchTask(GlyphbenchData(id=f"{task_id}@{seed}", name=task_id,
+                                                    task_id=task_id, seed=seed), self.config.task)
