@@ -8,9 +8,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, register_variants
+from ...core.params import check_int, check_range
 from .ballistics import flight, launch_velocity
 from .grid import FLOOR, PLAYER, WALL
-from .versus import LOSS, OUTCOME_REWARDS, WIN, VersusTask, check_int, check_range
+from .versus import LOSS, OUTCOME_REWARDS, WIN, VersusTask
 
 ENEMY, PATH, LANDED, ENEMY_LANDED = "E", "*", "x", "o"
 MIN_ANGLE, MAX_ANGLE = 5, 85

@@ -7,8 +7,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, cell_names, register_variants
+from ...core.params import check_int, check_range
 from .grid import FLOOR
-from .versus import WIN, VersusTask, check_int, check_range
+from .versus import WIN, VersusTask
 
 MISS, HIT, SUNK = "~", "X", "#"
 _TRIES = 10_000   # placement attempts per reset before the fleet is declared impossible to fit

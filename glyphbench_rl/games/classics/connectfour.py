@@ -12,8 +12,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, register_variants
+from ...core.params import check_int, check_range
 from .grid import FLOOR
-from .versus import DRAW, LOSS, OUTCOME_REWARDS, WIN, VersusTask, check_int, check_range, choose
+from .versus import DRAW, LOSS, OUTCOME_REWARDS, WIN, VersusTask, choose
 
 YOU, THEM = "X", "O"
 

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
+from ...core.params import check_int
 from .grid import DELTAS, MOVES, PLAYER, WALL
 
 GRASS, TILLED, SEED, SEED_WET, SPROUT, SPROUT_WET, RIPE = "·", "=", "s", "S", "p", "P", "♣"
@@ -24,11 +25,6 @@ TILL, PLANT, WATER, HARVEST = range(4, 8)
 Cell = tuple[int, int]
 
 
-def _check_int(name: str, value: object, lo: int, hi: int) -> None:
-    if isinstance(value, bool) or not isinstance(value, int) or not lo <= value <= hi:
-        raise ValueError(f"{name} must be an int in {lo}..{hi}, got {value!r}")
-
-
 @dataclass(frozen=True)
 class FarmParams:
     size: int = 7            # the field is size x size inside the fence
@@ -38,11 +34,11 @@ class FarmParams:
     pond: int = 2            # pond cells, in a row along one fence
 
     def __post_init__(self) -> None:
-        _check_int("size", self.size, 4, 16)
-        _check_int("target", self.target, 1, 100)
-        _check_int("grow_time", self.grow_time, 1, 20)
-        _check_int("can_size", self.can_size, 1, 20)
-        _check_int("pond", self.pond, 1, self.size - 1)
+        check_int("size", self.size, 4, 16)
+        check_int("target", self.target, 1, 100)
+        check_int("grow_time", self.grow_time, 1, 20)
+        check_int("can_size", self.can_size, 1, 20)
+        check_int("pond", self.pond, 1, self.size - 1)
 
 
 class Farm(GlyphTask):

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
+from ...core.params import check_int
 from .grid import DELTAS, FLOOR, GOAL, WALL, Board
 from .motion import bfs_search
 
@@ -25,11 +26,6 @@ Cell = tuple[int, int]
 State = tuple[Cell, int]   # the ball's cell and gravity (a DELTAS index)
 
 
-def _check_int(name: str, value: object, lo: int, hi: int) -> None:
-    if isinstance(value, bool) or not isinstance(value, int) or not lo <= value <= hi:
-        raise ValueError(f"{name} must be an int in {lo}..{hi}, got {value!r}")
-
-
 @dataclass(frozen=True)
 class GravityMazeParams:
     size: int = 8                # the room's interior is size x size
@@ -40,10 +36,10 @@ class GravityMazeParams:
     time_weight: float = 0.5     # share of the win reward lost by using every turn
 
     def __post_init__(self) -> None:
-        _check_int("size", self.size, 4, 16)
-        _check_int("walls", self.walls, 0, self.size * self.size // 3)
-        _check_int("spikes", self.spikes, 0, self.size * self.size // 6)
-        _check_int("min_moves", self.min_moves, 1, 60)
+        check_int("size", self.size, 4, 16)
+        check_int("walls", self.walls, 0, self.size * self.size // 3)
+        check_int("spikes", self.spikes, 0, self.size * self.size // 6)
+        check_int("min_moves", self.min_moves, 1, 60)
         if not 0 <= self.spike_penalty <= 1:
             raise ValueError(f"spike_penalty must be in [0, 1], got {self.spike_penalty}")
         if not 0 <= self.time_weight < 1:

@@ -14,6 +14,7 @@ from math import lcm
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
+from ...core.params import check_int
 from .grid import DELTAS, FLOOR, GOAL, MOVES, PLAYER, WALL, Board, bfs_distances
 from .motion import bfs_search, view_cone
 
@@ -24,11 +25,6 @@ CLOCKWISE_NEXT = {0: 3, 3: 1, 1: 2, 2: 0}   # up -> right -> down -> left -> up
 _TRIES = 300
 
 Cell = tuple[int, int]
-
-
-def _check_int(name: str, value: object, lo: int, hi: int) -> None:
-    if isinstance(value, bool) or not isinstance(value, int) or not lo <= value <= hi:
-        raise ValueError(f"{name} must be an int in {lo}..{hi}, got {value!r}")
 
 
 @dataclass(frozen=True)
@@ -45,14 +41,14 @@ class GuardEvasionParams:
     time_weight: float = 0.5      # share of the win reward lost by using every turn
 
     def __post_init__(self) -> None:
-        _check_int("size", self.size, 5, 20)
-        _check_int("pillars", self.pillars, 0, self.size * self.size // 4)
-        _check_int("guards", self.guards, 0, 8)
-        _check_int("sentries", self.sentries, 0, 4)
-        _check_int("sentry_turn", self.sentry_turn, 1, 4)
-        _check_int("patrol", self.patrol, 2, 6)
-        _check_int("reach", self.reach, 1, 8)
-        _check_int("min_moves", self.min_moves, 1, 100)
+        check_int("size", self.size, 5, 20)
+        check_int("pillars", self.pillars, 0, self.size * self.size // 4)
+        check_int("guards", self.guards, 0, 8)
+        check_int("sentries", self.sentries, 0, 4)
+        check_int("sentry_turn", self.sentry_turn, 1, 4)
+        check_int("patrol", self.patrol, 2, 6)
+        check_int("reach", self.reach, 1, 8)
+        check_int("min_moves", self.min_moves, 1, 100)
         if not 0 <= self.caught_penalty <= 1:
             raise ValueError(f"caught_penalty must be in [0, 1], got {self.caught_penalty}")
         if not 0 <= self.time_weight < 1:

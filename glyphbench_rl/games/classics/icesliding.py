@@ -13,16 +13,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import GlyphTask, register_variants
+from ...core.params import check_int
 from .grid import DELTAS, FLOOR, GOAL, MOVES, PLAYER, WALL, Board, move_actions
 from .motion import bfs_layers, slide
 
 Cell = tuple[int, int]
 _TRIES = 500   # rock layouts tried per reset before the parameters are declared impossible
-
-
-def _check_int(name: str, value: object, lo: int, hi: int) -> None:
-    if isinstance(value, bool) or not isinstance(value, int) or not lo <= value <= hi:
-        raise ValueError(f"{name} must be an int in {lo}..{hi}, got {value!r}")
 
 
 @dataclass(frozen=True)
@@ -33,9 +29,9 @@ class IceSlidingParams:
     time_weight: float = 0.5   # share of the win reward lost by using every turn
 
     def __post_init__(self) -> None:
-        _check_int("size", self.size, 4, 16)
-        _check_int("rocks", self.rocks, 0, self.size * self.size // 3)
-        _check_int("min_moves", self.min_moves, 1, 30)
+        check_int("size", self.size, 4, 16)
+        check_int("rocks", self.rocks, 0, self.size * self.size // 3)
+        check_int("min_moves", self.min_moves, 1, 30)
         if not 0 <= self.time_weight < 1:
             raise ValueError(f"time_weight must be in [0, 1), got {self.time_weight}")
 

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from .versus import check_int
+from ...core.params import check_int
 
 GEMS = "rgbypo"
 GEM_NAMES = ("red", "green", "blue", "yellow", "purple", "orange")

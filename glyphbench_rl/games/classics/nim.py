@@ -9,8 +9,9 @@ from operator import xor
 import numpy as np
 
 from ...core import ActionSet, register_variants
+from ...core.params import check_int, check_range
 from .grid import FLOOR
-from .versus import LOSS, OUTCOME_REWARDS, WIN, VersusTask, check_int, check_range, choose
+from .versus import LOSS, OUTCOME_REWARDS, WIN, VersusTask, choose
 
 OBJECT = "●"
 

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
+from ...core.params import check_int
 from .grid import FLOOR, GOAL, WALL
 from .motion import bfs_search
 
@@ -28,11 +29,6 @@ _SEARCH_LIMIT = 5000    # positions the solver may see per parking before it is 
 _TRIES = 2000           # parkings tried per reset before the parameters are declared impossible
 
 
-def _check_int(name: str, value: object, lo: int, hi: int) -> None:
-    if isinstance(value, bool) or not isinstance(value, int) or not lo <= value <= hi:
-        raise ValueError(f"{name} must be an int in {lo}..{hi}, got {value!r}")
-
-
 @dataclass(frozen=True)
 class RushHourParams:
     horizontal: int = 1          # vehicles besides the red car that move left-right
@@ -42,11 +38,11 @@ class RushHourParams:
     time_weight: float = 0.5     # share of the win reward lost by using every turn
 
     def __post_init__(self) -> None:
-        _check_int("horizontal", self.horizontal, 0, 4)
-        _check_int("vertical", self.vertical, 0, 6)
+        check_int("horizontal", self.horizontal, 0, 4)
+        check_int("vertical", self.vertical, 0, 6)
         if not 0 <= self.truck_chance <= 1:
             raise ValueError(f"truck_chance must be in [0, 1], got {self.truck_chance}")
-        _check_int("min_moves", self.min_moves, 1, 40)
+        check_int("min_moves", self.min_moves, 1, 40)
         if not 0 <= self.time_weight < 1:
             raise ValueError(f"time_weight must be in [0, 1), got {self.time_weight}")
 

@@ -16,6 +16,7 @@ from typing import Iterable
 import numpy as np
 
 from ...core import GlyphTask, register_variants
+from ...core.params import check_int
 from .grid import DELTAS, FLOOR, GOAL, MOVES, PLAYER, WALL, move_actions, shortest_path
 
 BOX, BOX_ON_GOAL, PLAYER_ON_GOAL = "$", "*", "+"   # the classic Sokoban text notation
@@ -27,11 +28,6 @@ _PULL_RUNS = 8            # straight pulling runs per box in reverse play
 _TRIES = 1000             # rooms tried per reset before the parameters are declared impossible
 
 
-def _check_int(name: str, value: object, lo: int, hi: int) -> None:
-    if isinstance(value, bool) or not isinstance(value, int) or not lo <= value <= hi:
-        raise ValueError(f"{name} must be an int in {lo}..{hi}, got {value!r}")
-
-
 @dataclass(frozen=True)
 class SokobanParams:
     size: int = 6          # the room's interior is size x size; the grid adds the outer wall
@@ -41,11 +37,11 @@ class SokobanParams:
     max_moves: int = 30    # ... and a push-optimal solution of at most this many moves
 
     def __post_init__(self) -> None:
-        _check_int("size", self.size, 4, 12)
-        _check_int("boxes", self.boxes, 1, 4)
-        _check_int("inner_walls", self.inner_walls, 0, self.size * self.size // 4)
-        _check_int("min_pushes", self.min_pushes, 1, 6 * self.size)
-        _check_int("max_moves", self.max_moves, self.min_pushes, 512)
+        check_int("size", self.size, 4, 12)
+        check_int("boxes", self.boxes, 1, 4)
+        check_int("inner_walls", self.inner_walls, 0, self.size * self.size // 4)
+        check_int("min_pushes", self.min_pushes, 1, 6 * self.size)
+        check_int("max_moves", self.max_moves, self.min_pushes, 512)
 
 
 class _Room:

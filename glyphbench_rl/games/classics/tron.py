@@ -12,8 +12,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import register_variants
+from ...core.params import check_int, check_range
 from .grid import DELTAS, FLOOR, PLAYER, WALL, move_actions
-from .versus import DRAW, LOSS, OUTCOME_REWARDS, WIN, VersusTask, check_int, check_range, choose
+from .versus import DRAW, LOSS, OUTCOME_REWARDS, WIN, VersusTask, choose
 
 TRAIL, RIVAL, RIVAL_TRAIL, CRASH = "o", "E", "e", "*"
 

@@ -25,6 +25,7 @@ from typing import Callable, ClassVar, Mapping, Sequence, TypeVar
 import numpy as np
 
 from ...core import GlyphTask
+from ...core.params import check_int, check_range
 
 WIN, LOSS, DRAW = "win", "loss", "draw"
 OUTCOME_TEXT = {WIN: "You win.", LOSS: "You lose.", DRAW: "Draw."}
@@ -32,16 +33,6 @@ OUTCOME_TEXT = {WIN: "You win.", LOSS: "You lose.", DRAW: "Draw."}
 OUTCOME_REWARDS = "a win gives {win_reward:+g}, a loss {loss_reward:+g}, a draw or running out of turns 0."
 
 T = TypeVar("T")
-
-
-def check_int(name: str, value: object, lo: int, hi: int) -> None:
-    if isinstance(value, bool) or not isinstance(value, int) or not lo <= value <= hi:
-        raise ValueError(f"{name} must be an int in {lo}..{hi}, got {value!r}")
-
-
-def check_range(name: str, value: object, lo: float, hi: float) -> None:
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not lo <= value <= hi:
-        raise ValueError(f"{name} must be a number in [{lo:g}, {hi:g}], got {value!r}")
 
 
 def choose(rng: np.random.Generator, strength: float,

@@ -11,15 +11,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
+from ...core.params import check_int
 from .grid import DELTAS, FLOOR, MOVES, PLAYER, WALL, Board, bfs_distances
 
 FILLED = "■"
 Cell = tuple[int, int]
-
-
-def _check_int(name: str, value: object, lo: int, hi: int) -> None:
-    if isinstance(value, bool) or not isinstance(value, int) or not lo <= value <= hi:
-        raise ValueError(f"{name} must be an int in {lo}..{hi}, got {value!r}")
 
 
 @dataclass(frozen=True)
@@ -31,9 +27,9 @@ class WarehouseParams:
     time_weight: float = 0.5     # share of the finish bonus lost by using every turn
 
     def __post_init__(self) -> None:
-        _check_int("size", self.size, 5, 20)
-        _check_int("packages", self.packages, 1, min(8, (self.size + 1) // 2))
-        _check_int("rack_gap", self.rack_gap, 1, self.size)
+        check_int("size", self.size, 5, 20)
+        check_int("packages", self.packages, 1, min(8, (self.size + 1) // 2))
+        check_int("rack_gap", self.rack_gap, 1, self.size)
         if not 0 < self.delivery_share < 1:
             raise ValueError(f"delivery_share must be in (0, 1), got {self.delivery_share}")
         if not 0 <= self.time_weight < 1:
