@@ -59,7 +59,7 @@ def _f(x: float | None, spec: str) -> str:
 
 def format_comparison(c: dict[str, Any], name_a: str = "A", name_b: str = "B") -> str:
     width = max([44] + [len(r["task_id"]) for r in c["task_rows"]])
-    out = [f"paired comparison, B − A on the (task, seed) pairs both runs finished",
+    out = ["paired comparison, B − A on the (task, seed) pairs both runs finished",
            f"  A: {name_a}", f"  B: {name_b}",
            f"{c['pairs']} pairs on {c['tasks']} tasks; unpaired episodes: "
            f"{c['unpaired']['only_a']} only in A, {c['unpaired']['only_b']} only in B", "",
