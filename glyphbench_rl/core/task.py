@@ -126,6 +126,11 @@ class GlyphTask(gym.Env[str, int]):
     def say(self, text: str) -> None:
         self._messages.append(text)
 
+    def time_bonus(self, weight: float) -> float:
+        """1 minus ``weight`` x the share of the horizon used so far: the usual win reward of
+        puzzles that pay for finishing early."""
+        return 1 - weight * self.turn / self.max_turns
+
     # -- gymnasium API ------------------------------------------------------------------------------
     def reset(self, *, seed: int | None = None, options: dict | None = None) -> tuple[str, dict]:
         if seed is None:

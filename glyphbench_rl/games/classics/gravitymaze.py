@@ -126,7 +126,7 @@ class GravityMaze(GlyphTask):
     def _act(self, action: int) -> None:
         self.ball, self.gravity = fall(self.board, (self.ball, self.gravity), action)
         if self.ball == self.goal:
-            self.reward(1 - self.params.time_weight * self.turn / self.max_turns)
+            self.reward(self.time_bonus(self.params.time_weight))
             self.say("The ball reached the goal.")
             self.finish(won=True)
         elif self.ball in self.spikes:

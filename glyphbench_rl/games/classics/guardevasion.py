@@ -214,7 +214,7 @@ class GuardEvasion(GlyphTask):
             self.say("Bumped into a wall.")
         self.pos = nxt
         if nxt == self.exit:
-            self.reward(1 - self.params.time_weight * self.turn / self.max_turns)
+            self.reward(self.time_bonus(self.params.time_weight))
             self.say("You slipped out through the exit.")
             self.finish(won=True)
             return

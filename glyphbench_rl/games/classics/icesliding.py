@@ -113,7 +113,7 @@ class IceSliding(GlyphTask):
             return
         self.pos = end
         if end == self.exit:
-            self.reward(1 - self.params.time_weight * self.turn / self.max_turns)
+            self.reward(self.time_bonus(self.params.time_weight))
             self.say("Reached the exit.")
             self.finish(won=True)
 

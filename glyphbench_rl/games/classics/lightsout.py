@@ -141,7 +141,7 @@ class LightsOut(GlyphTask):
         self.state ^= self.masks[action]
         if self.state == 0:
             # turn >= 1 and time_weight < 1, so a win is worth more than 0 and less than 1
-            self.reward(1 - self.params.time_weight * self.turn / self.max_turns)
+            self.reward(self.time_bonus(self.params.time_weight))
             self.say("All lights are off.")
             self.finish(won=True)
 

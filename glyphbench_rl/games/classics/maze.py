@@ -75,7 +75,7 @@ class Maze(GlyphTask):
             return
         self.pos = (r, c)
         if self.pos == self.exit:
-            self.reward(1 - self.params.time_weight * self.turn / self.max_turns)
+            self.reward(self.time_bonus(self.params.time_weight))
             self.say("Reached the exit.")
             self.finish(won=True)
 

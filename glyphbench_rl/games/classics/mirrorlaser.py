@@ -202,7 +202,7 @@ class MirrorLaser(GlyphTask):
         self.placed += (ch == FLOOR) - (ch == BACKSLASH)
         self.cells[action] = CYCLE[ch]
         if self._beam():
-            self.reward(1 - self.params.time_weight * self.turn / self.max_turns)
+            self.reward(self.time_bonus(self.params.time_weight))
             self.say("The beam hits the target.")
             self.finish(won=True)
 

@@ -138,7 +138,7 @@ class Nonogram(GlyphTask):
         whole = (1 << n) - 1
         self._lines[r] = _row(n, self.filled >> r * n & whole, self.marked >> r * n & whole)
         if self.filled == self.solution:
-            self.reward(1 - self.params.time_weight * self.turn / self.max_turns)
+            self.reward(self.time_bonus(self.params.time_weight))
             self.say("Solved: every clue is satisfied.")
             self.finish(won=True)
 

@@ -182,7 +182,7 @@ class PipeConnect(GlyphTask):
             r = action // n
             self._lines[r] = "".join(self._chars[r * n:(r + 1) * n])
         if self.connected:
-            self.reward(1 - self.params.time_weight * self.turn / self.max_turns)
+            self.reward(self.time_bonus(self.params.time_weight))
             self.say("Water reaches the drain.")
             self.finish(won=True)
 

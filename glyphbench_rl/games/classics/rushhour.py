@@ -242,7 +242,7 @@ class RushHour(GlyphTask):
             return
         self.state += delta
         if self.lot.solved(self.state):
-            self.reward(1 - self.params.time_weight * self.turn / self.max_turns)
+            self.reward(self.time_bonus(self.params.time_weight))
             self.say("The red car drove out.")
             self.finish(won=True)
 

@@ -141,7 +141,7 @@ class Warehouse(GlyphTask):
             self.reward(p.delivery_share / p.packages)
             self.say(f"Delivered {dock}.")
             if len(self.delivered) == p.packages:
-                self.reward((1 - p.delivery_share) * (1 - p.time_weight * self.turn / self.max_turns))
+                self.reward((1 - p.delivery_share) * self.time_bonus(p.time_weight))
                 self.say("Every package is delivered.")
                 self.finish(won=True)
         else:
