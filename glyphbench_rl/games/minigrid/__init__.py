@@ -13,3 +13,16 @@ from . import crossing  # noqa: F401
 from . import dynamicobstacles  # noqa: F401
 from . import distshift  # noqa: F401
 from . import multiroom  # noqa: F401
+from . import keycorridor  # noqa: F401
+from . import lockedroom  # noqa: F401
+from . import unlock  # noqa: F401
+from . import unlockpickup  # noqa: F401
+from . import blockedunlockpickup  # noqa: F401
+from . import memory  # noqa: F401
+from . import fetch  # noqa: F401
+from . import gotodoor  # noqa: F401
+from . import gotoobject  # noqa: F401
+from . import putnear  # noqa: F401
+from . import redbluedoors  # noqa: F401
+from . import obstructedmaze  # noqa: F401
+from . import playground  # noqa: F401

@@ -11,9 +11,11 @@ from glyphbench_rl.games.minigrid.engine import FORWARD, LEFT, RIGHT
 from glyphbench_rl.games.minigrid.world import Ball
 
 MINIGRID = glyphbench_rl.list_tasks(suite="MiniGrid")
+# Playground has no mission and nothing to win (its episodes are tested in test_playground.py).
+WINNABLE = [t for t in MINIGRID if t != "glyphbench/minigrid-playground-v0"]
 
 
-@pytest.mark.parametrize("task_id", MINIGRID)
+@pytest.mark.parametrize("task_id", WINNABLE)
 def test_solver_wins_every_task(task_id):
     task = glyphbench_rl.make(task_id)
     for seed in (0, 1, 2, 1_000_000, 1_000_001):
