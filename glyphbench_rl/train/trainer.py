@@ -1,0 +1,275 @@
+"""The built-in trainer: one machine, one policy, read top to bottom.
+
+Each step: for ``groups_per_update`` groups, take the next task of the cycle and play
+``group_size`` episodes of it on distinct training seeds with the current policy; compute
+group-relative advantages; build training sequences from the exact sampled ids; one AdamW update
+over micro-batches whose loss is normalised by the step's total trainable tokens. Every seed, the
+task cursor and the sampling stream derive from (config seed, step), so a resumed run continues
+exactly where a checkpoint left it.
+
+Run directory: ``config.yaml`` (resolved), ``metrics.jsonl`` (one line per step, ``train/...`` and
+``eval/...`` keys), ``rollouts/step_NNNNNN.jsonl`` (trajectories for replay),
+``checkpoints/step_NNNNNN/`` (weights, tokenizer, optimizer, state; written under a temporary
+name and renamed, so a kill never leaves a half checkpoint), ``eval/step_NNNNNN/`` (held-out jobs).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import statistics
+import time
+from collections import defaultdict
+from pathlib import Path
+from typing import Any, Callable
+
+from ..core import resolve_tasks
+from ..core.seeding import generator, training_seeds
+from ..replay.schema import Trajectory
+from ..rollout.engine import EpisodeSpec, RolloutEngine
+from ..rollout.hf_backend import HFBackend
+from .advantages import group_advantages
+from .config import TrainConfig
+from .samples import Sample, micro_batches, trajectory_samples
+
+CKPT_PREFIX = "step_"
+
+
+def write_atomic(path: Path, text: str) -> None:
+    tmp = path.with_name(f".{path.name}.tmp")
+    tmp.write_text(text, encoding="utf-8")
+    os.replace(tmp, path)
+
+
+class Trainer:
+    def __init__(self, config: TrainConfig, out: str | Path, *, resume: bool = False,
+                 log: Callable[[str], None] = print, model=None, tokenizer=None) -> None:
+        import torch
+
+        self.cfg, self.out, self.log = config, Path(out), log
+        self.tasks = resolve_tasks(config.tasks)        # unknown IDs fail before any model loads
+        self.harness = config.harness_config()
+        self.out.mkdir(parents=True, exist_ok=True)
+        if not resume and (self.out / "metrics.jsonl").exists():
+            raise FileExistsError(f"{self.out} already holds a run; pass --resume to continue it "
+                                  f"or choose another --out")
+        ckpt = latest_checkpoint(self.out) if resume else None
+        if model is None:
+            from ..models import load_model
+            model, tokenizer = load_model(str(ckpt) if ckpt else config.model,
+                                          device=config.device, dtype=config.dtype)
+        elif ckpt is not None:
+            from safetensors.torch import load_file
+            model.load_state_dict(load_file(str(ckpt / "model.safetensors")), strict=False)
+        self.model, self.tokenizer = model, tokenizer
+        if config.gradient_checkpointing:
+            model.gradient_checkpointing_enable()
+        self.optimizer = torch.optim.AdamW(model.parameters(), lr=config.lr, betas=tuple(config.betas),
+                                           weight_decay=config.weight_decay)
+        self.step = 0
+        if ckpt is not None:
+            state = json.loads((ckpt / "state.json").read_text())
+            self.step = state["step"]
+            self.optimizer.load_state_dict(torch.load(ckpt / "optimizer.pt", weights_only=True))
+            self._truncate_metrics(self.step)
+            log(f"resumed {self.out} from {ckpt.name} (step {self.step})")
+        write_atomic(self.out / "config.yaml", _yaml(config.to_dict()))
+        self._torch = torch
+
+    # -- the loop ---------------------------------------------------------------------------------
+    def run(self) -> None:
+        while self.step < self.cfg.steps:
+            metrics = self.train_step()
+            if self.cfg.eval_every and self.step % self.cfg.eval_every == 0:
+                metrics.update(self.evaluate())
+            with open(self.out / "metrics.jsonl", "a", encoding="utf-8") as fh:
+                fh.write(json.dumps(metrics) + "\n")
+            self.log(_progress_line(metrics, self.cfg.steps))
+            if self.step % self.cfg.checkpoint_every == 0 or self.step == self.cfg.steps:
+                self.save_checkpoint()
+
+    def train_step(self) -> dict[str, Any]:
+        cfg, torch = self.cfg, self._torch
+        step = self.step + 1
+        t0 = time.perf_counter()
+        trajs = self.rollouts(step)
+        t_roll = time.perf_counter() - t0
+        samples, skipped, group_stats = self.samples(trajs)
+        t1 = time.perf_counter()
+        loss_stats = self.update(samples)
+        t_train = time.perf_counter() - t1
+        self.step = step
+        if cfg.save_rollouts:
+            self._save_rollouts(step, trajs)
+        returns = [t.episode_return for t in trajs]
+        per_task: dict[str, list[float]] = defaultdict(list)
+        for t in trajs:
+            per_task[t.task_id].append(t.episode_return)
+        turns = sum(t.length for t in trajs)
+        return {
+            "step": step,
+            "train/return_mean": statistics.fmean(returns),
+            "train/return_by_task": {k: statistics.fmean(v) for k, v in per_task.items()},
+            "train/forfeit_rate": sum(t.forfeits for t in trajs) / max(1, turns),
+            "train/episode_length": turns / len(trajs),
+            "train/win_rate": sum(bool(t.won) for t in trajs) / len(trajs),
+            "train/completion_tokens": sum(t.completion_tokens for t in trajs),
+            "train/trainable_tokens": sum(s.trainable for s in samples),
+            "train/sequences": len(samples),
+            "train/skipped_tokens": skipped,
+            "train/zero_advantage_groups": group_stats,
+            **loss_stats,
+            "time/rollout_s": t_roll, "time/train_s": t_train,
+        }
+
+    def rollouts(self, step: int) -> list[Trajectory]:
+        cfg = self.cfg
+        specs = []
+        overrides = {} if cfg.max_turns is None else {"max_turns": cfg.max_turns}
+        for g in range(cfg.groups_per_update):
+            k = (step - 1) * cfg.groups_per_update + g      # global group index: the task cursor
+            task_id = self.tasks[k % len(self.tasks)]
+            for seed in training_seeds(cfg.seed, cfg.group_size, "group", k):
+                specs.append(EpisodeSpec(task_id, seed, overrides, tag={"step": step, "group": k}))
+        backend = HFBackend(self.model, tokenizer=self.tokenizer, temperature=cfg.temperature,
+                            top_p=cfg.top_p, max_new_tokens=cfg.max_new_tokens,
+                            batch_size=cfg.max_episodes_at_once,
+                            seed=int(generator(cfg.seed, "sampling", step).integers(2**62)))
+        self.model.eval()
+        engine = RolloutEngine(backend, self.harness, max_episodes=cfg.max_episodes_at_once,
+                               meta={"model": cfg.model, "split": "train"})
+        return engine.run(specs)
+
+    def samples(self, trajs: list[Trajectory]) -> tuple[list[Sample], int, int]:
+        groups: dict[int, list[Trajectory]] = defaultdict(list)
+        for t in trajs:
+            groups[t.meta["tag"]["group"]].append(t)
+        samples, skipped, flat = [], 0, 0
+        for members in groups.values():
+            eligible = [self.cfg.include_truncated or not t.truncated for t in members]
+            adv = group_advantages([t.episode_return for t in members], eligible,
+                                   std_normalize=self.cfg.std_normalize)
+            flat += int(not adv.any())
+            for t, a, ok in zip(members, adv, eligible):
+                if ok and a != 0.0:           # zero advantage: only the KL term would act
+                    got, lost = trajectory_samples(t, float(a), self.cfg.seq_len)
+                    samples += got
+                    skipped += lost
+        return samples, skipped, flat
+
+    def update(self, samples: list[Sample]) -> dict[str, float]:
+        from .logprobs import token_logprobs
+        from .losses import default_loss, ipo_loss, masked_fraction
+
+        torch, cfg = self._torch, self.cfg
+        n_tokens = sum(s.trainable for s in samples)
+        if n_tokens == 0:
+            return {"train/loss": 0.0, "train/grad_norm": 0.0, "train/masked_fraction": 0.0}
+        device = next(self.model.parameters()).device
+        self.model.train()
+        self.optimizer.zero_grad(set_to_none=True)
+        total, dropped = 0.0, 0.0
+        for batch in micro_batches(samples, cfg.micro_batch_tokens):
+            width = max(len(s) for s in batch)
+            pad = self.tokenizer.pad_token_id or 0
+            ids = torch.tensor([s.ids + [pad] * (width - len(s)) for s in batch], device=device)
+            attn = torch.tensor([[1] * len(s) + [0] * (width - len(s)) for s in batch], device=device)
+            mask = torch.tensor([s.mask + [0] * (width - len(s)) for s in batch], device=device)
+            q = torch.tensor([s.sampling_logprobs + [0.0] * (width - len(s)) for s in batch],
+                             device=device, dtype=torch.float32)
+            adv = torch.tensor([s.advantage for s in batch], device=device, dtype=torch.float32)
+            logp = token_logprobs(self.model, ids, attn, chunk=cfg.logprob_chunk,
+                                  temperature=cfg.temperature)
+            if cfg.loss == "ipo":
+                loss = ipo_loss(logp, q, adv, mask, threshold=cfg.threshold, kl_coef=cfg.kl_coef,
+                                num_tokens=n_tokens)
+            else:
+                loss = default_loss(logp, q, adv, mask, mask_low=cfg.mask_low, mask_high=cfg.mask_high,
+                                    adv_tau=cfg.adv_tau, kl_coef=cfg.kl_coef, num_tokens=n_tokens)
+            loss.backward()
+            total += float(loss)
+            with torch.no_grad():
+                dropped += masked_fraction(logp, q, mask, threshold=cfg.threshold) * float(mask.sum())
+        norm = torch.nn.utils.clip_grad_norm_(self.model.parameters(), cfg.grad_clip)
+        self.optimizer.step()
+        self.model.eval()
+        return {"train/loss": total, "train/grad_norm": float(norm),
+                "train/masked_fraction": dropped / n_tokens}
+
+    # -- evaluation ---------------------------------------------------------------------------------
+    def evaluate(self) -> dict[str, Any]:
+        from ..evaluate.job import EvalConfig, run_job
+
+        cfg = self.cfg
+        backend = HFBackend(self.model, tokenizer=self.tokenizer, temperature=cfg.temperature,
+                            top_p=cfg.top_p, max_new_tokens=cfg.max_new_tokens,
+                            batch_size=cfg.max_episodes_at_once, seed=cfg.seed)
+        job = EvalConfig(tasks=self.tasks, backend="hf", episodes=cfg.eval_episodes, model=cfg.model,
+                         max_episodes_at_once=cfg.max_episodes_at_once, harness=dict(cfg.harness),
+                         backend_options={"step": self.step})
+        res = run_job(job, self.out / "eval" / f"{CKPT_PREFIX}{self.step:06d}", backend=backend,
+                      log=None)
+        overall = res.summary["overall"]
+        return {"eval/return_mean": overall["return_mean"], "eval/return_ci95": overall["return_ci95"],
+                "eval/forfeit_rate": overall["forfeit_rate"],
+                "eval/return_by_task": {r["task_id"]: r["return_mean"] for r in res.summary["tasks"]}}
+
+    # -- checkpoints --------------------------------------------------------------------------------
+    def save_checkpoint(self) -> Path:
+        ckpts = self.out / "checkpoints"
+        ckpts.mkdir(exist_ok=True)
+        final = ckpts / f"{CKPT_PREFIX}{self.step:06d}"
+        tmp = ckpts / f".partial-{final.name}"
+        shutil.rmtree(tmp, ignore_errors=True)
+        self.model.save_pretrained(tmp)
+        self.tokenizer.save_pretrained(tmp)
+        self._torch.save(self.optimizer.state_dict(), tmp / "optimizer.pt")
+        (tmp / "state.json").write_text(json.dumps({"step": self.step}))
+        shutil.rmtree(final, ignore_errors=True)
+        os.replace(tmp, final)                      # complete, or absent: never half written
+        for old in sorted(p for p in ckpts.glob(f"{CKPT_PREFIX}*"))[:-self.cfg.keep_checkpoints]:
+            shutil.rmtree(old, ignore_errors=True)
+        return final
+
+    def _truncate_metrics(self, step: int) -> None:
+        """Drop metric lines of steps after the checkpoint (they are about to be redone)."""
+        path = self.out / "metrics.jsonl"
+        if path.exists():
+            keep = [line for line in path.read_text(encoding="utf-8").splitlines()
+                    if line.strip() and _line_step(line) <= step]
+            write_atomic(path, "".join(line + "\n" for line in keep))
+
+    def _save_rollouts(self, step: int, trajs: list[Trajectory]) -> None:
+        d = self.out / "rollouts"
+        d.mkdir(exist_ok=True)
+        write_atomic(d / f"{CKPT_PREFIX}{step:06d}.jsonl",
+                     "".join(json.dumps(t.to_dict()) + "\n" for t in trajs))
+
+
+def latest_checkpoint(out: Path) -> Path | None:
+    found = sorted((out / "checkpoints").glob(f"{CKPT_PREFIX}*")) if (out / "checkpoints").exists() else []
+    return found[-1] if found else None
+
+
+def _line_step(line: str) -> int:
+    try:
+        return int(json.loads(line).get("step", 0))
+    except (json.JSONDecodeError, AttributeError, TypeError, ValueError):
+        return 1 << 62          # a torn last line: dropped with the steps being redone
+
+
+def _yaml(data: dict) -> str:
+    import yaml
+    return yaml.safe_dump(data, sort_keys=False)
+
+
+def _progress_line(m: dict[str, Any], steps: int) -> str:
+    line = (f"step {m['step']}/{steps}  return {m['train/return_mean']:+.3f}  "
+            f"forfeit {m['train/forfeit_rate']:.0%}  len {m['train/episode_length']:.1f}  "
+            f"loss {m['train/loss']:+.4f}  grad {m['train/grad_norm']:.3f}  "
+            f"tokens {m['train/trainable_tokens']}  "
+            f"rollout {m['time/rollout_s']:.1f}s train {m['time/train_s']:.1f}s")
+    if "eval/return_mean" in m:
+        line += f"  eval {m['eval/return_mean']:+.3f}"
+    return line
