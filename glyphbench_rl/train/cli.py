@@ -19,7 +19,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                     help="config overrides, e.g. lr=5e-6 harness.history=2")
     ap.add_argument("--out", help="run directory (default: runs/<config name>)")
     ap.add_argument("--resume", action="store_true", help="continue from the last checkpoint in --out")
-    args = ap.parse_args(argv)
+    args = ap.parse_intermixed_args(argv)   # overrides may come after --out
     try:
         cfg = load_config(args.config, args.overrides)
         out = Path(args.out or Path("runs") / Path(args.config).stem)

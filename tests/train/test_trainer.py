@@ -104,7 +104,7 @@ def test_cli_errors_are_one_line(tmp_path, capsys):
     assert train_main([str(cfg), "--out", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err.strip()
     assert err.startswith("glyphbench-train: error: unknown task") and "\n" not in err
-    assert train_main([str(cfg), "stepz=3"]) == 2
+    assert train_main([str(cfg), "--out", str(tmp_path / "o"), "stepz=3"]) == 2
     assert "did you mean 'steps'" in capsys.readouterr().err
 
 
