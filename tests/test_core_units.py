@@ -75,3 +75,10 @@ def test_comma_lists_mix_globs_and_ids():
     from glyphbench_rl.core import resolve_tasks
     ids = resolve_tasks("glyphbench/classics-snake-*, glyphbench/classics-2048-v0")
     assert ids[-1] == "glyphbench/classics-2048-v0" and len(ids) == 4
+
+
+def test_catalog_task_not_yet_implemented_says_so():
+    import pytest
+    from glyphbench_rl.core import UnknownTaskError, make
+    with pytest.raises(UnknownTaskError, match="in the GlyphBench catalog but not implemented"):
+        make("glyphbench/minihack-boxoban-hard-v0")

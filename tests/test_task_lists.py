@@ -37,3 +37,14 @@ def test_resolve_tasks_forms(tmp_path):
         resolve_tasks("glyphbench/classics-snake-eazy-v0")
     with pytest.raises(ValueError, match="no registered task matches"):
         resolve_tasks("glyphbench/nothing-*")
+
+
+def test_multitask100_is_the_paper_mixture():
+    from collections import Counter
+    from pathlib import Path
+    root = Path(__file__).resolve().parents[1] / "tasks"
+    ids = [l for l in (root / "multitask100.txt").read_text().splitlines() if l and not l.startswith("#")]
+    rows = [l.split("\t") for l in (root / "catalog.tsv").read_text().splitlines()[1:]]
+    assert ids == [r[2] for r in rows if r[4] == "yes"]
+    assert Counter(r[0] for r in rows if r[4] == "yes") == {
+        "Classics": 18, "Craftax": 18, "MiniAtari": 18, "MiniGrid": 18, "MiniHack": 19, "Procgen": 9}

@@ -17,6 +17,7 @@ import fnmatch
 import importlib
 import re
 from dataclasses import dataclass, field
+from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Iterable, Mapping
 
@@ -114,7 +115,20 @@ def get_spec(task_id: str) -> TaskSpec:
         raise UnknownTaskError(unknown_task_message(task_id)) from None
 
 
+_CATALOG = Path(__file__).resolve().parents[2] / "tasks" / "catalog.tsv"
+
+
+def _catalog_ids() -> set[str]:
+    if not _CATALOG.exists():       # an installed wheel carries no task lists
+        return set()
+    lines = _CATALOG.read_text(encoding="utf-8").splitlines()[1:]
+    return {line.split("\t")[2] for line in lines if line.count("\t") >= 2}
+
+
 def unknown_task_message(task_id: str) -> str:
+    if task_id in _catalog_ids():
+        return (f"task {task_id!r} is in the GlyphBench catalog but not implemented in this "
+                f"version yet; `glyphbench list --counts` shows what is")
     close = difflib.get_close_matches(str(task_id), list(_REGISTRY), n=3, cutoff=0.5)
     if not close:  # try the short form "snake-easy" against "classics-snake-easy"
         core = {tid.split("/", 1)[-1].rsplit("-v", 1)[0]: tid for tid in _REGISTRY}
