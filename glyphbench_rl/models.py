@@ -86,6 +86,13 @@ def load_model(name: str, *, device: str | None = None, dtype: str | None = None
         model = AutoModelForCausalLM.from_pretrained(where, dtype=getattr(torch, dtype), **kw)
     except OSError as e:
         raise FileNotFoundError(f"cannot load model {name!r}: {str(e).splitlines()[0]}") from None
+    if "gguf_file" in kw:
+        # transformers de-quantizes GGUF weights on load but keeps a quantizer marker that makes
+        # save_pretrained refuse; the tensors are plain, so drop the marker (checkpoints work)
+        model.hf_quantizer = None
+        model.is_quantized = False
+        if hasattr(model.config, "quantization_config"):
+            del model.config.quantization_config
     model.to(device)
     model.eval()
     if model.generation_config.pad_token_id is None:

@@ -29,3 +29,16 @@ def test_smollm2_plays_an_episode(smollm2):
             assert s.prompt_ids[:3] == smollm2.tokenizer.encode("<|im_start|>system\n")
             assert len(s.logprobs) == len(s.completion_ids) > 0
             assert all(lp <= 0 for lp in s.logprobs)
+
+
+def test_default_model_checkpoints_round_trip(smollm2, tmp_path):
+    """The GGUF-loaded model saves as a plain HF folder (training checkpoints) and reloads."""
+    import torch
+
+    from glyphbench_rl.models import load_model
+    smollm2.model.save_pretrained(tmp_path)
+    smollm2.tokenizer.save_pretrained(tmp_path)
+    again, tok = load_model(str(tmp_path))
+    ids = torch.tensor([tok.encode("<action>UP</action>")])
+    with torch.no_grad():
+        assert torch.allclose(smollm2.model(ids).logits, again(ids).logits, atol=1e-5)
