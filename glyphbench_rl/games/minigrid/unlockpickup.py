@@ -16,20 +16,14 @@ import numpy as np
 
 from ...core import register_variants
 from .engine import PICKUP, capped
-from .rooms import RoomGridParams, RoomGridTask
+from .rooms import RoomGridTask
+from .unlock import UnlockParams
 from .solver import fetch, win_script
 
 
 @dataclass(frozen=True)
-class UnlockPickupParams(RoomGridParams):
-    room_size: int = 6
-    num_rows: int = 1
-    num_cols: int = 2
-
-    def __post_init__(self) -> None:
-        super().__post_init__()
-        if self.num_cols < 2:
-            raise ValueError(f"num_cols must be at least 2, got {self.num_cols}")
+class UnlockPickupParams(UnlockParams):   # the same two-room layout as Unlock
+    pass
 
 
 class UnlockPickup(RoomGridTask):
