@@ -1,0 +1,60 @@
+import json
+
+import pytest
+
+yaml = pytest.importorskip("yaml")
+
+from glyphbench_rl.train.config import ConfigError  # noqa: E402
+from glyphbench_rl.train.sweep import expand, main, slurm_script, status, write_conditions  # noqa: E402
+
+
+def test_snake_sweep_expands_to_the_papers_conditions():
+    spec = yaml.safe_load(open("configs/snake_sweep.yaml"))
+    conds = expand(spec)
+    main_grid = [c for n, c in conds if not n.startswith("long")]
+    long = [c for n, c in conds if n.startswith("long")]
+    assert len(main_grid) == 60 and len(long) == 6
+    assert {c["group_size"]: c["steps"] for c in main_grid} == {32: 192, 64: 96, 128: 48, 256: 24, 512: 12}
+    assert {c["group_size"]: c["steps"] for c in long} == {32: 800, 512: 50}
+    assert all(c["loss"] == "ipo" and c["max_new_tokens"] == 4096 for _, c in conds)
+    names = [n for n, _ in conds]
+    assert "snake-easy_g32_lr1e-06" in names and len(set(names)) == len(names)
+
+
+@pytest.mark.parametrize("spec, match", [
+    ({"grid": {"lrr": [1]}}, "unknown config key 'lrr'"),
+    ({"grid": {"lr": 1}}, "must be a non-empty list"),
+    ({"base": {}, "grids": {}}, "unknown sweep key 'grids'"),
+    ({"grid": {"group_size": [3]}, "rollout_budget": 10}, "not a multiple"),
+    ({"grid": {"group_size": [0]}}, "group_size must be an int >= 1"),
+])
+def test_bad_sweeps(spec, match):
+    with pytest.raises(ConfigError, match=match):
+        expand(spec)
+
+
+def test_slurm_script_and_dry_run(tmp_path, capsys):
+    rows = write_conditions(tmp_path, expand({"grid": {"lr": [1e-6, 2e-6]}}))
+    text = slurm_script(tmp_path, rows, "#SBATCH --gres=gpu:1")
+    assert "#SBATCH --array=0-1" in text and "#SBATCH --gres=gpu:1" in text
+    assert text.count("glyphbench_rl.train.cli") == 4 and "--resume" in text
+    sweep = tmp_path / "s.yaml"
+    sweep.write_text("grid: {lr: [1.0e-6, 2.0e-6]}\n")
+    assert main([str(sweep), "--dry-run"]) == 0
+    assert "2 conditions" in capsys.readouterr().out
+
+
+def test_runs_skip_finished_and_tabulate(tmp_path, tiny_model_dir, capsys):
+    sweep = tmp_path / "s.yaml"
+    sweep.write_text(f"base: {{model: {tiny_model_dir}, tasks: glyphbench/classics-snake-easy-v0, "
+                     f"max_new_tokens: 4, max_turns: 3, checkpoint_every: 1}}\n"
+                     f"grid: {{group_size: [2, 4]}}\nrollout_budget: 4\n")
+    out = tmp_path / "sweep"
+    assert main([str(sweep), "--out", str(out), "--parallel", "2"]) == 0
+    for name, steps in (("g2", 2), ("g4", 1)):
+        assert status(out / "runs" / name, steps) == "done"
+    summary = json.loads((out / "summary.json").read_text())
+    assert [r["steps"] for r in summary] == [2, 1]
+    capsys.readouterr()
+    assert main([str(sweep), "--out", str(out)]) == 0          # rerun: nothing left to do
+    assert capsys.readouterr().out.count("done, skipped") == 2
