@@ -158,6 +158,62 @@ def table(out: Path, rows, last: int = 5) -> str:
     return text
 
 
+def figure(out: Path, rows, spec_grid_keys: Sequence[str], smooth: int = 15) -> Path | None:
+    """Learning curves like the paper's Snake figure: one panel per combination of the grid keys
+    other than group size (rows: the second key, e.g. lr; columns: the first, e.g. task), one
+    colour per group size, train return against rollouts used (pale: per step; solid: trailing
+    mean over ``smooth`` steps)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    panel_keys = [k for k in spec_grid_keys if k != "group_size"]
+    col_key = panel_keys[0] if panel_keys else None
+    row_key = panel_keys[1] if len(panel_keys) > 1 else None
+    cols = sorted({str(c.get(col_key)) for _, c, _ in rows}) if col_key else ["all"]
+    row_vals = sorted({c.get(row_key) for _, c, _ in rows}) if row_key else [None]
+    sizes = sorted({c.get("group_size", 32) for _, c, _ in rows})
+    colours = plt.get_cmap("viridis")
+    fig, axes = plt.subplots(len(row_vals), len(cols), squeeze=False, sharex=True, sharey=True,
+                             figsize=(3.2 * len(cols), 2.4 * len(row_vals)))
+    drawn = False
+    for name, cfg, _ in rows:
+        path = out / "runs" / name / "metrics.jsonl"
+        if not path.exists():
+            continue
+        metrics = [json.loads(x) for x in path.read_text().splitlines() if x.strip()]
+        if not metrics:
+            continue
+        r = row_vals.index(cfg.get(row_key)) if row_key else 0
+        c = cols.index(str(cfg.get(col_key))) if col_key else 0
+        g = cfg.get("group_size", 32)
+        per_step = g * cfg.get("groups_per_update", 1)
+        x = [m["step"] * per_step for m in metrics]
+        y = [m["train/return_mean"] for m in metrics]
+        trail = [sum(y[max(0, i - smooth + 1):i + 1]) / len(y[max(0, i - smooth + 1):i + 1]) for i in range(len(y))]
+        colour = colours(sizes.index(g) / max(1, len(sizes) - 1))
+        ax = axes[r][c]
+        ax.plot(x, y, color=colour, alpha=0.25, linewidth=0.8)
+        ax.plot(x, trail, color=colour, linewidth=1.6, label=f"G={g}")
+        drawn = True
+    if not drawn:
+        plt.close(fig)
+        return None
+    for c, col in enumerate(cols):
+        axes[0][c].set_title(_short(col_key, col) if col_key else col, fontsize=9)
+        axes[-1][c].set_xlabel("rollouts")
+    for r, val in enumerate(row_vals):
+        axes[r][0].set_ylabel(f"{row_key} {val:g}\nreturn" if row_key else "return", fontsize=9)
+    handles, labels = axes[0][0].get_legend_handles_labels()
+    uniq = dict(zip(labels, handles))
+    fig.legend(uniq.values(), uniq.keys(), loc="upper right", fontsize=8)
+    fig.tight_layout()
+    path = out / "curves.png"
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     import yaml
 
@@ -191,6 +247,13 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 0
     failed = 0 if args.table else run_local(out, rows, max(1, args.parallel))
     print(table(out, rows))
+    try:
+        png = figure(out, rows, list((spec.get("grid") or {}).keys()))
+    except ImportError:
+        print("(no figure: pip install matplotlib)")
+    else:
+        if png is not None:
+            print(f"learning curves: {png}")
     return 1 if failed else 0
 
 

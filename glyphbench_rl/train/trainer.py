@@ -90,7 +90,7 @@ class Trainer:
                 self.save_checkpoint()
 
     def train_step(self) -> dict[str, Any]:
-        cfg, torch = self.cfg, self._torch
+        cfg = self.cfg
         step = self.step + 1
         t0 = time.perf_counter()
         trajs = self.rollouts(step)

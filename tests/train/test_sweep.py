@@ -55,6 +55,8 @@ def test_runs_skip_finished_and_tabulate(tmp_path, tiny_model_dir, capsys):
         assert status(out / "runs" / name, steps) == "done"
     summary = json.loads((out / "summary.json").read_text())
     assert [r["steps"] for r in summary] == [2, 1]
+    if __import__("importlib").util.find_spec("matplotlib"):
+        assert (out / "curves.png").stat().st_size > 1000
     capsys.readouterr()
     assert main([str(sweep), "--out", str(out)]) == 0          # rerun: nothing left to do
     assert capsys.readouterr().out.count("done, skipped") == 2
