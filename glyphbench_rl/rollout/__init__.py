@@ -2,7 +2,7 @@
 
 from .backend import (BackendError, GenRequest, Generation, PolicyBackend, RandomBackend,
                       ScriptedBackend)
-from .engine import EngineStats, EpisodeSpec, RolloutEngine, run_episodes
+from .engine import EngineStats, EpisodeSpec, RolloutEngine
 
 __all__ = ["BackendError", "EngineStats", "EpisodeSpec", "GenRequest", "Generation",
-           "PolicyBackend", "RandomBackend", "RolloutEngine", "ScriptedBackend", "run_episodes"]
+           "PolicyBackend", "RandomBackend", "RolloutEngine", "ScriptedBackend"]

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import time
 from dataclasses import asdict, dataclass, field
-from typing import Any, Callable, Iterable, Mapping, Sequence
+from typing import Any, Callable, Iterable, Mapping
 
 from ..agent.harness import BasicHarness, HarnessConfig, Turn
 from ..agent.parse import parse_action
@@ -171,6 +171,3 @@ class RolloutEngine:
             ep.traj.won = ep.task.won
             ep.traj.final_observation = ep.task.frame.render()
 
-
-def run_episodes(backend: PolicyBackend, episodes: Sequence[EpisodeSpec], **kw) -> list[Trajectory]:
-    return RolloutEngine(backend, **kw).run(episodes)

@@ -70,10 +70,11 @@ class HFBackend:
                 input_ids=ids.to(self.device), attention_mask=mask.to(self.device),
                 max_new_tokens=self.max_new_tokens, pad_token_id=self.pad_id, eos_token_id=self.eos_id,
                 return_dict_in_generate=True, output_scores=True, **kw)
-        new = res.sequences[:, width:].cpu()
-        scores = torch.stack(res.scores, dim=1).float()            # (batch, steps, vocab), processed
-        logp = torch.log_softmax(scores, dim=-1).gather(-1, new[:, :scores.shape[1], None].to(scores.device))
-        logp = logp[..., 0].cpu()
+        seqs = res.sequences[:, width:]
+        # one step at a time: stacking every step's scores would hold steps x batch x vocab floats
+        logp = torch.stack([torch.log_softmax(score.float(), dim=-1).gather(-1, seqs[:, t, None])[:, 0]
+                            for t, score in enumerate(res.scores)], dim=1).cpu()
+        new = seqs.cpu()
         gens = []
         for row, p in enumerate(prompts):
             toks = new[row].tolist()

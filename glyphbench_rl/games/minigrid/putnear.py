@@ -20,9 +20,8 @@ import numpy as np
 
 from ...core import register_variants
 from .engine import DROP, PICKUP, MiniGridParams, MiniGridTask, capped, check_int
-from .gotoobject import MAKERS
+from .gotoobject import place_distinct_objects
 from .solver import plan, run, win_script
-from .world import COLOR_NAMES
 
 
 @dataclass(frozen=True)
@@ -52,19 +51,7 @@ class PutNear(MiniGridTask):
     def _gen(self, rng: np.random.Generator) -> None:
         n = self.params.size
         self.new_grid(n, n).wall_rect(0, 0, n, n)
-        objs: list[tuple[str, str]] = []
-        positions: list[tuple[int, int]] = []
-
-        def near_obj(task: MiniGridTask, p1: tuple[int, int]) -> bool:
-            return any(abs(p1[0] - p2[0]) <= 1 and abs(p1[1] - p2[1]) <= 1 for p2 in positions)
-
-        while len(objs) < self.params.objects:
-            kind = self.rand_elem(list(MAKERS))
-            color = self.rand_elem(COLOR_NAMES)
-            if (kind, color) in objs:
-                continue
-            positions.append(self.place_obj(MAKERS[kind](color), reject_fn=near_obj))
-            objs.append((kind, color))
+        objs, positions = place_distinct_objects(self, self.params.objects, apart=True)
         self.place_agent()
         k = self.rand_int(0, len(objs))
         self.move, self.move_pos = objs[k], positions[k]
