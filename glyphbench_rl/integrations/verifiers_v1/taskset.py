@@ -1,5 +1,7 @@
-"""The rows: one (task ID, held-out seed) pair per episode, nothing else.
+"""The rows: one (task ID, seed) pair per episode, nothing else.
 
+Seeds come from the held-out range by default (evaluation); ``split="train"`` draws them from the
+training range instead, for trainers such as Prime-RL that pull their examples from this taskset.
 The game is rebuilt from its row when the episode runs (``GlyphbenchEnv.run``), so a row is a
 few bytes on the wire and a trace names exactly the instance that was played.
 """
@@ -7,13 +9,14 @@ few bytes on the wire and a trace names exactly the instance that was played.
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import Literal
 
 import verifiers.v1 as vf
 from pydantic import Field, model_validator
 
 from ...agent.harness import HarnessConfig
 from ...core import list_tasks, resolve_tasks
-from ...core.seeding import heldout_seeds
+from ...core.seeding import TRAIN_SEEDS, heldout_seeds
 
 
 class GlyphbenchTasksetConfig(vf.TasksetConfig):
@@ -22,10 +25,13 @@ class GlyphbenchTasksetConfig(vf.TasksetConfig):
     tasks: list[str] | None = None
     """Task IDs, globs, comma lists or task-list files, as glyphbench_rl.resolve_tasks reads
     them; None: every standard-tier task."""
+    split: Literal["heldout", "train"] = "heldout"
+    """Which seed range the rows use: heldout [1,000,000, 2,000,000) for evaluation, or train
+    [0, 1,000,000) for training."""
     episodes: int = Field(1, ge=1)
-    """Episodes per task, each on its own held-out seed (the same seeds for every model)."""
+    """Episodes per task, each on its own seed of the split (the same seeds for every model)."""
     seed_start: int = Field(0, ge=0)
-    """Offset into the held-out seed range [1,000,000, 2,000,000)."""
+    """Offset into the split's seed range."""
     history: int = 8
     """Past observation/reply pairs kept in each prompt (the engine's harness.history)."""
     legend: str = "always"
@@ -39,8 +45,17 @@ class GlyphbenchTasksetConfig(vf.TasksetConfig):
         # ones, and harness values get the engine's own one-line errors.
         self.task_ids()
         self.prompt_config()
-        heldout_seeds(self.episodes, self.seed_start)
+        self.seeds()
         return self
+
+    def seeds(self) -> list[int]:
+        """The seeds every task plays: ``episodes`` consecutive seeds of the split from ``seed_start``."""
+        if self.split == "heldout":
+            return heldout_seeds(self.episodes, self.seed_start)
+        if self.seed_start + self.episodes > len(TRAIN_SEEDS):
+            raise ValueError(f"training seeds {self.seed_start}..{self.seed_start + self.episodes} "
+                             f"exceed the training range (at most {len(TRAIN_SEEDS):,})")
+        return list(TRAIN_SEEDS[self.seed_start:self.seed_start + self.episodes])
 
     def task_ids(self) -> list[str]:
         if self.tasks is None:
@@ -69,7 +84,7 @@ class GlyphbenchTask(vf.Task[GlyphbenchData, vf.State, vf.TaskConfig]):
 
 class GlyphbenchTaskset(vf.Taskset[GlyphbenchTask, GlyphbenchTasksetConfig]):
     def load(self) -> Iterator[GlyphbenchTask]:
-        seeds = heldout_seeds(self.config.episodes, self.config.seed_start)
+        seeds = self.config.seeds()
         for task_id in self.config.task_ids():
             for seed in seeds:
                 # prompt=None: the env opens each conversation with the first observation

@@ -1,0 +1,306 @@
+"""A training config rendered as the equivalent Prime-RL ``rl`` TOML.
+
+Target schema: PrimeIntellect-ai/prime-rl at commit 004274ec964f016ec9b17b5ae990a4b535314ff1, a
+snapshot whose config package (configs moved there from src/prime_rl/configs) runs verifiers v1
+environments, as glyphbench's adapter is, and holds both losses the paper uses: ``ipo`` with
+``kl_tau`` and ``default`` with DPPO masks. Other stored versions rename ``ipo_threshold`` to
+``eps``, drop ``kl_tau`` from ``ipo``, or replace the loss union with per-algorithm configs; the
+store gives no commit dates, so which of them is newest is unknown. Files read, all under
+packages/prime-rl-configs/src/prime_rl/configs/ unless a path says otherwise:
+
+  ours -> Prime-RL key                                            [file: class]
+  model (hub ID or folder) -> [model] name                        [rl.py: SharedModelConfig]
+  steps -> max_steps; seq_len -> seq_len (fills trainer.model.seq_len and orchestrator.seq_len)
+                                                                  [rl.py: RLConfig; utils/validation.py]
+  checkpoint_every, keep_checkpoints -> [ckpt] interval, keep_last; --resume -> resume_step = -1
+                                                                  [rl.py: SharedCheckpointConfig]
+  loss ipo -> [trainer.loss] type="ipo", ipo_threshold, adv_tau, kl_tau
+                                                                  [trainer.py: IPOLossConfig]
+  loss default -> [trainer.loss] type="default", dppo_mask_low, dppo_mask_high, adv_tau, kl_tau
+                                                                  [trainer.py: DefaultLossConfig]
+  kl_coef -> kl_tau (the coefficient of the squared log-ratio penalty, default 1e-3)
+  lr, betas, weight_decay, grad_clip -> [trainer.optim] type="adamw", lr, betas1, betas2,
+      weight_decay, max_norm (Prime-RL's own defaults differ: betas2 0.999, weight decay 0.01)
+                                                                  [trainer.py: AdamWConfig]
+  (constant lr) -> [trainer.scheduler] type="constant"            [trainer.py: ConstantSchedulerConfig]
+  gradient_checkpointing -> [trainer.model.ac] (full, every layer) [trainer.py: ModelConfig.ac]
+  logprob_chunk -> trainer.model.fused_lm_head_token_chunk_size  [trainer.py: ModelConfig]
+  group_size -> orchestrator.group_size (alias rollouts_per_example);
+      group_size x groups_per_update -> orchestrator.batch_size (rollouts per step)
+                                                                  [orchestrator.py: OrchestratorConfig]
+  (mean-centred advantages) -> orchestrator.algorithms = ["grpo"] [orchestrator.py; orchestrator/algo/grpo.py]
+  temperature, max_new_tokens -> [orchestrator.train.sampling] temperature, max_completion_tokens
+                                                                  [orchestrator.py: TrainSamplingConfig]
+  (zero-advantage groups kept) -> [[orchestrator.post_batch_filters]] type="zero_advantage",
+      enforce=false (its default drops them)                      [orchestrator.py: ZeroAdvantageFilterConfig]
+  tasks, harness.* -> [[orchestrator.train.env]] taskset = glyphbench-rl, split "train"
+                                                                  [orchestrator.py: TrainEnvConfig]
+  eval_every, eval_episodes -> [orchestrator.eval] interval + a held-out env  [orchestrator.py: EvalConfig]
+  wandb_project, wandb_entity, wandb_name -> [wandb] project, entity, name  [rl.py: SharedWandbConfig]
+  (chat template) -> [orchestrator.renderer] name="default" for local folders and SmolLM2, which
+      renderers.base.MODEL_RENDERER_MAP lacks (renderers 0.1.12: DefaultRendererConfig)
+
+Values with no Prime-RL equivalent are refused with a one-line error (``ONLY_AT_DEFAULT``, and
+harness keys the taskset does not take); local knobs that Prime-RL sizes itself are not carried
+(``NOT_CARRIED``). A test checks that every TrainConfig field is classified.
+
+Differences that remain: Prime-RL draws its examples (one task and one training seed per row) at
+random from the taskset instead of cycling through the tasks, and all ``group_size`` rollouts of
+a group play that one row's seed, where the built-in trainer gives each member its own seed.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import math
+import os
+import re
+from pathlib import Path
+from typing import Any
+
+from ...agent.harness import HarnessConfig
+from ...core import resolve_tasks
+from ...train.config import TrainConfig
+
+PRIME_RL_COMMIT = "004274ec964f016ec9b17b5ae990a4b535314ff1"
+TASKSET_ID = "glyphbench-rl"
+TOML_NAME = "prime_rl.toml"
+SMOLLM2_HUB_ID = "HuggingFaceTB/SmolLM2-135M-Instruct"
+_CHECKSUM = "# glyphbench-train checksum: "
+
+# How each TrainConfig field reaches Prime-RL.
+CARRIED = ("model", "gradient_checkpointing", "tasks", "steps", "group_size", "groups_per_update",
+           "temperature", "max_new_tokens", "harness", "loss", "threshold", "mask_low", "mask_high",
+           "adv_tau", "kl_coef", "lr", "betas", "weight_decay", "grad_clip", "seq_len", "logprob_chunk",
+           "checkpoint_every", "keep_checkpoints", "eval_every", "eval_episodes", "wandb_project",
+           "wandb_entity", "wandb_name")
+ONLY_AT_DEFAULT = {       # expressible only at their default value
+    "top_p": "Prime-RL samples training rollouts at top_p 1",
+    "max_turns": "the glyphbench-rl taskset plays each task's own horizon",
+    "include_truncated": "Prime-RL's group baseline keeps truncated episodes",
+    "std_normalize": "Prime-RL's grpo advantages are only mean-centred",
+    "format_reward": "the glyphbench-rl env rewards the episode return only",
+}
+NOT_CARRIED = ("device", "dtype", "micro_batch_tokens", "max_episodes_at_once", "save_rollouts", "seed",
+               "tensorboard")
+TASKSET_PROMPT_KEYS = ("history", "legend", "max_context_tokens")   # harness keys the taskset takes
+
+
+class PrimeRLConfigError(ValueError):
+    """A training config value that Prime-RL cannot express."""
+
+
+def render_toml(cfg: TrainConfig, *, run_dir: str | Path, resume: bool = False) -> str:
+    """The Prime-RL ``rl`` config equivalent to ``cfg``; its outputs go to ``run_dir/outputs``."""
+    _refuse_inexpressible(cfg)
+    tasks = resolve_tasks(cfg.tasks)
+    model, renderer = _policy_model(cfg.model)
+    harness = cfg.harness_config()
+    prompt = {k: getattr(harness, k) for k in TASKSET_PROMPT_KEYS if getattr(harness, k) is not None}
+    # one training row per group the built-in trainer would play of each task
+    rows_per_task = math.ceil(cfg.steps * cfg.groups_per_update / len(tasks))
+    train_taskset = {"id": TASKSET_ID, "tasks": tasks, "split": "train", "episodes": rows_per_task,
+                     "seed_start": 0, **prompt}
+    ckpt: dict[str, Any] = {"interval": cfg.checkpoint_every, "keep_last": cfg.keep_checkpoints}
+    if resume:
+        ckpt["resume_step"] = -1          # Prime-RL: -1 resumes from the latest checkpoint
+    trainer_model: dict[str, Any] = {"fused_lm_head_token_chunk_size": cfg.logprob_chunk}
+    if cfg.gradient_checkpointing:
+        trainer_model["ac"] = {}
+    orchestrator: dict[str, Any] = {
+        "batch_size": cfg.group_size * cfg.groups_per_update,
+        "group_size": cfg.group_size,
+        "algorithms": ["grpo"],
+    }
+    if renderer:
+        orchestrator["renderer"] = {"name": renderer}
+    orchestrator["train"] = {
+        "sampling": {"temperature": cfg.temperature, "max_completion_tokens": cfg.max_new_tokens},
+        "env": [{"name": TASKSET_ID, "taskset": train_taskset}],
+    }
+    # Zero-advantage groups still add KL-penalty tokens and count in the loss's token total
+    # (paper eq. 3), so they are kept; the other filters stay in their default monitor mode.
+    orchestrator["post_batch_filters"] = [{"type": kind, "enforce": False}
+                                          for kind in ("gibberish", "repetition", "zero_advantage")]
+    if cfg.eval_every:
+        heldout = {**train_taskset, "split": "heldout", "episodes": cfg.eval_episodes}
+        orchestrator["eval"] = {
+            "interval": cfg.eval_every, "skip_first_step": True, "group_size": 1, "num_examples": -1,
+            "sampling": {"temperature": cfg.temperature, "max_completion_tokens": cfg.max_new_tokens},
+            "env": [{"name": f"{TASKSET_ID}-heldout", "taskset": heldout}],
+        }
+    doc = {
+        "output_dir": str(Path(run_dir).resolve() / "outputs"),
+        "max_steps": cfg.steps,
+        "seq_len": cfg.seq_len,
+        "model": {"name": model},
+        "ckpt": ckpt,
+        "inference": {},                  # present: the rl launcher starts the vLLM server
+        "trainer": {
+            "model": trainer_model,
+            "loss": _loss(cfg),
+            "optim": {"type": "adamw", "lr": cfg.lr, "betas1": float(cfg.betas[0]),
+                      "betas2": float(cfg.betas[1]), "weight_decay": cfg.weight_decay,
+                      "max_norm": cfg.grad_clip},
+            "scheduler": {"type": "constant"},
+        },
+        "orchestrator": orchestrator,
+    }
+    if cfg.wandb_project:
+        doc["wandb"] = {k: v for k, v in (("project", cfg.wandb_project), ("entity", cfg.wandb_entity),
+                                          ("name", cfg.wandb_name)) if v}
+    body = dumps(doc)
+    header = (f"# Prime-RL config rendered by glyphbench-train --backend prime-rl from the resolved\n"
+              f"# config.yaml beside it (keys: PrimeIntellect-ai/prime-rl@{PRIME_RL_COMMIT[:12]}).\n"
+              f"# Launch with `rl @ {TOML_NAME}` where prime-rl and glyphbench_rl are installed.\n"
+              f"# Edit the YAML and render again: a hand-edited file is never overwritten.\n")
+    return f"{header}{_CHECKSUM}{_digest(header + body)}\n{body}"
+
+
+def write_toml(cfg: TrainConfig, run_dir: str | Path, *, resume: bool = False) -> Path:
+    """Render ``cfg`` into ``run_dir/prime_rl.toml`` (and its resolved ``config.yaml``)."""
+    import yaml
+
+    run_dir = Path(run_dir)
+    text = render_toml(cfg, run_dir=run_dir, resume=resume)
+    path = run_dir / TOML_NAME
+    if (run_dir / "metrics.jsonl").exists():
+        raise FileExistsError(f"{run_dir} holds a built-in training run; choose another --out")
+    if path.exists() and not _unedited(path.read_text(encoding="utf-8", errors="replace")):
+        raise FileExistsError(f"{path} was edited after glyphbench-train wrote it; move it away or "
+                              f"choose another --out")
+    run_dir.mkdir(parents=True, exist_ok=True)
+    _write_atomic(run_dir / "config.yaml", yaml.safe_dump(cfg.to_dict(), sort_keys=False))
+    _write_atomic(path, text)
+    return path
+
+
+def _refuse_inexpressible(cfg: TrainConfig) -> None:
+    defaults = {f.name: f.default for f in dataclasses.fields(TrainConfig)}
+    problems = [f"{name}={_show(getattr(cfg, name))} ({why})" for name, why in ONLY_AT_DEFAULT.items()
+                if getattr(cfg, name) != defaults[name]]
+    harness, plain = cfg.harness_config(), HarnessConfig()
+    problems += [f"harness.{f.name}={_show(getattr(harness, f.name))} (the glyphbench-rl taskset "
+                 f"takes only {', '.join(TASKSET_PROMPT_KEYS)})" for f in dataclasses.fields(HarnessConfig)
+                 if f.name not in TASKSET_PROMPT_KEYS and getattr(harness, f.name) != getattr(plain, f.name)]
+    if problems:
+        raise PrimeRLConfigError("no Prime-RL equivalent for " + "; ".join(problems))
+
+
+def _show(value: Any) -> str:
+    """A config value as it is written in YAML."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return f"{value:g}"
+    return repr(value) if isinstance(value, str) else str(value)
+
+
+def _policy_model(name: str) -> tuple[str, str | None]:
+    """(Prime-RL model name, renderer to pin or None for Prime-RL's automatic choice)."""
+    from ...models import _DEFAULT_NAMES
+
+    if name.lower() in _DEFAULT_NAMES:
+        # the embedded GGUF cannot be trained by Prime-RL; its hub original can
+        return SMOLLM2_HUB_ID, "default"
+    path = Path(name).expanduser()
+    if path.suffix == ".gguf" or (path.is_dir() and not (path / "config.json").exists()):
+        raise PrimeRLConfigError(f"model {name!r}: Prime-RL trains Hugging Face checkpoints (a folder "
+                                 f"with config.json or a hub ID), not GGUF files")
+    if path.is_dir():
+        # a local fine-tune: render prompts with its own chat template
+        return str(path.resolve()), "default"
+    if path.is_absolute() or name.startswith((".", "~")):
+        raise PrimeRLConfigError(f"model path {name} does not exist")
+    return name, None
+
+
+def _loss(cfg: TrainConfig) -> dict[str, Any]:
+    if cfg.loss == "ipo":
+        return {"type": "ipo", "ipo_threshold": cfg.threshold, "adv_tau": cfg.adv_tau, "kl_tau": cfg.kl_coef}
+    return {"type": "default", "dppo_mask_low": cfg.mask_low, "dppo_mask_high": cfg.mask_high,
+            "adv_tau": cfg.adv_tau, "kl_tau": cfg.kl_coef}
+
+
+def _digest(text: str) -> str:
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()
+
+
+def _unedited(text: str) -> bool:
+    """Whether ``text`` is a file render_toml wrote, unchanged since."""
+    lines = text.splitlines(keepends=True)
+    marks = [i for i, line in enumerate(lines) if line.startswith(_CHECKSUM)]
+    if len(marks) != 1:
+        return False
+    rest = "".join(lines[:marks[0]] + lines[marks[0] + 1:])
+    return lines[marks[0]][len(_CHECKSUM):].strip() == _digest(rest)
+
+
+def _write_atomic(path: Path, text: str) -> None:
+    tmp = path.with_name(f".{path.name}.tmp")
+    tmp.write_text(text, encoding="utf-8")
+    os.replace(tmp, path)
+
+
+# -- a small TOML writer: tables, arrays of tables, strings, numbers, booleans, arrays ------------
+
+_BARE_KEY = re.compile(r"[A-Za-z0-9_-]+\Z")
+_ESCAPES = {'"': '\\"', "\\": "\\\\", "\b": "\\b", "\t": "\\t", "\n": "\\n", "\f": "\\f", "\r": "\\r"}
+_LINE = 100
+
+
+def dumps(doc: dict[str, Any]) -> str:
+    """``doc`` as TOML: a table's plain keys first, then its sub-tables, then its arrays of tables."""
+    lines: list[str] = []
+    _table(lines, [], doc, array_item=False)
+    return "\n".join(lines).lstrip("\n") + "\n"
+
+
+def _table(lines: list[str], path: list[str], table: dict[str, Any], *, array_item: bool) -> None:
+    plain = {k: v for k, v in table.items() if not isinstance(v, dict) and not _is_table_array(v)}
+    tables = {k: v for k, v in table.items() if isinstance(v, dict)}
+    arrays = {k: v for k, v in table.items() if _is_table_array(v)}
+    if path and (array_item or plain or not (tables or arrays)):
+        name = ".".join(_key(p) for p in path)
+        lines += ["", f"[[{name}]]" if array_item else f"[{name}]"]
+    lines += [f"{_key(k)} = {_value(v)}" for k, v in plain.items()]
+    for k, v in tables.items():
+        _table(lines, [*path, k], v, array_item=False)
+    for k, items in arrays.items():
+        for item in items:
+            _table(lines, [*path, k], item, array_item=True)
+
+
+def _is_table_array(value: Any) -> bool:
+    return isinstance(value, list) and bool(value) and all(isinstance(v, dict) for v in value)
+
+
+def _key(key: str) -> str:
+    return key if _BARE_KEY.match(key) else _string(key)
+
+
+def _string(text: str) -> str:
+    out = (_ESCAPES.get(ch) or (f"\\u{ord(ch):04x}" if ord(ch) < 0x20 or ord(ch) == 0x7F else ch)
+           for ch in text)
+    return '"' + "".join(out) + '"'
+
+
+def _value(value: Any) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, float):
+        if not math.isfinite(value):
+            raise ValueError(f"TOML value {value!r}: only finite numbers are written")
+        return repr(value)
+    if isinstance(value, str):
+        return _string(value)
+    if isinstance(value, list):
+        if any(isinstance(v, dict) for v in value):
+            raise TypeError("an array mixing tables and values has no TOML form")
+        items = [_value(v) for v in value]
+        one_line = "[" + ", ".join(items) + "]"
+        return one_line if len(one_line) <= _LINE else "[\n" + "".join(f"    {i},\n" for i in items) + "]"
+    raise TypeError(f"no TOML form for {type(value).__name__} value {value!r}")
