@@ -12,6 +12,7 @@ from typing import Sequence
 
 from .core import list_tasks, make, resolve_tasks, seeding
 from .core.registry import SUITES, UnknownTaskError, get_spec
+from .replay.cli import register as _register_replay
 
 CATALOG = Path(__file__).resolve().parents[1] / "tasks" / "catalog.tsv"
 
@@ -167,6 +168,10 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--json", help="also write the results to this file")
     s.add_argument("--progress", action="store_true")
     s.set_defaults(func=cmd_bench)
+
+    _register_replay(sub)
+    from .plot_cli import register as register_plot
+    register_plot(sub)
     return p
 
 

@@ -27,6 +27,9 @@ class HarnessConfig:
     history: int = 8                        # past observation/reply pairs kept in each prompt
     legend: str = "always"                  # "always" or "changed"
     max_context_tokens: int | None = None   # prompt budget (tokens, or chars/4 for text backends)
+    #: text the reply starts with, written by the harness before the model continues (assistant
+    #: prefill, e.g. "<action>"); part of the prompt, never trained on. Token backends only.
+    reply_prefix: str = ""
 
     def __post_init__(self) -> None:
         if isinstance(self.history, bool) or not isinstance(self.history, int) or self.history < 0:
@@ -38,6 +41,9 @@ class HarnessConfig:
                 or self.max_context_tokens < 1):
             raise ValueError(f"harness.max_context_tokens must be a positive int or null, "
                              f"got {self.max_context_tokens!r}")
+        if not isinstance(self.reply_prefix, str) or len(self.reply_prefix) > 200:
+            raise ValueError(f"harness.reply_prefix must be a string of at most 200 characters, "
+                             f"got {self.reply_prefix!r}")
 
 
 def observation_text(frame: Frame, *, legend: bool = True) -> str:

@@ -13,7 +13,7 @@ _PROBE = "\x00PROBE\x00"
 
 
 class ChatTokens:
-    def __init__(self, tokenizer: Any) -> None:
+    def __init__(self, tokenizer: Any, reply_prefix: str = "") -> None:
         self.tokenizer = tokenizer
         if getattr(tokenizer, "chat_template", None):
             sys_msg = {"role": "system", "content": "S"}
@@ -35,7 +35,10 @@ class ChatTokens:
             self._user_frame = ["User: ", "\n"]
             self._gen = "Assistant: "
             self._reply_close = "\n"
-        self.gen_ids = self.encode(self._gen)
+        # the generation prompt, followed by the harness's reply prefix when it has one: the
+        # model continues from there, and the prefix stays prompt-side (never trained on)
+        self.reply_prefix = reply_prefix
+        self.gen_ids = self.encode(self._gen + reply_prefix)
         eos = getattr(tokenizer, "eos_token", None)
         self._eos_text = eos or ""
         self._eos_id = getattr(tokenizer, "eos_token_id", None)

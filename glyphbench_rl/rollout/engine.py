@@ -61,7 +61,10 @@ class RolloutEngine:
         self.meta = {"backend": getattr(backend, "name", type(backend).__name__),
                      "harness": asdict(self.harness), **(meta or {})}
         tokenizer = getattr(backend, "tokenizer", None)
-        self.chat = ChatTokens(tokenizer) if tokenizer is not None else None
+        self.chat = ChatTokens(tokenizer, self.harness.reply_prefix) if tokenizer is not None else None
+        if self.harness.reply_prefix and self.chat is None:
+            raise ValueError(f"harness.reply_prefix needs a token backend (hf, vllm); backend "
+                             f"{self.meta['backend']!r} sends chat messages")
         self.stats = EngineStats()
 
     # -- public ------------------------------------------------------------------------------------
@@ -148,7 +151,7 @@ class RolloutEngine:
                           ep.task.actions, turn.user, prompt_ids, ep.spec.seed)
 
     def _apply(self, ep: _Live, req: GenRequest, gen: Generation) -> None:
-        text = gen.text if isinstance(gen.text, str) else ""
+        text = self.harness.reply_prefix + (gen.text if isinstance(gen.text, str) else "")
         reply_ids = self.chat.reply(gen.token_ids) if self.chat is not None and gen.token_ids is not None else None
         ep.harness.record(text, reply_ids)
         parsed = parse_action(text, ep.task.actions)

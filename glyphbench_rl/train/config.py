@@ -44,6 +44,11 @@ class TrainConfig:
     harness: dict = field(default_factory=dict)   # HarnessConfig fields (history, legend, ...)
     include_truncated: bool = True     # truncated episodes count in the group baseline
     std_normalize: bool = False        # divide advantages by the group's standard deviation
+    # format shaping, off by default (the paper's objective): the advantage uses the return plus
+    # format_reward x the episode's format score, the mean over its turns of 1 for a valid action,
+    # 0.5 for a complete <action> tag naming no valid action, 0 otherwise. For policies that do
+    # not follow the action format yet (every episode forfeits, so every group is flat).
+    format_reward: float = 0.0
     # objective and optimizer
     loss: str = "ipo"
     threshold: float = 0.1             # ipo: probability-difference mask
@@ -65,6 +70,10 @@ class TrainConfig:
     eval_every: int = 0                # steps between held-out evaluations (0: never)
     eval_episodes: int = 4             # held-out episodes per task at each evaluation
     save_rollouts: bool = True         # trajectories of every step, for replay
+    tensorboard: bool = True           # mirror metrics to <run>/tensorboard (needs tensorboard)
+    wandb_project: str | None = None   # mirror metrics to this W&B project (needs wandb)
+    wandb_entity: str | None = None
+    wandb_name: str | None = None      # default: the run directory's name
 
     def __post_init__(self) -> None:
         ints = {"steps": 1, "group_size": 1, "groups_per_update": 1, "max_episodes_at_once": 1,
@@ -77,13 +86,19 @@ class TrainConfig:
                 raise ConfigError(f"{name} must be an int >= {lo}, got {v!r}")
         floats = {"temperature": (1e-6, 10), "top_p": (1e-6, 1), "threshold": (0, 1),
                   "mask_low": (0, 1), "mask_high": (0, 1), "adv_tau": (0, 100), "kl_coef": (0, 10),
-                  "lr": (0, 1), "weight_decay": (0, 10), "grad_clip": (0, 1e6)}
+                  "lr": (0, 1), "weight_decay": (0, 10), "grad_clip": (0, 1e6),
+                  "format_reward": (0, 100)}
         for name, (lo, hi) in floats.items():
             v = getattr(self, name)
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not lo <= v <= hi:
                 raise ConfigError(f"{name} must be a number in [{lo:g}, {hi:g}], got {v!r}")
             setattr(self, name, float(v))
-        for name in ("gradient_checkpointing", "include_truncated", "std_normalize", "save_rollouts"):
+        for name in ("wandb_project", "wandb_entity", "wandb_name"):
+            v = getattr(self, name)
+            if v is not None and (not isinstance(v, str) or not v.strip()):
+                raise ConfigError(f"{name} must be a non-empty string or null, got {v!r}")
+        for name in ("gradient_checkpointing", "include_truncated", "std_normalize", "save_rollouts",
+                     "tensorboard"):
             if not isinstance(getattr(self, name), bool):
                 raise ConfigError(f"{name} must be true or false, got {getattr(self, name)!r}")
         if self.max_turns is not None and (isinstance(self.max_turns, bool)

@@ -100,17 +100,27 @@ def write_conditions(out: Path, conditions) -> list[tuple[str, dict, Path]]:
     return rows
 
 
-def slurm_script(out: Path, rows, extra: str = "") -> str:
+def slurm_script(out: Path, rows, extra: str = "", prime_rl: list[Path] | None = None) -> str:
+    """An array job, one task per condition: the built-in trainer (resuming a run a previous
+    attempt left behind), or with ``prime_rl`` (one rendered TOML per row) Prime-RL's ``rl``."""
     lines = ["#!/bin/bash", f"#SBATCH --array=0-{len(rows) - 1}", "#SBATCH --job-name=glyphbench-sweep",
              f"#SBATCH --output={out}/logs/%a.out", *([extra] if extra else []), "", "case $SLURM_ARRAY_TASK_ID in"]
     for i, (name, _, path) in enumerate(rows):
+        if prime_rl is not None:
+            lines.append(f"  {i}) rl @ {shlex.quote(str(prime_rl[i]))} ;;")
+            continue
         run_dir = out / "runs" / name
         cmd = " ".join(shlex.quote(c) for c in _train_cmd(path, run_dir, False))
-        # --resume when a previous attempt left a run behind
         lines.append(f"  {i}) if [ -f {shlex.quote(str(run_dir / 'metrics.jsonl'))} ]; then {cmd} --resume; "
                      f"else {cmd}; fi ;;")
     lines.append("esac")
     return "\n".join(lines) + "\n"
+
+
+def write_prime_rl(out: Path, rows) -> list[Path]:
+    """Each condition as a Prime-RL config, ``runs/<name>/prime_rl.toml``."""
+    from ..integrations.prime_rl import write_toml
+    return [write_toml(config_from_dict(cfg), out / "runs" / name) for name, cfg, _ in rows]
 
 
 def run_local(out: Path, rows, parallel: int, log=print) -> int:
@@ -158,62 +168,6 @@ def table(out: Path, rows, last: int = 5) -> str:
     return text
 
 
-def figure(out: Path, rows, spec_grid_keys: Sequence[str], smooth: int = 15) -> Path | None:
-    """Learning curves like the paper's Snake figure: one panel per combination of the grid keys
-    other than group size (rows: the second key, e.g. lr; columns: the first, e.g. task), one
-    colour per group size, train return against rollouts used (pale: per step; solid: trailing
-    mean over ``smooth`` steps)."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    panel_keys = [k for k in spec_grid_keys if k != "group_size"]
-    col_key = panel_keys[0] if panel_keys else None
-    row_key = panel_keys[1] if len(panel_keys) > 1 else None
-    cols = sorted({str(c.get(col_key)) for _, c, _ in rows}) if col_key else ["all"]
-    row_vals = sorted({c.get(row_key) for _, c, _ in rows}) if row_key else [None]
-    sizes = sorted({c.get("group_size", 32) for _, c, _ in rows})
-    colours = plt.get_cmap("viridis")
-    fig, axes = plt.subplots(len(row_vals), len(cols), squeeze=False, sharex=True, sharey=True,
-                             figsize=(3.2 * len(cols), 2.4 * len(row_vals)))
-    drawn = False
-    for name, cfg, _ in rows:
-        path = out / "runs" / name / "metrics.jsonl"
-        if not path.exists():
-            continue
-        metrics = [json.loads(x) for x in path.read_text().splitlines() if x.strip()]
-        if not metrics:
-            continue
-        r = row_vals.index(cfg.get(row_key)) if row_key else 0
-        c = cols.index(str(cfg.get(col_key))) if col_key else 0
-        g = cfg.get("group_size", 32)
-        per_step = g * cfg.get("groups_per_update", 1)
-        x = [m["step"] * per_step for m in metrics]
-        y = [m["train/return_mean"] for m in metrics]
-        trail = [sum(y[max(0, i - smooth + 1):i + 1]) / len(y[max(0, i - smooth + 1):i + 1]) for i in range(len(y))]
-        colour = colours(sizes.index(g) / max(1, len(sizes) - 1))
-        ax = axes[r][c]
-        ax.plot(x, y, color=colour, alpha=0.25, linewidth=0.8)
-        ax.plot(x, trail, color=colour, linewidth=1.6, label=f"G={g}")
-        drawn = True
-    if not drawn:
-        plt.close(fig)
-        return None
-    for c, col in enumerate(cols):
-        axes[0][c].set_title(_short(col_key, col) if col_key else col, fontsize=9)
-        axes[-1][c].set_xlabel("rollouts")
-    for r, val in enumerate(row_vals):
-        axes[r][0].set_ylabel(f"{row_key} {val:g}\nreturn" if row_key else "return", fontsize=9)
-    handles, labels = axes[0][0].get_legend_handles_labels()
-    uniq = dict(zip(labels, handles))
-    fig.legend(uniq.values(), uniq.keys(), loc="upper right", fontsize=8)
-    fig.tight_layout()
-    path = out / "curves.png"
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
-
-
 def main(argv: Sequence[str] | None = None) -> int:
     import yaml
 
@@ -223,6 +177,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     ap.add_argument("--parallel", type=int, default=1, help="conditions run at once (local)")
     ap.add_argument("--slurm", action="store_true", help="write sweep.sbatch (an array job) instead of running")
     ap.add_argument("--sbatch-extra", default="", help="extra #SBATCH lines for --slurm")
+    ap.add_argument("--prime-rl", action="store_true",
+                    help="render each condition as runs/<name>/prime_rl.toml and write prime_rl.sh "
+                         "(with --slurm: an array job running Prime-RL's rl) instead of running")
     ap.add_argument("--dry-run", action="store_true", help="list the conditions and stop")
     ap.add_argument("--table", action="store_true", help="only tabulate what has run")
     args = ap.parse_args(argv)
@@ -239,6 +196,25 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"{len(conditions)} conditions")
         return 0
     rows = write_conditions(out, conditions)
+    (out / "sweep.yaml").write_text(Path(args.sweep).read_text(encoding="utf-8"), encoding="utf-8")
+    if args.prime_rl:
+        from ..integrations.prime_rl import PrimeRLConfigError
+        try:
+            tomls = write_prime_rl(out, rows)
+        except (PrimeRLConfigError, FileExistsError, ValueError) as e:
+            print(f"glyphbench-sweep: error: {str(e).splitlines()[0]}", file=sys.stderr)
+            return 2
+        (out / "logs").mkdir(parents=True, exist_ok=True)
+        if args.slurm:
+            path = out / "prime_rl.sbatch"
+            path.write_text(slurm_script(out, rows, args.sbatch_extra, prime_rl=tomls))
+            print(f"wrote {len(tomls)} Prime-RL configs and {path}; submit with: sbatch {path}")
+        else:
+            path = out / "prime_rl.sh"
+            path.write_text("#!/bin/bash\nset -e\n" + "".join(f"rl @ {shlex.quote(str(t))}\n" for t in tomls))
+            path.chmod(0o755)
+            print(f"wrote {len(tomls)} Prime-RL configs and {path} (runs them one after another)")
+        return 0
     if args.slurm:
         (out / "logs").mkdir(parents=True, exist_ok=True)
         path = out / "sweep.sbatch"
@@ -247,13 +223,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 0
     failed = 0 if args.table else run_local(out, rows, max(1, args.parallel))
     print(table(out, rows))
+    from ..plots import PlotError, plot_sweep
     try:
-        png = figure(out, rows, list((spec.get("grid") or {}).keys()))
-    except ImportError:
-        print("(no figure: pip install matplotlib)")
-    else:
-        if png is not None:
-            print(f"learning curves: {png}")
+        print(f"learning curves: {plot_sweep(out, out / 'curves.png')}")
+    except PlotError as e:          # nothing has metrics yet, or no matplotlib
+        print(f"(no figure: {e})")
     return 1 if failed else 0
 
 

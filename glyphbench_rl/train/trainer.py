@@ -29,8 +29,11 @@ from ..core.seeding import generator, training_seeds
 from ..replay.schema import Trajectory
 from ..rollout.engine import EpisodeSpec, RolloutEngine
 from ..rollout.hf_backend import HFBackend
+from ..agent.parse import EMPTY_TAG, UNKNOWN_NAME
 from .advantages import group_advantages
 from .config import TrainConfig
+from .display import PlainDisplay
+from .sinks import open_sinks
 from .samples import Sample, micro_batches, trajectory_samples
 
 CKPT_PREFIX = "step_"
@@ -50,10 +53,12 @@ class Trainer:
         self.cfg, self.out, self.log = config, Path(out), log
         self.tasks = resolve_tasks(config.tasks)        # unknown IDs fail before any model loads
         self.harness = config.harness_config()
-        self.out.mkdir(parents=True, exist_ok=True)
         if not resume and (self.out / "metrics.jsonl").exists():
             raise FileExistsError(f"{self.out} already holds a run; pass --resume to continue it "
                                   f"or choose another --out")
+        self.out.mkdir(parents=True, exist_ok=True)
+        self.sinks = open_sinks(self.out, config)       # a missing sink package fails here too
+        self.display = PlainDisplay(config.steps, log)
         ckpt = latest_checkpoint(self.out) if resume else None
         if model is None:
             from ..models import load_model
@@ -78,16 +83,26 @@ class Trainer:
         self._torch = torch
 
     # -- the loop ---------------------------------------------------------------------------------
-    def run(self) -> None:
-        while self.step < self.cfg.steps:
-            metrics = self.train_step()
-            if self.cfg.eval_every and self.step % self.cfg.eval_every == 0:
-                metrics.update(self.evaluate())
-            with open(self.out / "metrics.jsonl", "a", encoding="utf-8") as fh:
-                fh.write(json.dumps(metrics) + "\n")
-            self.log(_progress_line(metrics, self.cfg.steps))
-            if self.step % self.cfg.checkpoint_every == 0 or self.step == self.cfg.steps:
-                self.save_checkpoint()
+    def run(self, display=None) -> None:
+        """Train until ``cfg.steps``; ``display`` (train.display) shows progress, default plain lines."""
+        self.display = display or self.display
+        try:
+            while self.step < self.cfg.steps:
+                metrics = self.train_step()
+                if self.cfg.eval_every and self.step % self.cfg.eval_every == 0:
+                    self.display.phase("held-out evaluation")
+                    metrics.update(self.evaluate())
+                with open(self.out / "metrics.jsonl", "a", encoding="utf-8") as fh:
+                    fh.write(json.dumps(metrics) + "\n")
+                for sink in self.sinks:
+                    sink.log(metrics, self.step)
+                self.display.step_done(metrics)
+                if self.step % self.cfg.checkpoint_every == 0 or self.step == self.cfg.steps:
+                    self.display.phase("checkpoint")
+                    self.save_checkpoint()
+        finally:
+            for sink in self.sinks:
+                sink.close()
 
     def train_step(self) -> dict[str, Any]:
         cfg = self.cfg
@@ -96,6 +111,7 @@ class Trainer:
         trajs = self.rollouts(step)
         t_roll = time.perf_counter() - t0
         samples, skipped, group_stats = self.samples(trajs)
+        self.display.phase(f"update ({sum(s.trainable for s in samples):,} trainable tokens)")
         t1 = time.perf_counter()
         loss_stats = self.update(samples)
         t_train = time.perf_counter() - t1
@@ -114,6 +130,7 @@ class Trainer:
             "train/forfeit_rate": sum(t.forfeits for t in trajs) / max(1, turns),
             "train/episode_length": turns / len(trajs),
             "train/win_rate": sum(bool(t.won) for t in trajs) / len(trajs),
+            "train/format_score": statistics.fmean(format_score(t) for t in trajs),
             "train/completion_tokens": sum(t.completion_tokens for t in trajs),
             "train/trainable_tokens": sum(s.trainable for s in samples),
             "train/sequences": len(samples),
@@ -139,7 +156,15 @@ class Trainer:
         self.model.eval()
         engine = RolloutEngine(backend, self.harness, max_episodes=cfg.max_episodes_at_once,
                                meta={"model": cfg.model, "split": "train"})
-        return engine.run(specs)
+        done = 0
+
+        def finished(_: Trajectory) -> None:
+            nonlocal done
+            done += 1
+            self.display.phase("rollouts", done, len(specs))
+
+        self.display.phase("rollouts", 0, len(specs))
+        return engine.run(specs, on_episode=finished)
 
     def samples(self, trajs: list[Trajectory]) -> tuple[list[Sample], int, int]:
         groups: dict[int, list[Trajectory]] = defaultdict(list)
@@ -148,7 +173,9 @@ class Trainer:
         samples, skipped, flat = [], 0, 0
         for members in groups.values():
             eligible = [self.cfg.include_truncated or not t.truncated for t in members]
-            adv = group_advantages([t.episode_return for t in members], eligible,
+            scores = [t.episode_return + self.cfg.format_reward * format_score(t) if self.cfg.format_reward
+                      else t.episode_return for t in members]
+            adv = group_advantages(scores, eligible,
                                    std_normalize=self.cfg.std_normalize)
             flat += int(not adv.any())
             for t, a, ok in zip(members, adv, eligible):
@@ -247,6 +274,14 @@ class Trainer:
                      "".join(json.dumps(t.to_dict()) + "\n" for t in trajs))
 
 
+def format_score(traj: Trajectory) -> float:
+    """Mean over turns of 1 (a valid action), 0.5 (a complete tag naming no action), else 0."""
+    if not traj.steps:
+        return 0.0
+    credit = {None: 1.0, UNKNOWN_NAME: 0.5, EMPTY_TAG: 0.5}
+    return statistics.fmean(credit.get(s.forfeit_reason, 0.0) for s in traj.steps)
+
+
 def latest_checkpoint(out: Path) -> Path | None:
     found = sorted((out / "checkpoints").glob(f"{CKPT_PREFIX}*")) if (out / "checkpoints").exists() else []
     return found[-1] if found else None
@@ -262,14 +297,3 @@ def _line_step(line: str) -> int:
 def _yaml(data: dict) -> str:
     import yaml
     return yaml.safe_dump(data, sort_keys=False)
-
-
-def _progress_line(m: dict[str, Any], steps: int) -> str:
-    line = (f"step {m['step']}/{steps}  return {m['train/return_mean']:+.3f}  "
-            f"forfeit {m['train/forfeit_rate']:.0%}  len {m['train/episode_length']:.1f}  "
-            f"loss {m['train/loss']:+.4f}  grad {m['train/grad_norm']:.3f}  "
-            f"tokens {m['train/trainable_tokens']}  "
-            f"rollout {m['time/rollout_s']:.1f}s train {m['time/train_s']:.1f}s")
-    if "eval/return_mean" in m:
-        line += f"  eval {m['eval/return_mean']:+.3f}"
-    return line

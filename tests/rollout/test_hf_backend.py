@@ -90,3 +90,27 @@ def test_unknown_option_is_a_clear_error(tiny_model_dir):
         make_backend("hf")
     with pytest.raises(ValueError, match="unknown backend"):
         make_backend("gpt")
+
+
+def test_reply_prefix_is_prompt_side_and_part_of_the_reply(backend):
+    """harness.reply_prefix: the model continues after the prefix; the prefix is in every later
+    prompt, in the recorded reply, and never among the sampled (trainable) ids."""
+    eng = RolloutEngine(backend, HarnessConfig(history=8, reply_prefix="<action>"))
+    t = eng.run([EpisodeSpec("glyphbench/classics-snake-easy-v0", 0, overrides={"max_turns": 3})])[0]
+    prefix_ids = backend.tokenizer.encode("<action>", add_special_tokens=False)
+    for step in t.steps:
+        assert step.reply.startswith("<action>")
+        assert backend.tokenizer.decode(step.prompt_ids).endswith("<action>")
+        assert step.completion_ids[:len(prefix_ids)] != prefix_ids or len(step.completion_ids) < len(prefix_ids)
+    for prev, cur in zip(t.steps, t.steps[1:]):      # token-in/token-out still holds
+        assert cur.prompt_ids[:len(prev.prompt_ids)] == prev.prompt_ids
+        assert cur.prompt_ids[len(prev.prompt_ids):len(prev.prompt_ids) + len(prev.completion_ids)] \
+            == prev.completion_ids
+
+
+def test_reply_prefix_needs_a_token_backend():
+    from glyphbench_rl.rollout.backend import RandomBackend
+    with pytest.raises(ValueError, match="reply_prefix needs a token backend"):
+        RolloutEngine(RandomBackend(), HarnessConfig(reply_prefix="<action>"))
+    with pytest.raises(ValueError, match="reply_prefix"):
+        HarnessConfig(reply_prefix=3)

@@ -60,3 +60,27 @@ def test_runs_skip_finished_and_tabulate(tmp_path, tiny_model_dir, capsys):
     capsys.readouterr()
     assert main([str(sweep), "--out", str(out)]) == 0          # rerun: nothing left to do
     assert capsys.readouterr().out.count("done, skipped") == 2
+
+
+def test_prime_rl_sweep_renders_one_config_per_condition(tmp_path, capsys):
+    import tomllib
+    sweep = tmp_path / "s.yaml"
+    sweep.write_text("base: {tasks: glyphbench/classics-snake-easy-v0}\n"
+                     "grid: {group_size: [4, 8], lr: [1.0e-6, 2.0e-6]}\nrollout_budget: 32\n")
+    out = tmp_path / "out"
+    assert main([str(sweep), "--out", str(out), "--prime-rl"]) == 0
+    tomls = sorted(out.glob("runs/*/prime_rl.toml"))
+    assert len(tomls) == 4
+    docs = {p.parent.name: tomllib.loads(p.read_text()) for p in tomls}
+    for doc in docs.values():     # equal interaction: steps x group size = the rollout budget
+        assert doc["max_steps"] * doc["orchestrator"]["group_size"] == 32
+    assert {d["trainer"]["optim"]["lr"] for d in docs.values()} == {1e-6, 2e-6}
+    script = (out / "prime_rl.sh").read_text()
+    assert script.count("rl @ ") == 4 and all(str(p) in script for p in tomls)
+    assert main([str(sweep), "--out", str(out), "--prime-rl", "--slurm"]) == 0
+    assert (out / "prime_rl.sbatch").read_text().count("rl @ ") == 4
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("base: {tasks: glyphbench/classics-snake-easy-v0, top_p: 0.9}\ngrid: {lr: [1.0e-6]}\n")
+    capsys.readouterr()
+    assert main([str(bad), "--out", str(tmp_path / "o2"), "--prime-rl"]) == 2
+    assert "no Prime-RL equivalent for top_p" in capsys.readouterr().err

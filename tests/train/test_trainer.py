@@ -116,3 +116,46 @@ def test_cli_runs_a_tiny_model(tiny_model_dir, tmp_path, capsys):
     m = json.loads((tmp_path / "o" / "metrics.jsonl").read_text())
     assert "eval/return_mean" in m and (tmp_path / "o" / "eval" / "step_000001" / "summary.json").exists()
     assert "step 1/1" in capsys.readouterr().out
+
+
+def _traj(reasons, ret=0.0, group=0):
+    steps = [Step(turn=i + 1, observation="", reply="", action=None if r else "UP", forfeit_reason=r,
+                  reward=0.0, prompt_ids=[1, 2], completion_ids=[3], logprobs=[-0.1])
+             for i, r in enumerate(reasons)]
+    return Trajectory("glyphbench/classics-snake-easy-v0", 0, steps=steps, episode_return=ret,
+                      meta={"tag": {"group": group}})
+
+
+def test_format_score_grades_each_turn():
+    from glyphbench_rl.train.trainer import format_score
+    assert format_score(_traj([None, None])) == 1.0
+    assert format_score(_traj(["unknown_name", "no_tag"])) == 0.25     # (0.5 + 0) / 2
+    assert format_score(_traj(["empty_tag", None, "unclosed_think", "empty"])) == pytest.approx(1.5 / 4)
+    assert format_score(_traj([])) == 0.0
+
+
+def test_format_reward_gives_flat_return_groups_a_signal(tiny_model_dir, tmp_path):
+    """Equal returns: no advantage unless format_reward separates the episodes by format."""
+    model, tok = _model(tiny_model_dir)
+    group = [_traj(["no_tag"] * 2), _traj([None, "no_tag"]), _traj([None, None])]
+    plain = Trainer(_cfg(), tmp_path / "a", model=model, tokenizer=tok, log=lambda m: None)
+    samples, _, flat = plain.samples(group)
+    assert samples == [] and flat == 1
+    shaped = Trainer(_cfg(format_reward=1.0), tmp_path / "b", model=model, tokenizer=tok, log=lambda m: None)
+    samples, _, flat = shaped.samples(group)
+    # scores 0, 0.5, 1: the middle episode has zero advantage; each other turn is a sample
+    assert flat == 0 and sorted(s.advantage for s in samples) == pytest.approx([-0.5, -0.5, 0.5, 0.5])
+
+
+def test_metrics_reach_tensorboard(tiny_model_dir, tmp_path):
+    pytest.importorskip("tensorboard")
+    from tensorboard.backend.event_processing.event_accumulator import EventAccumulator
+    model, tok = _model(tiny_model_dir)
+    Trainer(_cfg(steps=2), tmp_path / "run", model=model, tokenizer=tok, log=lambda m: None).run()
+    ea = EventAccumulator(str(tmp_path / "run" / "tensorboard"))
+    ea.Reload()
+    tags = ea.Tags()["scalars"]
+    assert "train/return_by_task/glyphbench/classics-snake-easy-v0" in tags
+    lines = [json.loads(x) for x in (tmp_path / "run" / "metrics.jsonl").read_text().splitlines()]
+    assert [(e.step, e.value) for e in ea.Scalars("train/return_mean")] == \
+        [(m["step"], pytest.approx(m["train/return_mean"])) for m in lines]
