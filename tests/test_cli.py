@@ -54,3 +54,14 @@ def test_play_in_a_terminal_session():
 def test_bad_counts_are_refused(capsys):
     assert main(["random", "glyphbench/classics-2048-v0", "--episodes", "0"]) == 2
     assert "--episodes" in capsys.readouterr().err
+
+
+def test_output_cut_short_by_the_reader_is_quiet():
+    """`glyphbench show ... | head`: a reader that has gone away ends the command without a traceback."""
+    import subprocess
+    import sys
+    proc = subprocess.Popen([sys.executable, "-m", "glyphbench_rl.cli", "show", "glyphbench/classics-2048-v0"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    proc.stdout.close()                     # the reader is gone before anything is written
+    err = proc.stderr.read().decode()
+    assert proc.wait(timeout=120) == 141 and err == ""
