@@ -139,7 +139,10 @@ def test_ctrl_c_in_a_real_process(tmp_path):
     log = out / "episodes.jsonl"
     cmd = [sys.executable, "-m", "glyphbench_rl.evaluate.cli", "--tasks", "glyphbench/classics-maze-hard-v0",
            "--backend", "random", "--episodes", "2000", "--max-episodes-at-once", "2", "--out", str(out)]
-    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    # a shell that starts a job in the background (`... &`) leaves SIGINT ignored for it and its
+    # children; give the child the disposition a terminal's Ctrl-C meets
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     deadline = time.monotonic() + 60
     while lines(log) < 1 and proc.poll() is None and time.monotonic() < deadline:
         time.sleep(0.01)
