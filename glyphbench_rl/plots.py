@@ -251,7 +251,7 @@ def plot_comparison(job_a: str | os.PathLike, job_b: str | os.PathLike, out: str
                       f"{o['improved']} of {o['tasks']} tasks, worse on {o['worse']}, tied on {o['tied']}",
                       fontsize=9)
     gain_ax.set_ylabel("B − A")
-    gain_ax.set_xticks(range(len(groups)), [f"{name}\n({len(rows)} tasks)" for name, rows, _ in groups],
+    gain_ax.set_xticks(range(len(groups)), [f"{name}\n({_count(len(rows), 'task')})" for name, rows, _ in groups],
                        fontsize=8)
     for ax in (dist_ax, gain_ax):
         ax.grid(axis="y", alpha=0.3)
@@ -413,3 +413,7 @@ def plot_sweep(sweep_dir: str | os.PathLike, out: str | os.PathLike, *, window_r
     fig.suptitle(f"sweep {Path(sweep_dir).resolve().name}: batch mean return (pale), trailing "
                  f"{window_rollouts}-rollout mean (solid), final (dot)", fontsize=10)
     return _save(fig, out)
+
+
+def _count(n: int, noun: str) -> str:
+    return f"{n} {noun}" if n == 1 else f"{n} {noun}s"
