@@ -215,7 +215,7 @@ class Trainer:
                 loss = default_loss(logp, q, adv, mask, mask_low=cfg.mask_low, mask_high=cfg.mask_high,
                                     adv_tau=cfg.adv_tau, kl_coef=cfg.kl_coef, num_tokens=n_tokens)
             loss.backward()
-            total += float(loss)
+            total += float(loss.detach())
             with torch.no_grad():
                 dropped += masked_fraction(logp, q, mask, threshold=cfg.threshold) * float(mask.sum())
         norm = torch.nn.utils.clip_grad_norm_(self.model.parameters(), cfg.grad_clip)
