@@ -22,6 +22,11 @@ CHATML_TEMPLATE = (
     "{% endif %}")
 
 
+def is_default_model(name: str) -> bool:
+    """Whether ``name`` names the embedded SmolLM2-135M-Instruct."""
+    return name.lower() in _DEFAULT_NAMES
+
+
 def smollm2_location() -> tuple[str, str]:
     """(folder, gguf file name) of the packaged model, found without importing the package.
 
@@ -39,7 +44,7 @@ def smollm2_location() -> tuple[str, str]:
 
 def resolve_model(name: str) -> tuple[str, dict[str, Any]]:
     """(path or hub ID, extra from_pretrained kwargs) for a model name."""
-    if name.lower() in _DEFAULT_NAMES:
+    if is_default_model(name):
         folder, gguf = smollm2_location()
         return folder, {"gguf_file": gguf}
     path = Path(name).expanduser()

@@ -14,7 +14,6 @@ is an error.
 from __future__ import annotations
 
 import fnmatch
-import json
 import sys
 import warnings
 from dataclasses import dataclass
@@ -23,7 +22,7 @@ from pathlib import Path
 from typing import Callable
 
 from ..core.registry import UnknownTaskError, get_spec
-from .schema import Trajectory, TrajectoryFormatError
+from .schema import Trajectory, TrajectoryFormatError, parse_record
 from .view import EpisodeView, model_name
 
 
@@ -115,7 +114,7 @@ class EpisodeIndex:
                 lines += 1
                 where = f"{file}:{number}"
                 try:
-                    traj = _parse(line, where)
+                    traj = parse_record(line, where)
                 except TrajectoryFormatError as e:
                     cut = "" if raw.endswith(b"\n") else ", the last line, cut short"
                     self._warn(f"{e} (line skipped{cut})")
@@ -139,7 +138,7 @@ class EpisodeIndex:
             fh.seek(e.offset)
             line = fh.read(e.size)
         try:
-            traj = _parse(line, e.where)
+            traj = parse_record(line, e.where)
         except TrajectoryFormatError:
             traj = None
         if traj is None or (traj.task_id, traj.seed) != (e.task_id, e.seed):
@@ -158,19 +157,3 @@ class EpisodeIndex:
             return list(range(len(self.entries)))
         return [i for i, e in enumerate(self.entries)
                 if e.task_id == task or fnmatch.fnmatchcase(e.task_id, task)]
-
-
-def _parse(line: bytes, where: str) -> Trajectory:
-    try:
-        record = json.loads(line.decode("utf-8"))
-    except UnicodeDecodeError as e:
-        raise TrajectoryFormatError(f"{where}: not UTF-8 text (byte {e.start + 1})") from None
-    except json.JSONDecodeError as e:
-        raise TrajectoryFormatError(f"{where}: not valid JSON ({e.msg} at column {e.colno})") from None
-    traj = Trajectory.from_dict(record, where)
-    for n, s in enumerate(traj.steps, 1):    # the fields a viewer computes with or draws
-        if not (isinstance(s.observation, str) and isinstance(s.reply, str)
-                and isinstance(s.reward, (int, float)) and not isinstance(s.reward, bool)
-                and isinstance(s.action, (str, type(None))) and isinstance(s.memory, (str, type(None)))):
-            raise TrajectoryFormatError(f"{where}: step {n}: a field has the wrong type")
-    return traj

@@ -137,7 +137,31 @@ def _step(s: Any, where: str) -> Step:
     for key in ("turn", "observation", "reply", "reward"):
         if key not in s:
             raise TrajectoryFormatError(f"{where}: missing field {key!r}")
-    return Step(**{"action": None, "forfeit_reason": None, **s})
+    step = Step(**{"action": None, "forfeit_reason": None, **s})
+    # the fields every reader computes with or draws
+    if not (isinstance(step.observation, str) and isinstance(step.reply, str)
+            and isinstance(step.reward, (int, float)) and not isinstance(step.reward, bool)
+            and isinstance(step.action, (str, type(None))) and isinstance(step.memory, (str, type(None)))):
+        raise TrajectoryFormatError(f"{where}: a field has the wrong type")
+    return step
+
+
+def parse_record(line: str | bytes, where: str) -> Trajectory:
+    """One JSONL line as a Trajectory; any problem is a one-line TrajectoryFormatError at ``where``."""
+    return Trajectory.from_dict(decode_record(line, where), where)
+
+
+def decode_record(line: str | bytes, where: str) -> Any:
+    """The JSON value of one line (UTF-8 when given bytes), or a one-line TrajectoryFormatError."""
+    if isinstance(line, bytes):
+        try:
+            line = line.decode("utf-8")
+        except UnicodeDecodeError as e:
+            raise TrajectoryFormatError(f"{where}: not UTF-8 text (byte {e.start + 1})") from None
+    try:
+        return json.loads(line)
+    except json.JSONDecodeError as e:
+        raise TrajectoryFormatError(f"{where}: not valid JSON ({e.msg} at column {e.colno})") from None
 
 
 def read_jsonl(path, *, strict: bool = True) -> Iterator[Trajectory]:
@@ -153,9 +177,9 @@ def read_jsonl(path, *, strict: bool = True) -> Iterator[Trajectory]:
             continue
         where = f"{path}:{n}"
         try:
-            record = json.loads(line)
-        except json.JSONDecodeError as e:
+            record = decode_record(line, where)
+        except TrajectoryFormatError:
             if not strict and n == len(lines) and not line.endswith("\n"):
                 return
-            raise TrajectoryFormatError(f"{where}: not valid JSON ({e.msg} at column {e.colno})") from None
+            raise
         yield Trajectory.from_dict(record, where)

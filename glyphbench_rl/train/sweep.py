@@ -69,16 +69,20 @@ def expand(spec: dict[str, Any]) -> list[tuple[str, dict[str, Any]]]:
     return out
 
 
+def _metrics(run_dir: Path) -> list[dict[str, Any]]:
+    """A condition's metric records; none when it has not run or its file cannot be read (the
+    trainer's --resume drops a torn last line)."""
+    from ..plots import PlotError, read_metrics
+    try:
+        return read_metrics(run_dir / "metrics.jsonl")
+    except PlotError:
+        return []
+
+
 def status(run_dir: Path, steps: int) -> str:
-    metrics = run_dir / "metrics.jsonl"
-    if not metrics.exists():
+    if not (run_dir / "metrics.jsonl").exists():
         return "todo"
-    last = 0
-    for line in metrics.read_text(encoding="utf-8").splitlines():
-        try:
-            last = max(last, int(json.loads(line)["step"]))
-        except (ValueError, KeyError, TypeError):
-            continue
+    last = max((m["step"] for m in _metrics(run_dir)), default=0)
     return "done" if last >= steps else "partial"
 
 
@@ -155,8 +159,7 @@ def table(out: Path, rows, last: int = 5) -> str:
     lines = [f"{'condition':<40} {'steps':>5} {'final return':>12} {'forfeit':>8}"]
     summary = []
     for name, cfg, _ in rows:
-        path = out / "runs" / name / "metrics.jsonl"
-        metrics = [json.loads(x) for x in path.read_text().splitlines() if x.strip()] if path.exists() else []
+        metrics = _metrics(out / "runs" / name)
         tail = metrics[-last:]
         ret = sum(m["train/return_mean"] for m in tail) / len(tail) if tail else float("nan")
         forfeit = sum(m["train/forfeit_rate"] for m in tail) / len(tail) if tail else float("nan")

@@ -132,8 +132,8 @@ def test_ten_thousand_episodes_index_without_holding_them(tmp_path, trajs, monke
     # what stays is a small record per episode, far less than the episodes themselves
     assert held < size / 5 and peak < size / 4, (held, peak, size)
     parsed: list[str] = []
-    real_parse = index_module._parse
-    monkeypatch.setattr(index_module, "_parse",
+    real_parse = index_module.parse_record
+    monkeypatch.setattr(index_module, "parse_record",
                         lambda line, where: parsed.append(where) or real_parse(line, where))
     traj = index.load(9_876)
     assert parsed == [f"{path}:9877"] and traj.seed == 9_876 and traj.steps == trajs[0].steps[:2]

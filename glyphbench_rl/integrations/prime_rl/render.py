@@ -199,9 +199,9 @@ def _show(value: Any) -> str:
 
 def _policy_model(name: str) -> tuple[str, str | None]:
     """(Prime-RL model name, renderer to pin or None for Prime-RL's automatic choice)."""
-    from ...models import _DEFAULT_NAMES
+    from ...models import is_default_model
 
-    if name.lower() in _DEFAULT_NAMES:
+    if is_default_model(name):
         # the embedded GGUF cannot be trained by Prime-RL; its hub original can
         return SMOLLM2_HUB_ID, "default"
     path = Path(name).expanduser()
