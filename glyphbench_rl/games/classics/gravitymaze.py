@@ -13,7 +13,7 @@ import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
 from ...core.params import check_int
-from .grid import DELTAS, FLOOR, GOAL, WALL, Board
+from .grid import DELTAS, FLOOR, GOAL, WALL, Board, interior_cells, walled_room
 from .motion import bfs_search
 
 BALL, SPIKES = "●", "▲"
@@ -93,14 +93,10 @@ class GravityMaze(GlyphTask):
     def _setup(self, rng: np.random.Generator) -> None:
         p = self.params
         n = p.size
-        interior = [(r, c) for r in range(1, n + 1) for c in range(1, n + 1)]
+        interior = interior_cells(n)
         for _ in range(_TRIES):
-            board = Board(n + 2, n + 2, WALL)
             picks = rng.choice(len(interior), size=p.walls + p.spikes + 1, replace=False).tolist()
-            walls = {interior[i] for i in picks[:p.walls]}
-            for cell in interior:
-                if cell not in walls:
-                    board[cell] = FLOOR
+            board = walled_room(n, WALL, FLOOR, {interior[i] for i in picks[:p.walls]})
             spikes = {interior[i] for i in picks[p.walls:-1]}
             goal = interior[picks[-1]]
             # the ball starts at rest: on a free cell with a wall below it

@@ -56,6 +56,20 @@ class Board:
         return [(r, c) for r, row in enumerate(self.rows) for c, x in enumerate(row) if x == ch]
 
 
+def interior_cells(n: int) -> list[tuple[int, int]]:
+    """The cells of an n x n room inside a one-cell border, row by row."""
+    return [(r, c) for r in range(1, n + 1) for c in range(1, n + 1)]
+
+
+def walled_room(n: int, wall: str, floor: str, blocked: set[tuple[int, int]] = frozenset()) -> Board:
+    """An n x n room of ``floor`` inside a ring of ``wall``; ``blocked`` interior cells stay wall."""
+    board = Board(n + 2, n + 2, wall)
+    for cell in interior_cells(n):
+        if cell not in blocked:
+            board[cell] = floor
+    return board
+
+
 def bfs_distances(start: tuple[int, int], passable: Callable[[int, int], bool]) -> dict[tuple[int, int], int]:
     """Shortest 4-connected step counts from ``start`` to every reachable passable cell."""
     dist = {start: 0}

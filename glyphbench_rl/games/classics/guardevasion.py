@@ -15,7 +15,7 @@ import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
 from ...core.params import check_int
-from .grid import DELTAS, FLOOR, GOAL, MOVES, PLAYER, WALL, Board, bfs_distances
+from .grid import DELTAS, FLOOR, GOAL, MOVES, PLAYER, WALL, bfs_distances, interior_cells, walled_room
 from .motion import bfs_search, view_cone
 
 ARROWS = "▲▼◀▶"     # a guard facing up, down, left, right (DELTAS order)
@@ -105,12 +105,9 @@ class GuardEvasion(GlyphTask):
     def _layout(self, rng: np.random.Generator):
         p = self.params
         n = p.size
-        board = Board(n + 2, n + 2, WALL)
-        interior = [(r, c) for r in range(1, n + 1) for c in range(1, n + 1)]
+        interior = interior_cells(n)
         pillars = {interior[i] for i in rng.choice(len(interior), size=p.pillars, replace=False).tolist()}
-        for cell in interior:
-            if cell not in pillars:
-                board[cell] = FLOOR
+        board = walled_room(n, WALL, FLOOR, pillars)
         floor = [cell for cell in interior if cell not in pillars]
         start = floor[int(rng.integers(len(floor)))]
         walk = bfs_distances(start, lambda r, c: board.rows[r][c] != WALL)

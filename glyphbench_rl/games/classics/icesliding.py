@@ -14,7 +14,7 @@ import numpy as np
 
 from ...core import GlyphTask, register_variants
 from ...core.params import check_int
-from .grid import DELTAS, FLOOR, GOAL, MOVES, PLAYER, WALL, Board, move_actions
+from .grid import DELTAS, FLOOR, GOAL, MOVES, PLAYER, WALL, Board, interior_cells, move_actions, walled_room
 from .motion import bfs_layers, slide
 
 Cell = tuple[int, int]
@@ -85,14 +85,10 @@ class IceSliding(GlyphTask):
     def _setup(self, rng: np.random.Generator) -> None:
         p = self.params
         n = p.size
-        interior = [(r, c) for r in range(1, n + 1) for c in range(1, n + 1)]
+        interior = interior_cells(n)
         for _ in range(_TRIES):
-            board = Board(n + 2, n + 2, WALL)
             picks = rng.choice(len(interior), size=p.rocks + 1, replace=False).tolist()
-            rocks = {interior[i] for i in picks[:-1]}
-            for cell in interior:
-                if cell not in rocks:
-                    board[cell] = FLOOR
+            board = walled_room(n, WALL, FLOOR, {interior[i] for i in picks[:-1]})
             exit_ = interior[picks[-1]]
             dist = moves_to_exit(board, exit_)
             starts = sorted(cell for cell, d in dist.items() if d >= p.min_moves)
