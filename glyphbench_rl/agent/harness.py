@@ -12,8 +12,8 @@ already in the prompt, so every prompt still holds the current legend exactly on
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import Callable
+from dataclasses import dataclass
+from typing import Protocol
 
 from ..core.frame import Frame
 
@@ -55,12 +55,32 @@ def observation_text(frame: Frame, *, legend: bool = True) -> str:
     return "\n".join(line for line in lines if not line.startswith("Legend: "))
 
 
+class MessageTokens(Protocol):
+    """Token ids of chat messages framed by a model's chat template, each message on its own
+    (``rollout.chat_tokens.ChatTokens``): what a harness needs to hand a token backend the exact
+    ids of its prompt."""
+
+    gen_ids: list[int]           # the generation prompt (and any reply prefix)
+
+    def system(self, content: str) -> list[int]: ...
+    def user(self, content: str) -> list[int]: ...
+    def reply(self, sampled_ids: list[int]) -> list[int]: ...
+
+
+def check_prompt_kind(config: HarnessConfig, tokens: bool, backend: str = "") -> None:
+    """Refuse settings that need token prompts when the policy reads chat messages."""
+    if config.reply_prefix and not tokens:
+        who = f"; backend {backend!r} sends chat messages" if backend else ""
+        raise ValueError(f"harness.reply_prefix needs a token backend (hf, vllm): chat messages "
+                         f"cannot carry an assistant prefill{who}")
+
+
 @dataclass
 class Turn:
     user: str                              # the observation message of this turn
     legend: tuple                          # the legend the message carries, () if left out
     reply: str | None = None               # the model's full reply (reasoning included)
-    user_ids: list[int] | None = None      # token ids of the user message (trainable backends)
+    user_ids: list[int] | None = None      # token ids of the user message (with MessageTokens)
     reply_ids: list[int] | None = None     # prompt-side ids of the reply: sampled ids + closing
 
 
@@ -68,17 +88,24 @@ def _estimate_tokens(text: str) -> int:
     return len(text) // 4 + 1
 
 
-@dataclass
 class BasicHarness:
-    """Per-episode prompt state. ``observe`` a frame, send ``messages()``, then ``record`` the reply."""
+    """Per-episode prompt state. ``observe`` a frame, send ``messages()`` (or ``prompt_ids()``
+    with ``tokens``), then ``record`` the reply.
 
-    system: str
-    config: HarnessConfig = field(default_factory=HarnessConfig)
-    #: token length of a message, when known (a trainable backend's tokenizer); else estimated
-    measure: Callable[[Turn | str, str], int] | None = None
-    turns: list[Turn] = field(default_factory=list)
-    first_kept: int = 0          # index of the oldest turn still in the prompt
-    context_drops: int = 0       # turns dropped to fit the context budget (beyond the window)
+    With ``tokens`` every message is tokenised once, when it is composed, and the context budget
+    counts those ids; without, text backends get the messages and the budget estimates chars/4.
+    """
+
+    def __init__(self, system: str, config: HarnessConfig | None = None,
+                 tokens: MessageTokens | None = None) -> None:
+        self.system = system
+        self.config = config or HarnessConfig()
+        self.tokens = tokens
+        check_prompt_kind(self.config, tokens is not None)
+        self.system_ids = tokens.system(system) if tokens is not None else None
+        self.turns: list[Turn] = []
+        self.first_kept = 0          # index of the oldest turn still in the prompt
+        self.context_drops = 0       # turns dropped to fit the context budget (beyond the window)
 
     # -- one turn ------------------------------------------------------------------------------
     def observe(self, frame: Frame) -> Turn:
@@ -91,14 +118,19 @@ class BasicHarness:
         if self.config.legend == "changed" and legend and any(
                 t.legend == legend for t in self.turns[start:]):
             turn = Turn(observation_text(frame, legend=False), ())
+        self._user_ids(turn)
         self.first_kept = start
         self.turns.append(turn)
         return turn
 
-    def record(self, reply: str, reply_ids: list[int] | None = None) -> None:
+    def record(self, sampled: str, sampled_ids: list[int] | None = None) -> str:
+        """Store the reply to the current turn; returns it as the model's whole reply (the
+        ``reply_prefix`` the harness wrote, then what the model sampled)."""
         turn = self.turns[-1]
-        turn.reply = reply
-        turn.reply_ids = reply_ids
+        turn.reply = self.config.reply_prefix + sampled
+        if self.tokens is not None and sampled_ids is not None:
+            turn.reply_ids = self.tokens.reply(sampled_ids)
+        return turn.reply
 
     # -- the prompt ------------------------------------------------------------------------------
     def kept(self) -> list[Turn]:
@@ -113,18 +145,37 @@ class BasicHarness:
                 out.append({"role": "assistant", "content": t.reply})
         return out
 
+    def prompt_ids(self) -> list[int] | None:
+        """The current prompt as token ids: the stored ids of every kept message, then the
+        generation prompt; None without ``tokens``."""
+        if self.tokens is None:
+            return None
+        ids = list(self.system_ids)
+        for t in self.kept():
+            ids += t.user_ids
+            if t.reply_ids is not None:
+                ids += t.reply_ids
+        return ids + self.tokens.gen_ids
+
     # -- context budget --------------------------------------------------------------------------
-    def _size(self, item: Turn | str, part: str) -> int:
-        if self.measure is not None:
-            return self.measure(item, part)
-        text = item if isinstance(item, str) else (item.user if part == "user" else item.reply or "")
-        return _estimate_tokens(text)
+    def _user_ids(self, turn: Turn) -> list[int] | None:
+        if self.tokens is not None and turn.user_ids is None:
+            turn.user_ids = self.tokens.user(turn.user)
+        return turn.user_ids
+
+    def _size(self, turn: Turn, part: str) -> int:
+        if self.tokens is not None:
+            return len(self._user_ids(turn)) if part == "user" else len(turn.reply_ids or ())
+        return _estimate_tokens(turn.user if part == "user" else turn.reply or "")
+
+    def _system_size(self) -> int:
+        return len(self.system_ids) if self.system_ids is not None else _estimate_tokens(self.system)
 
     def _fit(self, start: int, current: Turn) -> int:
         budget = self.config.max_context_tokens
         if budget is None:
             return start
-        total = self._size(self.system, "system") + self._size(current, "user")
+        total = self._system_size() + self._size(current, "user")
         past = [self._size(t, "user") + self._size(t, "reply") for t in self.turns[start:]]
         total += sum(past)
         dropped = 0
@@ -133,3 +184,9 @@ class BasicHarness:
             dropped += 1
         self.context_drops += dropped
         return start + dropped
+
+
+def make_harness(system: str, config: HarnessConfig | None = None,
+                 tokens: MessageTokens | None = None) -> BasicHarness:
+    """The harness a config asks for: the one place a new harness (Guided Memory) plugs in."""
+    return BasicHarness(system, config, tokens)

@@ -22,7 +22,7 @@ from .. import __version__
 from ..agent.harness import HarnessConfig
 from ..core.registry import get_spec
 from ..core.seeding import HELDOUT_SEEDS, heldout_seeds
-from ..replay.schema import Trajectory
+from ..rollout.trajectory import Trajectory
 from ..rollout.backend import BackendError, PolicyBackend
 from ..rollout.engine import EpisodeSpec, RolloutEngine
 from ..rollout.factory import make_backend

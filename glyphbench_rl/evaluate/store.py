@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from ..replay.schema import Trajectory
+from ..rollout.trajectory import Trajectory
 
 # the scalar fields a summary needs; the turn-by-turn data is left on disk
 _SCALARS = {"task_id": str, "seed": int, "return": (int, float), "length": int}

@@ -1,5 +1,4 @@
-"""Trajectory schema and the replay viewers."""
+"""The replay viewers (web page, terminal, images) and plots over trajectory records.
 
-from .schema import SCHEMA_VERSION, Step, Trajectory, TrajectoryFormatError, read_jsonl
-
-__all__ = ["SCHEMA_VERSION", "Step", "Trajectory", "TrajectoryFormatError", "read_jsonl"]
+The record itself, ``Trajectory``/``Step``, lives in ``glyphbench_rl.rollout.trajectory``.
+"""

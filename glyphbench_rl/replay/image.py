@@ -30,7 +30,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Iterable, Sequence
 
-from .schema import Trajectory
+from ..rollout.trajectory import Trajectory
 from .view import EpisodeView, FrameView, TurnView, glyph_class, parse_observation
 
 try:

@@ -22,7 +22,7 @@ from pathlib import Path
 from typing import Callable
 
 from ..core.registry import UnknownTaskError, get_spec
-from .schema import Trajectory, TrajectoryFormatError, parse_record
+from ..rollout.trajectory import Trajectory, TrajectoryFormatError, parse_record
 from .view import EpisodeView, model_name
 
 

@@ -18,7 +18,7 @@ import re
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-from .schema import Trajectory
+from ..rollout.trajectory import Trajectory
 
 GLYPH_CLASSES = ("agent", "hazard", "goal", "item", "water", "wall", "empty", "other")
 TINTS = ("red", "green", "blue", "yellow", "purple", "grey", "orange")

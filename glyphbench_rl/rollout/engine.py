@@ -1,8 +1,8 @@
 """RolloutEngine: many episodes at once, one batched policy call per turn.
 
-Each iteration every live episode that needs an action contributes one request; the backend
-answers them all in one call; the engine parses each reply with the agent protocol, steps the
-game (a forfeit when the reply names no valid action) and records the step. Finished episodes
+Each iteration every live episode (an ``EpisodeDriver``) contributes its prompt as one request;
+the backend answers them all in one call; each driver parses its reply with the agent protocol,
+steps its game (a forfeit when the reply names no valid action) and records the step. Finished episodes
 are handed to ``on_episode`` at once (so a job can write them before the next turn) and their
 slots are refilled from the queue.
 """
@@ -13,12 +13,12 @@ import time
 from dataclasses import asdict, dataclass, field
 from typing import Any, Callable, Iterable, Mapping
 
-from ..agent.harness import BasicHarness, HarnessConfig, Turn
-from ..agent.parse import parse_action
+from ..agent.harness import HarnessConfig, check_prompt_kind
 from ..core.registry import get_spec
-from ..replay.schema import Step, Trajectory
-from .backend import GenRequest, Generation, PolicyBackend
+from .backend import GenRequest, PolicyBackend
 from .chat_tokens import ChatTokens
+from .driver import EpisodeDriver, Prompt
+from .trajectory import Trajectory
 
 
 @dataclass(frozen=True)
@@ -26,16 +26,8 @@ class EpisodeSpec:
     task_id: str
     seed: int
     overrides: Mapping[str, Any] = field(default_factory=dict)
-    tag: Any = None                     # carried to the trajectory's meta (group ids, ...)
-
-
-@dataclass
-class _Live:
-    spec: EpisodeSpec
-    task: Any
-    harness: BasicHarness
-    traj: Trajectory
-    system_ids: list[int] | None = None
+    group: int | None = None                     # the rollout group (training), on the trajectory
+    meta: Mapping[str, Any] = field(default_factory=dict)   # extra trajectory meta (run step, ...)
 
 
 @dataclass
@@ -62,9 +54,7 @@ class RolloutEngine:
                      "harness": asdict(self.harness), **(meta or {})}
         tokenizer = getattr(backend, "tokenizer", None)
         self.chat = ChatTokens(tokenizer, self.harness.reply_prefix) if tokenizer is not None else None
-        if self.harness.reply_prefix and self.chat is None:
-            raise ValueError(f"harness.reply_prefix needs a token backend (hf, vllm); backend "
-                             f"{self.meta['backend']!r} sends chat messages")
+        check_prompt_kind(self.harness, self.chat is not None, self.meta["backend"])
         self.stats = EngineStats()
 
     # -- public ------------------------------------------------------------------------------------
@@ -79,7 +69,7 @@ class RolloutEngine:
         for spec in queue:           # fail before any model call on a bad task ID
             get_spec(spec.task_id)
         results: list[Trajectory | None] = [None] * len(queue)
-        live: dict[int, _Live] = {}
+        live: dict[int, EpisodeDriver] = {}
         next_index = 0
         t0 = time.perf_counter()
         try:
@@ -88,7 +78,8 @@ class RolloutEngine:
                     live[next_index] = self._start(queue[next_index])
                     next_index += 1
                 keys = list(live)
-                requests = [self._request(k, live[k]) for k in keys]
+                prompts = [live[k].prompt() for k in keys]
+                requests = [self._request(k, live[k], p) for k, p in zip(keys, prompts)]
                 tb = time.perf_counter()
                 replies = self.backend.generate(requests)
                 self.stats.backend_s += time.perf_counter() - tb
@@ -96,12 +87,12 @@ class RolloutEngine:
                 if len(replies) != len(requests):
                     raise RuntimeError(f"backend {self.meta['backend']} answered {len(replies)} "
                                        f"of {len(requests)} requests")
-                for k, req, gen in zip(keys, requests, replies):
+                for k, prompt, gen in zip(keys, prompts, replies):
                     ep = live[k]
-                    self._apply(ep, req, gen)
-                    if ep.task.done:
+                    ep.apply(prompt, gen)
+                    self.stats.turns += 1
+                    if ep.done:
                         del live[k]
-                        ep.traj.context_drops = ep.harness.context_drops
                         if keep:
                             results[k] = ep.traj
                         if on_episode is not None:
@@ -111,66 +102,12 @@ class RolloutEngine:
         return [t for t in results if t is not None]
 
     # -- one episode ---------------------------------------------------------------------------------
-    def _start(self, spec: EpisodeSpec) -> _Live:
+    def _start(self, spec: EpisodeSpec) -> EpisodeDriver:
         task = get_spec(spec.task_id).make(**dict(spec.overrides))
-        obs, _ = task.reset(seed=spec.seed)
-        system = task.system_prompt()
-        meta = dict(self.meta)
-        if spec.tag is not None:
-            meta["tag"] = spec.tag
-        traj = Trajectory(spec.task_id, spec.seed, system_prompt=system, initial_observation=obs,
-                          meta=meta)
-        ep = _Live(spec, task, BasicHarness(system, self.harness), traj)
-        if self.chat is not None:
-            ep.system_ids = self.chat.system(system)
-            ep.harness.measure = lambda item, part, ep=ep: self._measure(ep, item, part)
-        return ep
+        return EpisodeDriver(task, spec.seed, self.harness, tokens=self.chat,
+                             meta={**self.meta, **spec.meta}, group=spec.group)
 
-    def _measure(self, ep: _Live, item: Turn | str, part: str) -> int:
-        if isinstance(item, str):
-            return len(ep.system_ids)
-        if part == "user":
-            if item.user_ids is None:
-                item.user_ids = self.chat.user(item.user)
-            return len(item.user_ids)
-        return len(item.reply_ids or ())
-
-    def _request(self, key: int, ep: _Live) -> GenRequest:
-        turn = ep.harness.observe(ep.task.frame)
-        prompt_ids = None
-        if self.chat is not None:
-            if turn.user_ids is None:
-                turn.user_ids = self.chat.user(turn.user)
-            prompt_ids = list(ep.system_ids)
-            for t in ep.harness.kept():
-                prompt_ids += t.user_ids
-                if t.reply_ids is not None:
-                    prompt_ids += t.reply_ids
-            prompt_ids += self.chat.gen_ids
-        return GenRequest(key, ep.spec.task_id, ep.task.turn, ep.harness.messages(),
-                          ep.task.actions, turn.user, prompt_ids, ep.spec.seed)
-
-    def _apply(self, ep: _Live, req: GenRequest, gen: Generation) -> None:
-        text = self.harness.reply_prefix + (gen.text if isinstance(gen.text, str) else "")
-        reply_ids = self.chat.reply(gen.token_ids) if self.chat is not None and gen.token_ids is not None else None
-        ep.harness.record(text, reply_ids)
-        parsed = parse_action(text, ep.task.actions)
-        if parsed.valid:
-            _, reward, term, trunc, _ = ep.task.step(parsed.index)
-        else:
-            _, reward, term, trunc, _ = ep.task.forfeit(parsed.reason)
-        prompt_tokens = gen.prompt_tokens or (len(req.prompt_ids) if req.prompt_ids is not None else 0)
-        completion_tokens = gen.completion_tokens or (len(gen.token_ids) if gen.token_ids is not None else 0)
-        ep.traj.steps.append(Step(
-            turn=ep.task.turn, observation=req.observation, reply=text, action=parsed.name,
-            forfeit_reason=parsed.reason, reward=reward, terminated=term, truncated=trunc,
-            prompt_tokens=prompt_tokens, completion_tokens=completion_tokens,
-            finish_reason=gen.finish_reason, prompt_ids=req.prompt_ids,
-            completion_ids=gen.token_ids, logprobs=gen.logprobs))
-        self.stats.turns += 1
-        if ep.task.done:
-            ep.traj.episode_return = ep.task.episode_return
-            ep.traj.terminated, ep.traj.truncated = term, trunc
-            ep.traj.won = ep.task.won
-            ep.traj.final_observation = ep.task.frame.render()
-
+    @staticmethod
+    def _request(key: int, ep: EpisodeDriver, prompt: Prompt) -> GenRequest:
+        return GenRequest(key, ep.traj.task_id, ep.task.turn, prompt.messages, ep.task.actions,
+                          prompt.observation, prompt.prompt_ids, ep.traj.seed)

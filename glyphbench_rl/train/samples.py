@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Iterable, Sequence
 
-from ..replay.schema import Trajectory
+from ..rollout.trajectory import Trajectory
 
 
 @dataclass

@@ -26,7 +26,7 @@ from typing import Any, Callable
 
 from ..core import resolve_tasks
 from ..core.seeding import generator, training_seeds
-from ..replay.schema import Trajectory
+from ..rollout.trajectory import Trajectory
 from ..rollout.engine import EpisodeSpec, RolloutEngine
 from ..rollout.hf_backend import HFBackend
 from ..agent.parse import EMPTY_TAG, UNKNOWN_NAME
@@ -148,7 +148,7 @@ class Trainer:
             k = (step - 1) * cfg.groups_per_update + g      # global group index: the task cursor
             task_id = self.tasks[k % len(self.tasks)]
             for seed in training_seeds(cfg.seed, cfg.group_size, "group", k):
-                specs.append(EpisodeSpec(task_id, seed, overrides, tag={"step": step, "group": k}))
+                specs.append(EpisodeSpec(task_id, seed, overrides, group=k, meta={"step": step}))
         backend = HFBackend(self.model, tokenizer=self.tokenizer, temperature=cfg.temperature,
                             top_p=cfg.top_p, max_new_tokens=cfg.max_new_tokens,
                             batch_size=cfg.max_episodes_at_once,
@@ -169,7 +169,7 @@ class Trainer:
     def samples(self, trajs: list[Trajectory]) -> tuple[list[Sample], int, int]:
         groups: dict[int, list[Trajectory]] = defaultdict(list)
         for t in trajs:
-            groups[t.meta["tag"]["group"]].append(t)
+            groups[t.group].append(t)
         samples, skipped, flat = [], 0, 0
         for members in groups.values():
             eligible = [self.cfg.include_truncated or not t.truncated for t in members]

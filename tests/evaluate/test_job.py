@@ -7,7 +7,7 @@ import glyphbench_rl
 from glyphbench_rl.core.seeding import heldout_seeds
 from glyphbench_rl.evaluate import EpisodeLogError, EvalConfig, EvalError, run_job
 from glyphbench_rl.evaluate.job import EPISODES, rebuild_summary
-from glyphbench_rl.replay.schema import read_jsonl
+from glyphbench_rl.rollout.trajectory import read_jsonl
 
 from eval_helpers import LIGHTS, SNAKE, TASKS, CountingPolicy, lines, records
 

@@ -74,7 +74,7 @@ def test_values_round_trip(tmp_path):
     prompt = {"history": 2, "legend": "changed", "max_context_tokens": 3000}
     # 12 steps x 4 groups over 2 tasks: 24 training rows per task, as many as built-in groups
     assert env["taskset"] == {"id": "glyphbench-rl", "tasks": TASKS, "split": "train", "episodes": 24,
-                              "seed_start": 0, **prompt}
+                              "seed_start": 0, "harness": prompt}
     ev = orch["eval"]
     assert (ev["interval"], ev["group_size"], ev["skip_first_step"]) == (4, 1, True)
     assert ev["sampling"] == {"temperature": 0.7, "max_completion_tokens": 512}

@@ -58,7 +58,7 @@ def test_vf_eval_streaming_matches_engine(tmp_path):
     harness = HarnessConfig(history=2)
     with StubOpenAI(policy) as stub:
         proc = vf_eval(tmp_path, stub, "--env.taskset.tasks", json.dumps(TASKS),
-                       "--env.taskset.episodes", "2", "--env.taskset.history", "2")
+                       "--env.taskset.episodes", "2", "--env.taskset.harness.history", "2")
         assert proc.returncode == 0, proc.stderr[-3000:]
         assert KEY not in proc.stdout + proc.stderr
         bodies = stub.chat_bodies()
@@ -170,7 +170,10 @@ def test_rows_and_config():
     assert len(list(GlyphbenchTaskset(GlyphbenchTasksetConfig(id="glyphbench-rl")))) == len(
         glyphbench_rl.list_tasks(tier="standard"))
     with pytest.raises(ValueError, match="harness.legend"):
-        GlyphbenchTasksetConfig(id="glyphbench-rl", legend="sometimes")
+        GlyphbenchTasksetConfig(id="glyphbench-rl", harness={"legend": "sometimes"})
+    with pytest.raises(ValueError, match="reply_prefix needs a token backend"):
+        GlyphbenchTasksetConfig(id="glyphbench-rl", harness={"reply_prefix": "<action>"})
+    assert GlyphbenchTasksetConfig(id="glyphbench-rl", harness={"history": 3}).harness == HarnessConfig(history=3)
     with pytest.raises(ValueError, match="held-out"):
         GlyphbenchTasksetConfig(id="glyphbench-rl", episodes=2, seed_start=999_999)
 

@@ -7,7 +7,7 @@ from pathlib import Path
 from typing import Iterable
 
 from glyphbench_rl.agent.harness import HarnessConfig
-from glyphbench_rl.replay import Trajectory
+from glyphbench_rl.rollout.trajectory import Trajectory
 from glyphbench_rl.rollout import EpisodeSpec, RolloutEngine, ScriptedBackend
 
 SNAKE = "glyphbench/classics-snake-easy-v0"

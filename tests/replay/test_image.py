@@ -13,7 +13,7 @@ from glyphbench_rl.replay import view  # noqa: E402
 from glyphbench_rl.replay.image import (  # noqa: E402
     BAD, CLASS_COLOURS, DIM, NAMED_COLOURS, ImageExportError, MissingGlyphWarning, export_episode,
     glyph_class, glyph_colour, grid_segments, parse_observation, render_step, write_gif, write_png)
-from glyphbench_rl.replay.schema import Step, Trajectory, read_jsonl  # noqa: E402
+from glyphbench_rl.rollout.trajectory import Step, Trajectory, read_jsonl  # noqa: E402
 from glyphbench_rl.rollout import ScriptedBackend  # noqa: E402
 
 SNAKE = "glyphbench/classics-snake-easy-v0"

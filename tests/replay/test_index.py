@@ -9,7 +9,7 @@ import warnings
 import pytest
 from replay_helpers import EMPTY, SNAKE, play, write_jsonl
 
-from glyphbench_rl.replay import TrajectoryFormatError, read_jsonl
+from glyphbench_rl.rollout.trajectory import TrajectoryFormatError, read_jsonl
 from glyphbench_rl.replay import index as index_module
 from glyphbench_rl.replay.index import CorruptLineWarning, EpisodeIndex
 

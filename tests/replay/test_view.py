@@ -6,7 +6,7 @@ from replay_helpers import BATTLESHIP, EMPTY, FORFEIT_REPLY, MEMORY, SNAKE, forw
 
 from glyphbench_rl.agent.harness import HarnessConfig
 from glyphbench_rl.core import make
-from glyphbench_rl.replay import Step, Trajectory
+from glyphbench_rl.rollout.trajectory import Step, Trajectory
 from glyphbench_rl.replay.view import EpisodeView, glyph_class, parse_legend, parse_observation
 
 

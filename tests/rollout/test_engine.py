@@ -59,8 +59,8 @@ def test_garbage_replies_forfeit_and_never_crash():
 
 def test_scripted_indices_and_tags():
     t = RolloutEngine(ScriptedBackend(lambda r: 0), meta={"run": "x"}).run(
-        [EpisodeSpec("glyphbench/classics-snake-easy-v0", 5, tag={"group": 7})])[0]
-    assert t.forfeits == 0 and t.meta["tag"] == {"group": 7} and t.meta["run"] == "x"
+        [EpisodeSpec("glyphbench/classics-snake-easy-v0", 5, group=7, meta={"step": 2})])[0]
+    assert t.forfeits == 0 and t.group == 7 and t.meta["step"] == 2 and t.meta["run"] == "x"
     assert t.meta["backend"] == "scripted" and t.meta["harness"]["history"] == 8
 
 

@@ -6,7 +6,7 @@ import pytest
 
 torch = pytest.importorskip("torch")
 
-from glyphbench_rl.replay.schema import Step, Trajectory  # noqa: E402
+from glyphbench_rl.rollout.trajectory import Step, Trajectory  # noqa: E402
 from glyphbench_rl.train.cli import main as train_main  # noqa: E402
 from glyphbench_rl.train.config import TrainConfig  # noqa: E402
 from glyphbench_rl.train.samples import micro_batches, trajectory_samples  # noqa: E402
@@ -123,7 +123,7 @@ def _traj(reasons, ret=0.0, group=0):
                   reward=0.0, prompt_ids=[1, 2], completion_ids=[3], logprobs=[-0.1])
              for i, r in enumerate(reasons)]
     return Trajectory("glyphbench/classics-snake-easy-v0", 0, steps=steps, episode_return=ret,
-                      meta={"tag": {"group": group}})
+                      group=group)
 
 
 def test_format_score_grades_each_turn():

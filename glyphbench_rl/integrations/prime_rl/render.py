@@ -101,7 +101,7 @@ def render_toml(cfg: TrainConfig, *, run_dir: str | Path, resume: bool = False) 
     # one training row per group the built-in trainer would play of each task
     rows_per_task = math.ceil(cfg.steps * cfg.groups_per_update / len(tasks))
     train_taskset = {"id": TASKSET_ID, "tasks": tasks, "split": "train", "episodes": rows_per_task,
-                     "seed_start": 0, **prompt}
+                     "seed_start": 0, **({"harness": prompt} if prompt else {})}
     ckpt: dict[str, Any] = {"interval": cfg.checkpoint_every, "keep_last": cfg.keep_checkpoints}
     if resume:
         ckpt["resume_step"] = -1          # Prime-RL: -1 resumes from the latest checkpoint

@@ -1,9 +1,9 @@
 """One episode: the game plays the user, the agent answers each observation.
 
-The prompt and parse code are the rollout engine's own: ``BasicHarness`` composes every turn's
-messages (system prompt, history window, legend mode, context budget) and ``parse_action``
-reads the reply; a reply without a valid action is a forfeit turn. The reward is the episode
-return; the metrics are the episode length, forfeit rate, terminated and truncated.
+The turn is the rollout engine's own ``EpisodeDriver``: the harness composes every turn's
+messages (system prompt, history window, legend mode, context budget), the agent protocol parses
+the reply, and a reply without a valid action is a forfeit turn. The reward is the episode
+return; the metrics are the episode length, forfeit rate, terminated, truncated and won.
 """
 
 from __future__ import annotations
@@ -12,9 +12,9 @@ from collections import Counter
 
 import verifiers.v1 as vf
 
-from ...agent.harness import BasicHarness
-from ...agent.parse import parse_action
 from ...core import get_spec
+from ...rollout.backend import Generation
+from ...rollout.driver import EpisodeDriver
 from ...rollout.openai_backend import reply_text
 from .harness import GlyphbenchHarness
 from .taskset import GlyphbenchTask
@@ -38,41 +38,31 @@ class GlyphbenchEnv(vf.Env[GlyphbenchEnvConfig]):
 
     async def run(self, task: GlyphbenchTask, agents: vf.Agents) -> None:
         row = task.data
-        game = get_spec(row.task_id).make()
-        game.reset(seed=row.seed)
-        taskset = self.taskset.config
         # a system-prompt override (e.g. from GEPA) arrives on the row, like for any taskset
-        prompt = BasicHarness(row.system_prompt or game.system_prompt(), taskset.prompt_config())
-        forfeits: Counter[str] = Counter()
-        terminated = truncated = False
+        driver = EpisodeDriver(get_spec(row.task_id).make(), row.seed, self.taskset.config.harness,
+                               system_prompt=row.system_prompt or None)
         async with agents.agent.interaction(task) as interaction:
-            while not game.done:
-                prompt.observe(game.frame)
-                segment = await interaction.turn(prompt.messages())
+            while not driver.done:
+                prompt = driver.prompt()
+                segment = await interaction.turn(prompt.messages)
                 if segment.terminated:   # the run ended (a model error, a turn or token limit)
                     break
-                reply = _reply(segment)
-                prompt.record(reply)
-                parsed = parse_action(reply, game.actions)
-                if parsed.valid:
-                    _, _, terminated, truncated, _ = game.step(parsed.index)
-                else:
-                    _, _, terminated, truncated, _ = game.forfeit(parsed.reason)
-                    forfeits[parsed.reason] += 1
+                driver.apply(prompt, Generation(_reply(segment)))
             # recorded before the context closes, so the rollout's own summary line shows them
+            traj = driver.traj
+            forfeits = Counter(s.forfeit_reason for s in traj.steps if s.action is None)
             trace = interaction.trace
-            turns = game.turn
-            trace.record_reward("episode_return", game.episode_return)
+            trace.record_reward("episode_return", driver.task.episode_return)
             trace.record_metrics({
-                "episode_length": turns,
-                "forfeit_rate": sum(forfeits.values()) / turns if turns else 0.0,
-                "terminated": float(terminated),
-                "truncated": float(truncated),
-                "won": float(bool(game.won)),
+                "episode_length": traj.length,
+                "forfeit_rate": traj.forfeits / traj.length if traj.length else 0.0,
+                "terminated": float(traj.terminated),
+                "truncated": float(traj.truncated),
+                "won": float(bool(driver.task.won)),
             })
             trace.info["glyphbench"] = {"task_id": row.task_id, "seed": row.seed,
                                         "forfeit_reasons": dict(forfeits),
-                                        "context_drops": prompt.context_drops}
+                                        "context_drops": traj.context_drops}
 
 
 def _reply(segment: vf.Segment) -> str:

@@ -14,7 +14,7 @@ from typing import Literal
 import verifiers.v1 as vf
 from pydantic import Field, model_validator
 
-from ...agent.harness import HarnessConfig
+from ...agent.harness import HarnessConfig, check_prompt_kind
 from ...core import list_tasks, resolve_tasks
 from ...core.seeding import TRAIN_SEEDS, heldout_seeds
 
@@ -32,19 +32,17 @@ class GlyphbenchTasksetConfig(vf.TasksetConfig):
     """Episodes per task, each on its own seed of the split (the same seeds for every model)."""
     seed_start: int = Field(0, ge=0)
     """Offset into the split's seed range."""
-    history: int = 8
-    """Past observation/reply pairs kept in each prompt (the engine's harness.history)."""
-    legend: str = "always"
-    """always, or changed: leave the legend out while the prompt already holds it."""
-    max_context_tokens: int | None = None
-    """Prompt budget in estimated tokens (chars/4); old turns leave the prompt to fit."""
+    harness: HarnessConfig = HarnessConfig()
+    """How prompts are composed (--env.taskset.harness.history, .legend, .max_context_tokens): the
+    engine's own HarnessConfig, so glyphbench-eval and vf-eval prompts are identical. The
+    context budget counts estimated tokens (chars/4): prompts go out as chat messages."""
 
     @model_validator(mode="after")
     def _check(self):
         # Fail while the config is parsed, before any model call: unknown IDs name the closest
         # ones, and harness values get the engine's own one-line errors.
         self.task_ids()
-        self.prompt_config()
+        check_prompt_kind(self.harness, tokens=False)
         self.seeds()
         return self
 
@@ -64,10 +62,6 @@ class GlyphbenchTasksetConfig(vf.TasksetConfig):
             return resolve_tasks(list(self.tasks))
         except LookupError as e:   # UnknownTaskError: pydantic reports only ValueErrors cleanly
             raise ValueError(str(e)) from None
-
-    def prompt_config(self) -> HarnessConfig:
-        return HarnessConfig(history=self.history, legend=self.legend,
-                             max_context_tokens=self.max_context_tokens)
 
 
 class GlyphbenchData(vf.TaskData):

@@ -1,6 +1,7 @@
 """The trajectory record: what one episode did, turn by turn.
 
-One schema serves the rollout engine (in memory, with token ids for training), evaluation jobs
+Every layer may import this module (it depends on nothing else in the package). One schema
+serves the rollout engine (in memory, with token ids for training), evaluation jobs
 (one JSON line per episode) and the replay viewers. ``Step.observation`` is what the model saw
 before it answered; the observation after the last step is ``Trajectory.final_observation``.
 Token ids and log-probs stay in memory only unless ``to_dict(tokens=True)`` asks for them.
@@ -55,6 +56,7 @@ class Trajectory:
     won: bool | None = None
     context_drops: int = 0
     meta: dict[str, Any] = field(default_factory=dict)   # model, backend, harness, run ids
+    group: int | None = None     # the rollout group this episode belongs to (training), if any
 
     @property
     def length(self) -> int:
@@ -89,7 +91,8 @@ class Trajectory:
             steps.append(d)
         out = {"schema": SCHEMA_VERSION, **self.summary(), "system_prompt": self.system_prompt,
                "initial_observation": self.initial_observation,
-               "final_observation": self.final_observation, "meta": self.meta, "steps": steps}
+               "final_observation": self.final_observation, "meta": self.meta, "group": self.group,
+               "steps": steps}
         return out
 
     @classmethod
@@ -109,7 +112,8 @@ class Trajectory:
                        episode_return=float(_req(d, "return", (int, float), where)),
                        terminated=bool(d.get("terminated", False)),
                        truncated=bool(d.get("truncated", False)), won=d.get("won"),
-                       context_drops=int(d.get("context_drops", 0)), meta=dict(d.get("meta") or {}))
+                       context_drops=int(d.get("context_drops", 0)), meta=dict(d.get("meta") or {}),
+                       group=_opt(d, "group", int, where))
         except TrajectoryFormatError:
             raise
         except (TypeError, ValueError, AttributeError) as e:
@@ -123,6 +127,11 @@ def _req(d: dict, key: str, kind, where: str):
     if isinstance(value, bool) or not isinstance(value, kind):
         raise TrajectoryFormatError(f"{where}: field {key!r} has the wrong type ({type(value).__name__})")
     return value
+
+
+def _opt(d: dict, key: str, kind, where: str):
+    value = d.get(key)
+    return None if value is None else _req(d, key, kind, where)
 
 
 _STEP_FIELDS = {f.name for f in fields(Step)}
