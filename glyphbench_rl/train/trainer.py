@@ -28,11 +28,11 @@ from ..core import resolve_tasks
 from ..core.seeding import generator, training_seeds
 from ..rollout.trajectory import Trajectory
 from ..rollout.engine import EpisodeSpec, RolloutEngine
-from ..rollout.hf_backend import HFBackend
 from ..agent.parse import EMPTY_TAG, UNKNOWN_NAME
 from .advantages import group_advantages
 from .config import TrainConfig
 from .display import PlainDisplay
+from .policy import HFPolicy, Policy
 from .sinks import open_sinks
 from .samples import Sample, micro_batches, trajectory_samples
 
@@ -47,7 +47,10 @@ def write_atomic(path: Path, text: str) -> None:
 
 class Trainer:
     def __init__(self, config: TrainConfig, out: str | Path, *, resume: bool = False,
-                 log: Callable[[str], None] = print, model=None, tokenizer=None) -> None:
+                 log: Callable[[str], None] = print, policy: Policy | None = None,
+                 model=None, tokenizer=None) -> None:
+        """``policy`` (default: ``config.model`` loaded as an ``HFPolicy``; ``model`` and
+        ``tokenizer`` wrap an already loaded transformers model)."""
         import torch
 
         self.cfg, self.out, self.log = config, Path(out), log
@@ -60,17 +63,18 @@ class Trainer:
         self.sinks = open_sinks(self.out, config)       # a missing sink package fails here too
         self.display = PlainDisplay(config.steps, log)
         ckpt = latest_checkpoint(self.out) if resume else None
-        if model is None:
-            from ..models import load_model
-            model, tokenizer = load_model(str(ckpt) if ckpt else config.model,
-                                          device=config.device, dtype=config.dtype)
-        elif ckpt is not None:
-            from safetensors.torch import load_file
-            model.load_state_dict(load_file(str(ckpt / "model.safetensors")), strict=False)
-        self.model, self.tokenizer = model, tokenizer
-        if config.gradient_checkpointing:
-            model.gradient_checkpointing_enable()
-        self.optimizer = torch.optim.AdamW(model.parameters(), lr=config.lr, betas=tuple(config.betas),
+        if policy is None and model is None:
+            policy = HFPolicy.load(str(ckpt) if ckpt else config.model, config.model,
+                                   device=config.device, dtype=config.dtype,
+                                   gradient_checkpointing=config.gradient_checkpointing)
+        else:
+            if policy is None:
+                policy = HFPolicy(model, tokenizer, config.model,
+                                  gradient_checkpointing=config.gradient_checkpointing)
+            if ckpt is not None:
+                policy.load_weights(ckpt)
+        self.policy = policy
+        self.optimizer = torch.optim.AdamW(policy.parameters(), lr=config.lr, betas=tuple(config.betas),
                                            weight_decay=config.weight_decay)
         self.step = 0
         if ckpt is not None:
@@ -149,13 +153,9 @@ class Trainer:
             task_id = self.tasks[k % len(self.tasks)]
             for seed in training_seeds(cfg.seed, cfg.group_size, "group", k):
                 specs.append(EpisodeSpec(task_id, seed, overrides, group=k, meta={"step": step}))
-        backend = HFBackend(self.model, tokenizer=self.tokenizer, temperature=cfg.temperature,
-                            top_p=cfg.top_p, max_new_tokens=cfg.max_new_tokens,
-                            batch_size=cfg.max_episodes_at_once,
-                            seed=int(generator(cfg.seed, "sampling", step).integers(2**62)))
-        self.model.eval()
+        backend = self._sampler(seed=int(generator(cfg.seed, "sampling", step).integers(2**62)))
         engine = RolloutEngine(backend, self.harness, max_episodes=cfg.max_episodes_at_once,
-                               meta={"model": cfg.model, "split": "train"})
+                               meta={"model": self.policy.name, "split": "train"})
         done = 0
 
         def finished(_: Trajectory) -> None:
@@ -185,29 +185,33 @@ class Trainer:
                     skipped += lost
         return samples, skipped, flat
 
+    def _sampler(self, seed: int):
+        cfg = self.cfg
+        return self.policy.sampler(seed=seed, temperature=cfg.temperature, top_p=cfg.top_p,
+                                   max_new_tokens=cfg.max_new_tokens,
+                                   batch_size=cfg.max_episodes_at_once)
+
     def update(self, samples: list[Sample]) -> dict[str, float]:
-        from .logprobs import token_logprobs
         from .losses import default_loss, ipo_loss, masked_fraction
 
-        torch, cfg = self._torch, self.cfg
+        torch, cfg, policy = self._torch, self.cfg, self.policy
         n_tokens = sum(s.trainable for s in samples)
         if n_tokens == 0:
             return {"train/loss": 0.0, "train/grad_norm": 0.0, "train/masked_fraction": 0.0}
-        device = next(self.model.parameters()).device
-        self.model.train()
+        device = policy.device
+        policy.train_mode(True)
         self.optimizer.zero_grad(set_to_none=True)
         total, dropped = 0.0, 0.0
         for batch in micro_batches(samples, cfg.micro_batch_tokens):
             width = max(len(s) for s in batch)
-            pad = self.tokenizer.pad_token_id or 0
+            pad = policy.tokenizer.pad_token_id or 0
             ids = torch.tensor([s.ids + [pad] * (width - len(s)) for s in batch], device=device)
             attn = torch.tensor([[1] * len(s) + [0] * (width - len(s)) for s in batch], device=device)
             mask = torch.tensor([s.mask + [0] * (width - len(s)) for s in batch], device=device)
             q = torch.tensor([s.sampling_logprobs + [0.0] * (width - len(s)) for s in batch],
                              device=device, dtype=torch.float32)
             adv = torch.tensor([s.advantage for s in batch], device=device, dtype=torch.float32)
-            logp = token_logprobs(self.model, ids, attn, chunk=cfg.logprob_chunk,
-                                  temperature=cfg.temperature)
+            logp = policy.token_logprobs(ids, attn, chunk=cfg.logprob_chunk, temperature=cfg.temperature)
             if cfg.loss == "ipo":
                 loss = ipo_loss(logp, q, adv, mask, threshold=cfg.threshold, kl_coef=cfg.kl_coef,
                                 num_tokens=n_tokens)
@@ -218,9 +222,9 @@ class Trainer:
             total += float(loss.detach())
             with torch.no_grad():
                 dropped += masked_fraction(logp, q, mask, threshold=cfg.threshold) * float(mask.sum())
-        norm = torch.nn.utils.clip_grad_norm_(self.model.parameters(), cfg.grad_clip)
+        norm = torch.nn.utils.clip_grad_norm_(policy.parameters(), cfg.grad_clip)
         self.optimizer.step()
-        self.model.eval()
+        policy.train_mode(False)
         return {"train/loss": total, "train/grad_norm": float(norm),
                 "train/masked_fraction": dropped / n_tokens}
 
@@ -229,9 +233,7 @@ class Trainer:
         from ..evaluate.job import EvalConfig, run_job
 
         cfg = self.cfg
-        backend = HFBackend(self.model, tokenizer=self.tokenizer, temperature=cfg.temperature,
-                            top_p=cfg.top_p, max_new_tokens=cfg.max_new_tokens,
-                            batch_size=cfg.max_episodes_at_once, seed=cfg.seed)
+        backend = self._sampler(seed=cfg.seed)
         job = EvalConfig(tasks=self.tasks, backend="hf", episodes=cfg.eval_episodes, model=cfg.model,
                          max_episodes_at_once=cfg.max_episodes_at_once, harness=dict(cfg.harness),
                          backend_options={"step": self.step})
@@ -249,8 +251,7 @@ class Trainer:
         final = ckpts / f"{CKPT_PREFIX}{self.step:06d}"
         tmp = ckpts / f".partial-{final.name}"
         shutil.rmtree(tmp, ignore_errors=True)
-        self.model.save_pretrained(tmp)
-        self.tokenizer.save_pretrained(tmp)
+        self.policy.save(tmp)
         self._torch.save(self.optimizer.state_dict(), tmp / "optimizer.pt")
         (tmp / "state.json").write_text(json.dumps({"step": self.step}))
         shutil.rmtree(final, ignore_errors=True)
