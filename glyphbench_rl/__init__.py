@@ -5,8 +5,8 @@ from importlib.util import find_spec as _find_spec
 from .core import (ActionSet, EpisodeEnded, Frame, GlyphTask, TaskSpec, UnknownTaskError,
                    get_spec, list_tasks, make, resolve_tasks)
 from . import games as _games  # noqa: F401  (registers every task)
+from ._version import __version__
 
-__version__ = "0.1.0"
 
 __all__ = ["ActionSet", "EpisodeEnded", "Frame", "GlyphTask", "TaskSpec", "UnknownTaskError",
            "get_spec", "list_tasks", "make", "resolve_tasks", "__version__"]

@@ -9,7 +9,7 @@ Same as ``glyphbench bench``; prints a table and the summary against the targets
 
 import sys
 
-from glyphbench_rl.cli import main
+from glyphbench_rl.cli.main import main
 
 if __name__ == "__main__":
     sys.exit(main(["bench", *sys.argv[1:]]))

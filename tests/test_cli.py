@@ -4,7 +4,7 @@ import sys
 
 import pytest
 
-from glyphbench_rl.cli import main
+from glyphbench_rl.cli.main import main
 
 
 def test_list_counts_per_suite(capsys):

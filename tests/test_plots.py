@@ -10,9 +10,9 @@ pytest.importorskip("matplotlib")
 yaml = pytest.importorskip("yaml")
 from PIL import Image  # noqa: E402
 
-from glyphbench_rl.cli import main  # noqa: E402
+from glyphbench_rl.cli.main import main  # noqa: E402
 from glyphbench_rl.evaluate import EvalConfig, run_job  # noqa: E402
-from glyphbench_rl.plots import (  # noqa: E402
+from glyphbench_rl.replay.plots import (  # noqa: E402
     PlotError, load_sweep, plot_comparison, plot_sweep, plot_training, read_metrics, trailing_mean)
 from glyphbench_rl.train.sweep import expand, write_conditions  # noqa: E402
 

@@ -18,7 +18,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any, Callable
 
-from .. import __version__
+from .._version import __version__
 from ..agent.harness import HarnessConfig
 from ..core.registry import get_spec
 from ..core.seeding import HELDOUT_SEEDS, heldout_seeds

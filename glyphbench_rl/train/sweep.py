@@ -1,4 +1,5 @@
-"""``glyphbench-sweep SWEEP.yaml``: expand a grid of training runs, run them, tabulate them.
+"""Sweeps (``glyphbench-sweep SWEEP.yaml``, in ``cli/sweep.py``): expand a grid of training runs,
+run them, tabulate them.
 
 A sweep file holds ``base`` (training-config keys shared by every condition), ``grid`` (keys
 mapped to lists of values; the conditions are their product), optionally ``rollout_budget``
@@ -11,7 +12,6 @@ interrupted ones; ``--slurm`` writes an array job script instead of running.
 
 from __future__ import annotations
 
-import argparse
 import itertools
 import json
 import re
@@ -20,9 +20,10 @@ import subprocess
 import sys
 import time
 from pathlib import Path
-from typing import Any, Sequence
+from typing import Any
 
 from .config import FIELDS, ConfigError, config_from_dict
+from .metrics import MetricsError, read_metrics
 
 SWEEP_KEYS = {"base", "grid", "rollout_budget", "variants"}
 
@@ -72,10 +73,9 @@ def expand(spec: dict[str, Any]) -> list[tuple[str, dict[str, Any]]]:
 def _metrics(run_dir: Path) -> list[dict[str, Any]]:
     """A condition's metric records; none when it has not run or its file cannot be read (the
     trainer's --resume drops a torn last line)."""
-    from ..plots import PlotError, read_metrics
     try:
         return read_metrics(run_dir / "metrics.jsonl")
-    except PlotError:
+    except MetricsError:
         return []
 
 
@@ -87,7 +87,7 @@ def status(run_dir: Path, steps: int) -> str:
 
 
 def _train_cmd(cfg_path: Path, run_dir: Path, resume: bool) -> list[str]:
-    cmd = [sys.executable, "-m", "glyphbench_rl.train.cli", str(cfg_path), "--out", str(run_dir)]
+    cmd = [sys.executable, "-m", "glyphbench_rl.cli.train", str(cfg_path), "--out", str(run_dir)]
     return cmd + (["--resume"] if resume else [])
 
 
@@ -119,12 +119,6 @@ def slurm_script(out: Path, rows, extra: str = "", prime_rl: list[Path] | None =
                      f"else {cmd}; fi ;;")
     lines.append("esac")
     return "\n".join(lines) + "\n"
-
-
-def write_prime_rl(out: Path, rows) -> list[Path]:
-    """Each condition as a Prime-RL config, ``runs/<name>/prime_rl.toml``."""
-    from ..integrations.prime_rl import write_toml
-    return [write_toml(config_from_dict(cfg), out / "runs" / name) for name, cfg, _ in rows]
 
 
 def run_local(out: Path, rows, parallel: int, log=print) -> int:
@@ -169,70 +163,3 @@ def table(out: Path, rows, last: int = 5) -> str:
     text = "\n".join(lines) + f"\n(final return: mean train return over each run's last {last} steps)\n"
     (out / "summary.txt").write_text(text)
     return text
-
-
-def main(argv: Sequence[str] | None = None) -> int:
-    import yaml
-
-    ap = argparse.ArgumentParser(prog="glyphbench-sweep", description=__doc__.splitlines()[0])
-    ap.add_argument("sweep", help="sweep YAML (base, grid, rollout_budget, variants)")
-    ap.add_argument("--out", help="sweep directory (default: runs/<sweep name>)")
-    ap.add_argument("--parallel", type=int, default=1, help="conditions run at once (local)")
-    ap.add_argument("--slurm", action="store_true", help="write sweep.sbatch (an array job) instead of running")
-    ap.add_argument("--sbatch-extra", default="", help="extra #SBATCH lines for --slurm")
-    ap.add_argument("--prime-rl", action="store_true",
-                    help="render each condition as runs/<name>/prime_rl.toml and write prime_rl.sh "
-                         "(with --slurm: an array job running Prime-RL's rl) instead of running")
-    ap.add_argument("--dry-run", action="store_true", help="list the conditions and stop")
-    ap.add_argument("--table", action="store_true", help="only tabulate what has run")
-    args = ap.parse_args(argv)
-    out = Path(args.out or Path("runs") / Path(args.sweep).stem)
-    try:
-        spec = yaml.safe_load(Path(args.sweep).read_text(encoding="utf-8"))
-        conditions = expand(spec)
-    except (OSError, yaml.YAMLError, ConfigError) as e:
-        print(f"glyphbench-sweep: error: {str(e).splitlines()[0]}", file=sys.stderr)
-        return 2
-    if args.dry_run:
-        for name, cfg in conditions:
-            print(f"{name}: steps {config_from_dict(cfg).steps}")
-        print(f"{len(conditions)} conditions")
-        return 0
-    rows = write_conditions(out, conditions)
-    (out / "sweep.yaml").write_text(Path(args.sweep).read_text(encoding="utf-8"), encoding="utf-8")
-    if args.prime_rl:
-        from ..integrations.prime_rl import PrimeRLConfigError
-        try:
-            tomls = write_prime_rl(out, rows)
-        except (PrimeRLConfigError, FileExistsError, ValueError) as e:
-            print(f"glyphbench-sweep: error: {str(e).splitlines()[0]}", file=sys.stderr)
-            return 2
-        (out / "logs").mkdir(parents=True, exist_ok=True)
-        if args.slurm:
-            path = out / "prime_rl.sbatch"
-            path.write_text(slurm_script(out, rows, args.sbatch_extra, prime_rl=tomls))
-            print(f"wrote {len(tomls)} Prime-RL configs and {path}; submit with: sbatch {path}")
-        else:
-            path = out / "prime_rl.sh"
-            path.write_text("#!/bin/bash\nset -e\n" + "".join(f"rl @ {shlex.quote(str(t))}\n" for t in tomls))
-            path.chmod(0o755)
-            print(f"wrote {len(tomls)} Prime-RL configs and {path} (runs them one after another)")
-        return 0
-    if args.slurm:
-        (out / "logs").mkdir(parents=True, exist_ok=True)
-        path = out / "sweep.sbatch"
-        path.write_text(slurm_script(out, rows, args.sbatch_extra))
-        print(f"wrote {path} ({len(rows)} array tasks); submit with: sbatch {path}")
-        return 0
-    failed = 0 if args.table else run_local(out, rows, max(1, args.parallel))
-    print(table(out, rows))
-    from ..plots import PlotError, plot_sweep
-    try:
-        print(f"learning curves: {plot_sweep(out, out / 'curves.png')}")
-    except PlotError as e:          # nothing has metrics yet, or no matplotlib
-        print(f"(no figure: {e})")
-    return 1 if failed else 0
-
-
-if __name__ == "__main__":
-    raise SystemExit(main())

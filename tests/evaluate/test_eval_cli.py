@@ -7,7 +7,8 @@ import time
 
 import pytest
 
-from glyphbench_rl.evaluate import cli, job, summarize
+from glyphbench_rl.cli import eval as cli
+from glyphbench_rl.evaluate import job, summarize
 from glyphbench_rl.evaluate import summary as summary_mod
 
 from eval_helpers import LIGHTS, SNAKE, TASKS, CountingPolicy, lines, records, write_records
@@ -17,7 +18,7 @@ RUN = ["--tasks", ",".join(TASKS), "--backend", "random", "--episodes", "3", "--
 
 def test_end_to_end_in_a_subprocess(tmp_path):
     out = tmp_path / "job"
-    cmd = [sys.executable, "-m", "glyphbench_rl.evaluate.cli", "--tasks", "glyphbench/classics-snake-*",
+    cmd = [sys.executable, "-m", "glyphbench_rl.cli.eval", "--tasks", "glyphbench/classics-snake-*",
            "--backend", "random", "--episodes", "2", "--out", str(out)]
     done = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
@@ -26,7 +27,7 @@ def test_end_to_end_in_a_subprocess(tmp_path):
     assert len(records(out / "episodes.jsonl")) == 6
     again = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
     assert again.returncode == 0 and "6 episodes already saved, 0 to run" in again.stderr
-    summary = subprocess.run([sys.executable, "-m", "glyphbench_rl.evaluate.cli", "summary", str(out)],
+    summary = subprocess.run([sys.executable, "-m", "glyphbench_rl.cli.eval", "summary", str(out)],
                              capture_output=True, text=True, timeout=120)
     assert summary.returncode == 0 and summary.stdout == (out / "summary.txt").read_text()
 
@@ -137,7 +138,7 @@ def test_ctrl_c_in_a_real_process(tmp_path):
     """SIGINT to a running job: exit 130, one line saying what is saved; a rerun resumes."""
     out = tmp_path / "job"
     log = out / "episodes.jsonl"
-    cmd = [sys.executable, "-m", "glyphbench_rl.evaluate.cli", "--tasks", "glyphbench/classics-maze-hard-v0",
+    cmd = [sys.executable, "-m", "glyphbench_rl.cli.eval", "--tasks", "glyphbench/classics-maze-hard-v0",
            "--backend", "random", "--episodes", "2000", "--max-episodes-at-once", "2", "--out", str(out)]
     # a shell that starts a job in the background (`... &`) leaves SIGINT ignored for it and its
     # children; give the child the disposition a terminal's Ctrl-C meets

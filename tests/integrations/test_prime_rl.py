@@ -15,7 +15,7 @@ from glyphbench_rl.core.seeding import HELDOUT_SEEDS, TRAIN_SEEDS
 from glyphbench_rl.integrations import prime_rl
 from glyphbench_rl.integrations.prime_rl import PrimeRLConfigError, render_toml
 from glyphbench_rl.integrations.prime_rl.render import dumps
-from glyphbench_rl.train.cli import main
+from glyphbench_rl.cli.train import main
 from glyphbench_rl.train.config import config_from_dict, load_config
 
 TASKS = ["glyphbench/classics-snake-easy-v0", "glyphbench/classics-maze-easy-v0"]

@@ -8,7 +8,7 @@ import re
 import pytest
 from replay_helpers import BATTLESHIP, EMPTY, FORFEIT_REPLY, INJECTION, MEMORY, SNAKE, play, write_jsonl
 
-from glyphbench_rl.cli import main
+from glyphbench_rl.cli.main import main
 from glyphbench_rl.replay.html import script_json, write_html
 from glyphbench_rl.replay.index import EpisodeIndex
 

@@ -5,7 +5,8 @@ import pytest
 yaml = pytest.importorskip("yaml")
 
 from glyphbench_rl.train.config import ConfigError  # noqa: E402
-from glyphbench_rl.train.sweep import expand, main, slurm_script, status, write_conditions  # noqa: E402
+from glyphbench_rl.cli.sweep import main  # noqa: E402
+from glyphbench_rl.train.sweep import expand, slurm_script, status, write_conditions  # noqa: E402
 
 
 def test_snake_sweep_expands_to_the_papers_conditions():
@@ -37,7 +38,7 @@ def test_slurm_script_and_dry_run(tmp_path, capsys):
     rows = write_conditions(tmp_path, expand({"grid": {"lr": [1e-6, 2e-6]}}))
     text = slurm_script(tmp_path, rows, "#SBATCH --gres=gpu:1")
     assert "#SBATCH --array=0-1" in text and "#SBATCH --gres=gpu:1" in text
-    assert text.count("glyphbench_rl.train.cli") == 4 and "--resume" in text
+    assert text.count("glyphbench_rl.cli.train") == 4 and "--resume" in text
     sweep = tmp_path / "s.yaml"
     sweep.write_text("grid: {lr: [1.0e-6, 2.0e-6]}\n")
     assert main([str(sweep), "--dry-run"]) == 0

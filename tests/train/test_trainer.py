@@ -7,7 +7,7 @@ import pytest
 torch = pytest.importorskip("torch")
 
 from glyphbench_rl.rollout.trajectory import Step, Trajectory  # noqa: E402
-from glyphbench_rl.train.cli import main as train_main  # noqa: E402
+from glyphbench_rl.cli.train import main as train_main  # noqa: E402
 from glyphbench_rl.train.config import TrainConfig  # noqa: E402
 from glyphbench_rl.train.samples import micro_batches, trajectory_samples  # noqa: E402
 from glyphbench_rl.train.trainer import Trainer, latest_checkpoint  # noqa: E402

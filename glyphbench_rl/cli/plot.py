@@ -18,19 +18,19 @@ def _warn(message: str) -> None:
 
 
 def cmd_training(args) -> int:
-    from .plots import plot_training
+    from ..replay.plots import plot_training
     print(f"wrote {plot_training(args.run_dirs, args.out, window=args.window, log=_warn)}")
     return 0
 
 
 def cmd_compare(args) -> int:
-    from .plots import plot_comparison
+    from ..replay.plots import plot_comparison
     print(f"wrote {plot_comparison(args.job_a, args.job_b, args.out, log=_warn)}")
     return 0
 
 
 def cmd_sweep(args) -> int:
-    from .plots import plot_sweep
+    from ..replay.plots import plot_sweep
     path = plot_sweep(args.sweep_dir, args.out, window_rollouts=args.window_rollouts,
                       select=args.select, log=_warn)
     print(f"wrote {path}")

@@ -11,9 +11,9 @@ from collections import Counter
 from pathlib import Path
 from typing import Sequence
 
-from .core import list_tasks, make, resolve_tasks, seeding
-from .core.registry import SUITES, UnknownTaskError, get_spec
-from .replay.cli import register as _register_replay
+from ..core import list_tasks, make, resolve_tasks, seeding
+from ..core.registry import SUITES, UnknownTaskError, get_spec
+from .replay import register as _register_replay
 
 CATALOG = Path(__file__).resolve().parents[1] / "tasks" / "catalog.tsv"
 
@@ -117,7 +117,7 @@ def cmd_random(args) -> int:
 
 
 def cmd_bench(args) -> int:
-    from . import bench
+    from ..evaluate import bench
     task_ids = resolve_tasks(args.tasks) if args.tasks else list_tasks()
     counter = bench.load_token_counter(args.tokenizer) if args.tokenizer else None
     results = []
@@ -171,7 +171,7 @@ def build_parser() -> argparse.ArgumentParser:
     s.set_defaults(func=cmd_bench)
 
     _register_replay(sub)
-    from .plot_cli import register as register_plot
+    from .plot import register as register_plot
     register_plot(sub)
     return p
 

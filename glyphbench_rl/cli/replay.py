@@ -13,9 +13,9 @@ import argparse
 import sys
 from pathlib import Path
 
-from .html import MAX_EPISODES, write_html
-from .index import EpisodeIndex
-from .terminal import replay_terminal
+from ..replay.html import MAX_EPISODES, write_html
+from ..replay.index import EpisodeIndex
+from ..replay.terminal import replay_terminal
 
 WARNINGS_SHOWN = 10
 
@@ -83,7 +83,7 @@ def _replay(args: argparse.Namespace) -> int:
         more = f" (the first {shown} of {len(selection)} selected)" if shown < len(selection) else ""
         print(f"wrote {args.html}: {shown} episode(s){more} from {index.path}")
     if args.gif:
-        from .image import write_gif
+        from ..replay.image import write_gif
         write_gif(index.load(selection[0]), args.gif, fps=args.fps)
         entry = index.entries[selection[0]]
         print(f"wrote {args.gif}: episode {selection[0]} ({entry.task_id}, seed {entry.seed})")

@@ -19,9 +19,9 @@ from typing import Any, Sequence
 from ..core.registry import UnknownTaskError
 from ..core.tasklist import resolve_tasks
 from ..rollout.factory import BACKENDS
-from . import job as job_mod
-from .compare import compare_records, format_comparison
-from .store import EpisodeLogError, scan
+from ..evaluate import job as job_mod
+from ..evaluate.compare import compare_records, format_comparison
+from ..evaluate.store import EpisodeLogError, scan
 
 PROG = "glyphbench-eval"
 EXIT_USAGE, EXIT_BACKEND, EXIT_INTERRUPTED = 2, 1, 130

@@ -12,7 +12,7 @@ import time
 from dataclasses import asdict, dataclass
 from typing import Callable, Sequence
 
-from .core import make, seeding
+from ..core import make, seeding
 
 MEDIAN_TARGET_US = 25.0
 MAX_TARGET_US = 250.0
@@ -122,7 +122,7 @@ def load_token_counter(name: str) -> Callable[[str], int]:
         return lambda text: len(tok.encode(text, add_special_tokens=False).ids)
     from transformers import AutoTokenizer
     if name.lower() in ("smollm2", "default"):
-        from .models import smollm2_location
+        from ..models import smollm2_location
         folder, gguf = smollm2_location()
         tok = AutoTokenizer.from_pretrained(folder, gguf_file=gguf)
     else:

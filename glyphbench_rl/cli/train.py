@@ -14,8 +14,8 @@ from pathlib import Path
 from typing import Sequence
 
 from ..core.registry import UnknownTaskError
-from .config import ConfigError, load_config
-from .sinks import SinkError
+from ..train.config import ConfigError, load_config
+from ..train.sinks import SinkError
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -36,7 +36,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             from ..integrations.prime_rl import write_toml
             toml_path = write_toml(cfg, out, resume=args.resume)
         else:
-            from .trainer import Trainer
+            from ..train.trainer import Trainer
             trainer = Trainer(cfg, out, resume=args.resume)
     except (ConfigError, UnknownTaskError, FileExistsError, FileNotFoundError, ValueError, SinkError) as e:
         print(f"glyphbench-train: error: {str(e).splitlines()[0]}", file=sys.stderr)
@@ -44,7 +44,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     if args.backend == "prime-rl":
         from ..integrations.prime_rl import launch
         return launch(toml_path)
-    from .display import make_display
+    from ..train.display import make_display
     t0 = time.perf_counter()
     try:
         with make_display(cfg.steps, start=trainer.step, title=f"glyphbench-train {out}") as display:

@@ -25,9 +25,10 @@ import os
 from pathlib import Path
 from typing import Any, Callable, Iterable, Sequence
 
-from .evaluate.compare import compare_records
-from .evaluate.job import EPISODES, EvalError, read_config
-from .evaluate.store import scan
+from ..evaluate.compare import compare_records
+from ..train import metrics as metrics_file
+from ..evaluate.job import EPISODES, EvalError, read_config
+from ..evaluate.store import scan
 
 Log = Callable[[str], None] | None
 FORMATS = (".png", ".pdf", ".svg")
@@ -41,37 +42,12 @@ class PlotError(ValueError):
 
 # -- reading -------------------------------------------------------------------------------------
 def read_metrics(path: str | os.PathLike, log: Log = None) -> list[dict[str, Any]]:
-    """The records of a ``metrics.jsonl``: each a JSON object with an int ``step`` and a number
-    ``train/return_mean``."""
-    path = Path(path)
-    if not path.is_file():
-        raise PlotError(f"{path} does not exist (not a training run directory?)")
-    with open(path, "rb") as fh:
-        lines = fh.read().split(b"\n")
-    out = []
-    for n, raw in enumerate(lines, 1):
-        if not raw.strip():
-            continue
-        last = n == len(lines)              # no newline after it: possibly a write cut short
-        try:
-            rec = json.loads(raw)
-        except ValueError as e:
-            if last:
-                if log:
-                    log(f"{path}:{n}: cut-short last line left out (a run still writing?)")
-                continue
-            raise PlotError(f"{path}:{n}: not valid JSON ({str(e).splitlines()[0]})") from None
-        if not isinstance(rec, dict):
-            raise PlotError(f"{path}:{n}: expected a JSON object, got {type(rec).__name__}")
-        step, ret = rec.get("step"), rec.get("train/return_mean")
-        if isinstance(step, bool) or not isinstance(step, int):
-            raise PlotError(f"{path}:{n}: 'step' is missing or not an integer")
-        if isinstance(ret, bool) or not isinstance(ret, (int, float)):
-            raise PlotError(f"{path}:{n}: 'train/return_mean' is missing or not a number")
-        out.append(rec)
-    if not out:
-        raise PlotError(f"{path} holds no metrics yet")
-    return out
+    """The records of a run's ``metrics.jsonl`` (``train.metrics.read_metrics``), errors as
+    PlotError."""
+    try:
+        return metrics_file.read_metrics(path, log)
+    except metrics_file.MetricsError as e:
+        raise PlotError(str(e)) from None
 
 
 def trailing_mean(xs: Sequence[float], ys: Sequence[float], window: float) -> list[float]:
@@ -307,8 +283,8 @@ def load_sweep(sweep_dir: str | os.PathLike, select: str | None = None
         import yaml
     except ImportError:
         raise PlotError("reading a sweep needs pyyaml: pip install pyyaml") from None
-    from .train.config import ConfigError, config_from_dict
-    from .train.sweep import expand
+    from ..train.config import ConfigError, config_from_dict
+    from ..train.sweep import expand
 
     root = Path(sweep_dir)
     if not root.is_dir():
