@@ -23,11 +23,25 @@ positions already rotated into the cached keys.
 
 from __future__ import annotations
 
+import dataclasses
+import functools
 import warnings
 from dataclasses import dataclass
 from typing import Any, Hashable, Iterable, Sequence
 
 from .backend import GenRequest, Generation
+
+
+@functools.cache
+def _cache_arg() -> str:
+    """What ``generate`` calls a KV cache, in its argument and its output: ``cache`` in
+    transformers 5 (``past_key_values`` is deprecated there), ``past_key_values`` before."""
+    try:
+        from transformers.generation.utils import GenerateDecoderOnlyOutput
+    except ImportError:
+        return "past_key_values"
+    names = {f.name for f in dataclasses.fields(GenerateDecoderOnlyOutput)}
+    return "cache" if "cache" in names else "past_key_values"
 
 
 @dataclass
@@ -212,7 +226,7 @@ class HFBackend:
             if sample else dict(do_sample=False)
         if past:
             # generate() sees a cache of `past` positions and feeds only input_ids[:, past:]
-            kw["past_key_values"] = build_batch_cache(rows, past)
+            kw[_cache_arg()] = build_batch_cache(rows, past)
         # generate() draws from torch's global generator: seed it from ours, per call, so a run
         # is reproducible without disturbing anything else's random state for long
         seed = int(torch.randint(0, 2**62, (1,), generator=self._gen))
@@ -239,7 +253,7 @@ class HFBackend:
                 logprobs=[float(x) for x in logp[row, :n]], finish_reason=finish,
                 prompt_tokens=len(p), completion_tokens=n))
         if self.prefix_cache is not None:
-            self._keep_prefixes(requests, sampled_ids, mask, width, res.past_key_values)
+            self._keep_prefixes(requests, sampled_ids, mask, width, getattr(res, _cache_arg()))
         return gens
 
     def _keep_prefixes(self, requests: list[GenRequest], sampled_ids: list[list[int]], mask: Any,

@@ -154,3 +154,13 @@ def test_models_without_a_full_kv_cache_fall_back(tiny_model_dir):
 def test_bad_budget_is_a_clear_error(tiny):
     with pytest.raises(ValueError, match="prefix_cache_max_tokens >= 0"):
         _backend(tiny, prefix_cache_max_tokens=-1)
+
+
+def test_cached_turns_use_no_deprecated_transformers_argument(tiny):
+    """The cache goes to generate() under the name this transformers uses (no FutureWarning)."""
+    import warnings
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        _play(_backend(tiny), history=8, episodes=2, at_once=2)
+    assert not [w for w in caught if issubclass(w.category, (FutureWarning, DeprecationWarning))
+                and "deprecated" in str(w.message)], [str(w.message) for w in caught]
