@@ -7,11 +7,14 @@ import pytest
 from glyphbench_rl.cli.main import main
 
 
-def test_list_counts_per_suite(capsys):
+def test_list_prints_ids_only_and_counts_on_request(capsys):
     assert main(["list", "--suite", "classics"]) == 0
     out, err = capsys.readouterr()
-    assert "glyphbench/classics-snake-easy-v0" in out
-    assert "Classics" in err and "total" in err
+    assert "glyphbench/classics-snake-easy-v0" in out and "total" not in out
+    assert err == ""
+    assert main(["list", "--counts"]) == 0
+    out, err = capsys.readouterr()
+    assert "Classics" in out and "total" in out and "glyphbench/" not in out and err == ""
 
 
 def test_show_prints_prompt_and_observation(capsys):
@@ -49,6 +52,17 @@ def test_play_in_a_terminal_session():
     assert out.returncode == 0, out.stderr
     assert "unknown action 'sideways'; valid actions: UP, DOWN, LEFT, RIGHT" in out.stdout
     assert "Step 2/512" in out.stdout
+
+
+def test_play_takes_arrow_keys():
+    """Arrow keys (as a terminal sends them) play the direction actions, MiniGrid's too."""
+    script = "\x1b[D\n\x1bOC\nquit\n"
+    out = subprocess.run([sys.executable, "-m", "glyphbench_rl.cli", "play", "glyphbench/classics-2048-v0"],
+                         input=script, capture_output=True, text=True, timeout=60)
+    assert out.returncode == 0 and "unknown action" not in out.stdout and "Step 2/512" in out.stdout
+    out = subprocess.run([sys.executable, "-m", "glyphbench_rl.cli", "play", "glyphbench/minigrid-empty-5x5-v0"],
+                         input="\x1b[A\n\x1b[D\nquit\n", capture_output=True, text=True, timeout=60)
+    assert out.returncode == 0 and "unknown action" not in out.stdout and "Step 2/" in out.stdout
 
 
 def test_bad_counts_are_refused(capsys):

@@ -31,8 +31,8 @@ def cmd_list(args) -> int:
     if not args.counts:
         for task_id in ids:
             print(task_id)
-    # counts go to stderr beside the IDs so that stdout stays a clean task list
-    out = sys.stdout if args.counts else sys.stderr
+        return 0
+    out = sys.stdout
     planned = _catalog_counts()
     have = Counter(get_spec(t).suite for t in ids)
     print(f"{'suite':<12} {'tasks':>5}" + (f" {'of':>4}" if planned else ""), file=out)
@@ -54,12 +54,20 @@ def cmd_show(args) -> int:
     return 0
 
 
+# what a terminal sends for the arrow keys (normal and application cursor mode), and the
+# actions an arrow stands for, first match wins (MiniGrid moves forward and turns)
+ARROW_KEYS = {"\x1b[A": "UP", "\x1bOA": "UP", "\x1b[B": "DOWN", "\x1bOB": "DOWN",
+              "\x1b[C": "RIGHT", "\x1bOC": "RIGHT", "\x1b[D": "LEFT", "\x1bOD": "LEFT"}
+ARROW_ACTIONS = {"UP": ("UP", "FORWARD"), "DOWN": ("DOWN",), "RIGHT": ("RIGHT", "TURN_RIGHT"),
+                 "LEFT": ("LEFT", "TURN_LEFT")}
+
+
 def cmd_play(args) -> int:
     task = make(args.task)
     obs, _ = task.reset(seed=args.seed)
     print(task.system_prompt(), end="\n\n")
     print(obs)
-    print("(type an action name; 'help' lists them, 'quit' stops)")
+    print("(type an action name or press an arrow key, then Enter; 'help' lists them, 'quit' stops)")
     while not task.done:
         try:
             line = input("action> ").strip()
@@ -73,7 +81,10 @@ def cmd_play(args) -> int:
         if line.lower() in ("help", "?"):
             print("\n".join(task.actions.prompt_lines()))
             continue
-        index = task.actions.lookup(line)
+        index = task.actions.lookup(ARROW_KEYS.get(line, line))
+        if index is None and line in ARROW_KEYS:
+            index = next((i for name in ARROW_ACTIONS[ARROW_KEYS[line]]
+                          if (i := task.actions.lookup(name)) is not None), None)
         if index is None:
             print(f"unknown action {line!r}; valid actions: {', '.join(task.actions.names)}")
             continue
