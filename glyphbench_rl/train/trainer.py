@@ -81,8 +81,11 @@ class Trainer:
             state = json.loads((ckpt / "state.json").read_text())
             self.step = state["step"]
             self.optimizer.load_state_dict(torch.load(ckpt / "optimizer.pt", weights_only=True))
-            self._truncate_metrics(self.step)
             log(f"resumed {self.out} from {ckpt.name} (step {self.step})")
+        elif resume:
+            log(f"{self.out} has no checkpoint yet: starting over from step 0")
+        if resume:
+            self._discard_after(self.step)
         write_atomic(self.out / "config.yaml", _yaml(config.to_dict()))
         self._torch = torch
 
@@ -260,13 +263,19 @@ class Trainer:
             shutil.rmtree(old, ignore_errors=True)
         return final
 
-    def _truncate_metrics(self, step: int) -> None:
-        """Drop metric lines of steps after the checkpoint (they are about to be redone)."""
+    def _discard_after(self, step: int) -> None:
+        """Drop what a stopped run wrote for the steps after ``step`` (they are about to be
+        redone, with the weights of that checkpoint): metric lines, rollouts and held-out
+        evaluation jobs, so each step's records exist once."""
         path = self.out / "metrics.jsonl"
         if path.exists():
             keep = [line for line in path.read_text(encoding="utf-8").splitlines()
                     if line.strip() and _line_step(line) <= step]
             write_atomic(path, "".join(line + "\n" for line in keep))
+        for old in [*(self.out / "rollouts").glob(f"{CKPT_PREFIX}*.jsonl"),
+                    *(self.out / "eval").glob(f"{CKPT_PREFIX}*")]:
+            if _name_step(old) > step:
+                shutil.rmtree(old) if old.is_dir() else old.unlink()
 
     def _save_rollouts(self, step: int, trajs: list[Trajectory]) -> None:
         d = self.out / "rollouts"
@@ -286,6 +295,13 @@ def format_score(traj: Trajectory) -> float:
 def latest_checkpoint(out: Path) -> Path | None:
     found = sorted((out / "checkpoints").glob(f"{CKPT_PREFIX}*")) if (out / "checkpoints").exists() else []
     return found[-1] if found else None
+
+
+def _name_step(path: Path) -> int:
+    try:
+        return int(path.name.removeprefix(CKPT_PREFIX).split(".")[0])
+    except ValueError:
+        return -1               # not one of ours: left alone
 
 
 def _line_step(line: str) -> int:

@@ -91,6 +91,26 @@ def test_resume_continues_and_matches_an_uninterrupted_run(tiny_model_dir, tmp_p
     assert not list((tmp_path / "b" / "checkpoints").glob(".partial-*"))
 
 
+def test_resume_before_the_first_checkpoint_redoes_the_step_once(tiny_model_dir, tmp_path):
+    """A run stopped after step 1's metrics, rollouts and evaluation but before any checkpoint:
+    --resume starts over, and each step's records exist once."""
+    model, tok = _model(tiny_model_dir)
+    cfg = _cfg(steps=1, eval_every=1, eval_episodes=1)
+    Trainer(cfg, tmp_path / "r", model=model, tokenizer=tok, log=lambda m: None).run()
+    import shutil
+    shutil.rmtree(tmp_path / "r" / "checkpoints")            # killed before the checkpoint
+    m2, _ = _model(tiny_model_dir)
+    tr = Trainer(cfg, tmp_path / "r", model=m2, tokenizer=tok, resume=True, log=lambda m: None)
+    assert tr.step == 0
+    assert (tmp_path / "r" / "metrics.jsonl").read_text() == ""
+    assert not (tmp_path / "r" / "eval" / "step_000001").exists()
+    tr.run()
+    steps = [json.loads(x)["step"] for x in (tmp_path / "r" / "metrics.jsonl").read_text().splitlines()]
+    assert steps == [1]
+    records = (tmp_path / "r" / "eval" / "step_000001" / "episodes.jsonl").read_text().splitlines()
+    assert len(records) == 1
+
+
 def test_existing_run_needs_resume(tiny_model_dir, tmp_path):
     model, tok = _model(tiny_model_dir)
     Trainer(_cfg(steps=1), tmp_path / "r", model=model, tokenizer=tok, log=lambda m: None).run()
