@@ -14,6 +14,7 @@ is the only place they are decided: each viewer only maps a (class, tint) to its
 
 from __future__ import annotations
 
+import json
 import re
 from dataclasses import dataclass
 from typing import Any, Mapping
@@ -222,8 +223,8 @@ class EpisodeView:
     @classmethod
     def from_trajectory(cls, traj: Trajectory, *, index: int = 0, source: str = "",
                         suite: str = "unknown") -> "EpisodeView":
-        texts = [s.observation for s in traj.steps] or [traj.initial_observation]
-        texts.append(traj.final_observation)
+        texts = [shown(s.observation) for s in traj.steps] or [shown(traj.initial_observation)]
+        texts.append(shown(traj.final_observation))
         frames: list[FrameView] = []
         known: dict[str, LegendEntry] = {}
         for text in texts:
@@ -242,10 +243,11 @@ class EpisodeView:
                 change = "unchanged"
             else:
                 change = None
-            turns.append(TurnView(s.turn, s.reply, s.action, s.forfeit_reason, s.reward, total, s.memory,
-                                  change, s.finish_reason))
-        return cls(index, source, traj.task_id, suite, traj.seed, model_name(traj.meta), traj.meta,
-                   traj.system_prompt, traj.episode_return, traj.won, traj.terminated, traj.truncated,
+            turns.append(TurnView(s.turn, shown(s.reply), shown(s.action), s.forfeit_reason, s.reward,
+                                  total, shown(s.memory), change, s.finish_reason))
+        meta = json.loads(shown(json.dumps(traj.meta, ensure_ascii=False)))
+        return cls(index, source, traj.task_id, suite, traj.seed, model_name(meta), meta,
+                   shown(traj.system_prompt), traj.episode_return, traj.won, traj.terminated, traj.truncated,
                    traj.forfeits, tuple(frames), tuple(turns))
 
     @property
@@ -261,6 +263,15 @@ class EpisodeView:
         if self.won is False:
             return "lost"
         return "ended" if self.terminated else "unfinished"
+
+
+_SURROGATE = re.compile("[\ud800-\udfff]")
+
+
+def shown(text: str | None) -> str | None:
+    """Text as a viewer can write it: a lone surrogate (a broken pair some endpoints send, which
+    the episode writer stores escaped) becomes U+FFFD; everything else is unchanged."""
+    return _SURROGATE.sub("\ufffd", text) if text else text
 
 
 def model_name(meta: dict[str, Any]) -> str:

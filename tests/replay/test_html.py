@@ -143,3 +143,23 @@ def test_cli_writes_a_gif_of_the_first_selected_episode(tmp_path, episodes_file,
     assert main(["replay", str(episodes_file), "--task", "*battleship*", "--gif", str(out), "--fps", "8"]) == 0
     assert "episode 4 (glyphbench/classics-battleship-v0, seed 1)" in capsys.readouterr().out
     assert out.read_bytes()[:6] == b"GIF89a"
+
+
+def test_lone_surrogates_written_by_the_episode_writer_are_shown(tmp_path, capsys):
+    """A reply holding a lone surrogate (some endpoints send them) is stored by the episode
+    writer; every viewer reads it back and shows it, as U+FFFD."""
+    from glyphbench_rl.evaluate.store import EpisodeWriter
+    traj = play(seeds=(1,))[0]
+    traj.steps[0].reply = "half a pair \ud800 here <action>UP</action>"
+    traj.system_prompt += " \udfff"
+    path = tmp_path / "episodes.jsonl"
+    with EpisodeWriter(path) as writer:
+        writer.append(traj)
+    out = tmp_path / "page.html"
+    assert main(["replay", str(path), "--html", str(out)]) == 0
+    [episode] = page_data(out.read_text(encoding="utf-8"))["episodes"]
+    assert "half a pair \ufffd here" in episode["turns"][0]["reply"]
+    capsys.readouterr()
+    assert main(["replay", str(path)]) == 0
+    assert "half a pair \ufffd here" in capsys.readouterr().out
+    assert main(["replay", str(path), "--gif", str(tmp_path / "e.gif")]) == 0
