@@ -80,7 +80,9 @@ class RandomBackend:
 @dataclass
 class ScriptedBackend:
     """Replies from a callable ``policy(request) -> str | int``: a reply text, or an action
-    index (wrapped in the action format). Useful for tests, heuristics and replaying logs."""
+    index (wrapped in the action format). Useful for tests, heuristics and replaying logs.
+    An index outside ``0..len(actions)-1`` (negative ones too) is written as it is, so it is a
+    forfeit turn (``unknown_name``) like any other reply naming no action."""
 
     policy: Callable[[GenRequest], str | int]
     name: str = "scripted"
@@ -91,7 +93,9 @@ class ScriptedBackend:
         for r in requests:
             reply = self.policy(r)
             if isinstance(reply, (int, np.integer)) and not isinstance(reply, bool):
-                reply = f"<action>{r.actions[int(reply)].name}</action>"
+                index = int(reply)
+                name = r.actions[index].name if 0 <= index < len(r.actions) else str(index)
+                reply = f"<action>{name}</action>"
             elif not isinstance(reply, str):
                 raise BackendError(f"scripted policy returned {type(reply).__name__}; expected str or int")
             out.append(Generation(reply))

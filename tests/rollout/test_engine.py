@@ -64,6 +64,15 @@ def test_scripted_indices_and_tags():
     assert t.meta["backend"] == "scripted" and t.meta["harness"]["history"] == 8
 
 
+@pytest.mark.parametrize("index", [99, -1, 4])
+def test_out_of_range_indices_are_forfeits(index):
+    """A policy's index outside the action list is an invalid action, not a crash or a wrap-around."""
+    t = RolloutEngine(ScriptedBackend(lambda r: index)).run(
+        [EpisodeSpec("glyphbench/classics-snake-easy-v0", 5, overrides={"max_turns": 3})])[0]
+    assert t.length == 3 and t.forfeits == 3
+    assert {s.forfeit_reason for s in t.steps} == {"unknown_name"}
+
+
 def test_unknown_task_fails_before_any_call():
     b = CountingBackend()
     with pytest.raises(UnknownTaskError, match="closest"):
