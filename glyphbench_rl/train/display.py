@@ -3,7 +3,9 @@
 On a terminal: a live rich panel with a progress bar over steps (elapsed, time left), the phase
 in progress (rollouts with episodes finished so far, the update, a held-out evaluation), and a
 table of the last step's numbers next to the first step's, so a trend is visible at a glance.
-Anywhere else (a log file, a Slurm job, a pipe): one plain line per step, nothing redrawn.
+Anywhere else (a log file, a Slurm job, a pipe): plain lines, nothing redrawn, each flushed at
+once: a line when a phase starts (rollouts, update, evaluation, checkpoint), progress within a
+phase at most every ``every`` seconds, and one summary line per step.
 """
 
 from __future__ import annotations
@@ -34,11 +36,21 @@ def progress_line(m: dict[str, Any], steps: int) -> str:
     return line
 
 
-class PlainDisplay:
-    """One line per step through ``log``; phases are not shown."""
+def log_line(text: str) -> None:
+    """Print and flush: a log file shows the line now, not when a buffer fills."""
+    print(text, flush=True)
 
-    def __init__(self, steps: int, log: Callable[[str], None] = print) -> None:
-        self.steps, self.log = steps, log
+
+class PlainDisplay:
+    """Lines through ``log``: phases as they start, progress within one at most every ``every``
+    seconds, a summary per step."""
+
+    def __init__(self, steps: int, log: Callable[[str], None] = log_line, *, start: int = 0,
+                 every: float = 30.0, clock: Callable[[], float] = time.monotonic) -> None:
+        self.steps, self.log, self.every, self.clock = steps, log, every, clock
+        self.current = start + 1            # the step in progress
+        self._phase: str | None = None
+        self._since = self._printed = clock()
 
     def __enter__(self) -> "PlainDisplay":
         return self
@@ -47,9 +59,20 @@ class PlainDisplay:
         pass
 
     def phase(self, text: str, done: int | None = None, total: int | None = None) -> None:
-        pass
+        now = self.clock()
+        name = text.split(" (", 1)[0]
+        if name != self._phase:
+            self._phase, self._since = name, now
+        elif now - self._printed < self.every and (total is None or done != total):
+            return
+        count = f" {done}/{total}" if total is not None else ""
+        took = f" ({now - self._since:.0f}s)" if now > self._since else ""
+        self.log(f"step {self.current}/{self.steps}: {text}{count}{took}")
+        self._printed = now
 
     def step_done(self, metrics: dict[str, Any]) -> None:
+        self.current = metrics["step"] + 1
+        self._phase = None
         self.log(progress_line(metrics, self.steps))
 
     def message(self, text: str) -> None:
@@ -126,7 +149,7 @@ class RichDisplay:
         return Panel(Group(*parts), title=self.title or "glyphbench-train", expand=False)
 
 
-def make_display(steps: int, *, start: int = 0, title: str = "", log: Callable[[str], None] = print,
+def make_display(steps: int, *, start: int = 0, title: str = "", log: Callable[[str], None] = log_line,
                  rich: bool | None = None):
     """A RichDisplay on an interactive terminal (or when ``rich`` is True), else a PlainDisplay."""
     if rich is None:
@@ -136,4 +159,4 @@ def make_display(steps: int, *, start: int = 0, title: str = "", log: Callable[[
             return RichDisplay(steps, start=start, title=title)
         except ImportError:
             pass
-    return PlainDisplay(steps, log)
+    return PlainDisplay(steps, log, start=start)

@@ -31,7 +31,7 @@ from ..rollout.engine import EpisodeSpec, RolloutEngine
 from ..agent.parse import EMPTY_TAG, UNKNOWN_NAME
 from .advantages import group_advantages
 from .config import TrainConfig
-from .display import PlainDisplay
+from .display import PlainDisplay, log_line
 from .policy import HFPolicy, Policy
 from .sinks import open_sinks
 from .samples import Sample, micro_batches, trajectory_samples
@@ -47,7 +47,7 @@ def write_atomic(path: Path, text: str) -> None:
 
 class Trainer:
     def __init__(self, config: TrainConfig, out: str | Path, *, resume: bool = False,
-                 log: Callable[[str], None] = print, policy: Policy | None = None,
+                 log: Callable[[str], None] = log_line, policy: Policy | None = None,
                  model=None, tokenizer=None) -> None:
         """``policy`` (default: ``config.model`` loaded as an ``HFPolicy``; ``model`` and
         ``tokenizer`` wrap an already loaded transformers model)."""
@@ -64,6 +64,7 @@ class Trainer:
         self.display = PlainDisplay(config.steps, log)
         ckpt = latest_checkpoint(self.out) if resume else None
         if policy is None and model is None:
+            log(f"loading {ckpt or config.model}")
             policy = HFPolicy.load(str(ckpt) if ckpt else config.model, config.model,
                                    device=config.device, dtype=config.dtype,
                                    gradient_checkpointing=config.gradient_checkpointing)
@@ -92,7 +93,7 @@ class Trainer:
     # -- the loop ---------------------------------------------------------------------------------
     def run(self, display=None) -> None:
         """Train until ``cfg.steps``; ``display`` (train.display) shows progress, default plain lines."""
-        self.display = display or self.display
+        self.display = display or PlainDisplay(self.cfg.steps, self.log, start=self.step)
         try:
             while self.step < self.cfg.steps:
                 metrics = self.train_step()

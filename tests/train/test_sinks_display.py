@@ -75,12 +75,24 @@ def test_missing_sink_packages_are_one_line_errors(tmp_path, monkeypatch):
         TrainConfig(tensorboard="yes")
 
 
-def test_plain_display_prints_one_line_per_step():
-    lines = []
-    d = PlainDisplay(10, lines.append)
-    d.phase("rollouts", 1, 8)
+def test_plain_display_logs_phases_progress_and_one_line_per_step():
+    """A log file shows what the run is doing between step lines, without a line per episode."""
+    lines, now = [], [0.0]
+    d = PlainDisplay(10, lines.append, start=2, every=30, clock=lambda: now[0])
+    d.phase("rollouts", 0, 8)
+    for done in range(1, 8):             # quick episodes: no line each
+        now[0] += 1
+        d.phase("rollouts", done, 8)
+    now[0] += 40
+    d.phase("rollouts", 7, 8)            # 30 s since the last line: progress
+    d.phase("rollouts", 8, 8)            # the phase's end
+    d.phase("update (1,234 trainable tokens)")
     d.step_done(METRICS)
-    assert lines == [progress_line(METRICS, 10)] and lines[0].startswith("step 3/10  return +0.250")
+    assert lines[:4] == ["step 3/10: rollouts 0/8", "step 3/10: rollouts 7/8 (47s)",
+                         "step 3/10: rollouts 8/8 (47s)", "step 3/10: update (1,234 trainable tokens)"]
+    assert lines[4] == progress_line(METRICS, 10) and lines[4].startswith("step 3/10  return +0.250")
+    d.phase("rollouts", 0, 8)
+    assert lines[5] == "step 4/10: rollouts 0/8"
 
 
 def test_rich_display_shows_progress_phase_and_first_vs_last(tmp_path):

@@ -135,7 +135,8 @@ def test_cli_runs_a_tiny_model(tiny_model_dir, tmp_path, capsys):
     assert train_main([str(cfg), "--out", str(tmp_path / "o")]) == 0
     m = json.loads((tmp_path / "o" / "metrics.jsonl").read_text())
     assert "eval/return_mean" in m and (tmp_path / "o" / "eval" / "step_000001" / "summary.json").exists()
-    assert "step 1/1" in capsys.readouterr().out
+    out = capsys.readouterr().out
+    assert "step 1/1" in out and "step 1/1: rollouts 0/2" in out and "step 1/1: update" in out
 
 
 def _traj(reasons, ret=0.0, group=0):
