@@ -181,3 +181,20 @@ def test_sweep_errors(sweep_dir, tmp_path):
     (out / "sweep.yaml").write_text("grid: {lrr: [1]}\n")
     with pytest.raises(PlotError, match="sweep.yaml: unknown config key 'lrr'"):
         load_sweep(out)
+
+
+def test_training_figure_ticks_whole_steps(tmp_path, monkeypatch):
+    """A short run (4 steps) gets ticks at whole steps only, never at step 2.5."""
+    from glyphbench_rl.replay import plots
+    run = tmp_path / "short"
+    run.mkdir()
+    (run / "metrics.jsonl").write_text("".join(
+        json.dumps({"step": s, "train/return_mean": 0.1 * s, "train/forfeit_rate": 0.5}) + "\n"
+        for s in range(1, 5)))
+    figures = []
+    monkeypatch.setattr(plots, "_save", lambda fig, out: figures.append(fig) or out)
+    plot_training([run], tmp_path / "t.png")
+    [fig] = figures
+    fig.canvas.draw()
+    ticks = [t for ax in fig.axes for t in ax.get_xticks() if 1 <= t <= 4]
+    assert ticks and all(float(t).is_integer() for t in ticks), ticks

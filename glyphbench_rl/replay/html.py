@@ -367,7 +367,7 @@ _JS = r"""
     const byWidth = room / Math.max(1, wide) / 0.61;
     const byHeight = (window.innerHeight * 0.62) / Math.max(1, rows.length + 1) / 1.08;
     const size = Math.floor(Math.min(byWidth, byHeight));
-    grid.style.fontSize = Math.max(10, Math.min(34, size)) + "px";
+    grid.style.fontSize = Math.max(10, Math.min(96, size)) + "px";   // small boards fill the panel
     const legend = $("legend");
     legend.replaceChildren();
     frame.legend.forEach((e) => {
@@ -413,7 +413,7 @@ _JS = r"""
       return;
     }
     head.appendChild(el("span", "n", "Turn " + t.turn));
-    if (t.action !== null) head.appendChild(el("span", "badge action", "\u2192 " + t.action));
+    if (t.action !== null) head.appendChild(el("span", "badge action", "action " + t.action));
     else head.appendChild(el("span", "badge forfeit", "forfeit"));
     if (t.change === "unchanged") head.appendChild(el("span", "badge unchanged", "no change"));
     if (t.change === "forfeit") head.appendChild(el("span", "badge unchanged", "world unchanged"));

@@ -150,6 +150,8 @@ def plot_training(run_dirs: str | os.PathLike | Iterable[str | os.PathLike], out
     ret_ax.grid(alpha=0.3)
     ff_ax.set_ylabel("forfeit rate")
     ff_ax.set_xlabel("step")
+    from matplotlib.ticker import MaxNLocator
+    ff_ax.xaxis.set_major_locator(MaxNLocator(integer=True))   # steps are whole numbers
     ff_ax.yaxis.set_major_formatter(_percent())
     ff_ax.grid(alpha=0.3)
     return _save(fig, out)

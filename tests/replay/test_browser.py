@@ -93,6 +93,15 @@ def test_page_in_headless_chromium(page_file, tmp_path):
             assert page.text_content("#count").startswith("2 of 4")
             page.click("#episodes li:not([hidden])")
             assert page.text_content("#ep-title") == EMPTY and step() == "0"
+            # a small board (5x5) is drawn to the panel's size, not as a postage stamp
+            board = page.locator("#board").bounding_box()
+            grid = page.locator("#grid").bounding_box()
+            assert grid["width"] >= 0.35 * board["width"], (grid, board)
+            # the action badge names the action, with no arrow that reads as a direction
+            page.keyboard.press("ArrowRight")
+            page.keyboard.press("ArrowRight")
+            badge = page.text_content("#turn-head .badge.action")
+            assert badge.startswith("action ") and "\u2192" not in badge
             page.fill("#f-task", "")
             page.fill("#f-min", "0.01")
             assert page.text_content("#count").startswith("0 of 4")
