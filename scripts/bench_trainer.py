@@ -9,7 +9,9 @@ memory of the log-prob computation at 32k tokens with a 150k vocabulary.
    49,152). Target: overhead <= 15%.
 2. Memory: a tiny model (hidden 64) with a 150,000-token vocabulary over 32,768 tokens
    (8 x 4,096), forward+backward through ``token_logprobs``, peak resident memory measured in a
-   fresh process at 8k, 16k and 32k tokens. Full logits alone would take tokens x vocab x 4 bytes
+   fresh process at 8k, 16k and 32k tokens, against that process's own baseline: the kernel's
+   high-water mark (VmHWM) is reset after the model loads (/proc/self/clear_refs), since a child
+   process otherwise starts from its parent's peak and every size would read as +0. Full logits alone would take tokens x vocab x 4 bytes
    (19.7 GB at 32k); the chunked path must stay far below that and grow only linearly.
 """
 
@@ -79,7 +81,7 @@ def throughput(tokens: int, repeats: int) -> int:
 
 
 MEMORY_CHILD = r"""
-import json, resource, sys, torch
+import json, sys, torch
 from transformers import LlamaConfig, LlamaForCausalLM
 from glyphbench_rl.train.logprobs import token_logprobs
 tokens, vocab = int(sys.argv[1]), int(sys.argv[2])
@@ -89,20 +91,33 @@ cfg = LlamaConfig(vocab_size=vocab, hidden_size=64, intermediate_size=128, num_h
                   tie_word_embeddings=True)
 model = LlamaForCausalLM(cfg)
 ids = torch.randint(0, vocab, (tokens // 4096, 4096))
-base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+
+def status_kb(field):
+    for line in open("/proc/self/status"):
+        if line.startswith(field + ":"):
+            return int(line.split()[1])
+
+with open("/proc/self/clear_refs", "w") as fh:   # reset the high-water mark to the current RSS
+    fh.write("5")
+base = status_kb("VmRSS")
 token_logprobs(model, ids, chunk=512).sum().backward()
-peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+peak = status_kb("VmHWM")
 print(json.dumps({"base_mb": base / 1024, "peak_mb": peak / 1024}))
 """
+
+
+def child_memory(tokens: int, vocab: int) -> dict[str, float]:
+    """Baseline and peak resident MB of one log-prob forward+backward, in a fresh process."""
+    out = subprocess.run([sys.executable, "-c", MEMORY_CHILD, str(tokens), str(vocab)],
+                         capture_output=True, text=True, check=True)
+    return json.loads(out.stdout.strip().splitlines()[-1])
 
 
 def memory(vocab: int = 150_000) -> int:
     print(f"log-prob memory, tiny model (hidden 64), vocab {vocab:,}, chunk 512, forward+backward:")
     rows = []
     for tokens in (8192, 16384, 32768):
-        out = subprocess.run([sys.executable, "-c", MEMORY_CHILD, str(tokens), str(vocab)],
-                             capture_output=True, text=True, check=True)
-        r = json.loads(out.stdout.strip().splitlines()[-1])
+        r = child_memory(tokens, vocab)
         extra = r["peak_mb"] - r["base_mb"]
         full = tokens * vocab * 4 / 2**20
         rows.append((tokens, extra))
