@@ -14,9 +14,11 @@ from __future__ import annotations
 import json
 import sys
 import time
-from dataclasses import asdict, dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Callable
+from typing import Annotated, Any, Callable, ClassVar
+
+from pydantic import Field
 
 from .. import __version__
 from ..agent.harness import HarnessConfig
@@ -26,6 +28,7 @@ from ..replay.schema import Trajectory
 from ..rollout.backend import BackendError, PolicyBackend
 from ..rollout.engine import EpisodeSpec, RolloutEngine
 from ..rollout.factory import make_backend
+from ..settings import Settings
 from .store import EpisodeWriter, deferred_interrupt, move_aside_partial, scan, write_atomic
 from .summary import format_summary, summarize
 
@@ -40,24 +43,21 @@ class EvalError(ValueError):
     """A job that cannot run as asked; the message is one line and nothing was modified."""
 
 
-@dataclass
-class EvalConfig:
+class EvalConfig(Settings):
+    error: ClassVar[type[Exception]] = EvalError
+
     tasks: list[str]
     backend: str
-    episodes: int
+    episodes: Annotated[int, Field(ge=1)]
     model: str | None = None
     seed_start: int = 0                   # offset into the held-out range
-    max_episodes_at_once: int = 64
-    backend_options: dict[str, Any] = field(default_factory=dict)   # only what the user set
-    harness: dict[str, Any] = field(default_factory=dict)           # HarnessConfig fields
+    max_episodes_at_once: Annotated[int, Field(ge=1)] = 64
+    backend_options: dict[str, Any] = Field(default_factory=dict)   # only what the user set
+    harness: dict[str, Any] = Field(default_factory=dict)           # HarnessConfig fields
     tokens: bool = False                  # keep token ids and log-probs in the records
     selection: str | None = None          # the task selection as typed, for the record
 
-    def __post_init__(self) -> None:
-        for name in ("episodes", "max_episodes_at_once"):
-            value = getattr(self, name)
-            if isinstance(value, bool) or not isinstance(value, int) or value < 1:
-                raise EvalError(f"{name} must be an int >= 1, got {value!r}")
+    def check(self) -> None:
         if not self.tasks:
             raise EvalError("no tasks selected")
         for task_id in self.tasks:
@@ -75,8 +75,8 @@ class EvalConfig:
     def harness_config(self) -> HarnessConfig:
         try:
             return HarnessConfig(**self.harness)
-        except TypeError as e:            # an unknown field name
-            raise EvalError(f"harness: {e}") from None
+        except ValueError as e:           # one line naming harness.<key>
+            raise EvalError(str(e)) from None
 
     def plan(self) -> list[EpisodeSpec]:
         # seed-major order: an interrupted job has a few episodes of every task rather than all
@@ -86,7 +86,7 @@ class EvalConfig:
     def to_json(self) -> dict[str, Any]:
         seeds = self.seeds()
         return {"backend": self.backend, "model": self.model, "backend_options": self.backend_options,
-                "harness": asdict(self.harness_config()), "tasks": self.tasks,
+                "harness": self.harness_config().model_dump(), "tasks": self.tasks,
                 "task_selection": self.selection, "episodes": self.episodes,
                 "seed_start": self.seed_start, "seeds": [seeds[0], seeds[-1]],
                 "max_episodes_at_once": self.max_episodes_at_once, "tokens": self.tokens,

@@ -143,6 +143,22 @@ def test_other_settings_in_the_same_directory_are_refused(tmp_path):
     assert result.saved == 4
 
 
+@pytest.mark.parametrize("kw, message", [
+    (dict(episodes=0), "episodes must be an int >= 1, got 0"),
+    (dict(episodes=True), "episodes must be an int >= 1, got True"),
+    (dict(episodes="3"), "episodes must be an int >= 1, got '3'"),
+    (dict(seed_start=1.0), "seed_start must be an int, got 1.0"),
+    (dict(tokens="yes"), "tokens must be true or false, got 'yes'"),
+    (dict(harness={"history": -1}), "harness.history must be an int >= 0, got -1"),
+    (dict(harness={"histroy": 3}), "unknown config key 'harness.histroy'; did you mean 'harness.history'?"),
+    (dict(episodez=3), "unknown config key 'episodez'; did you mean 'episodes'?"),
+])
+def test_bad_values_are_one_line_eval_errors(kw, message):
+    with pytest.raises(EvalError) as e:
+        EvalConfig(**{"tasks": [SNAKE], "backend": "random", "episodes": 1, **kw})
+    assert str(e.value) == message
+
+
 def test_bad_settings_fail_before_anything(tmp_path):
     with pytest.raises(glyphbench_rl.UnknownTaskError, match="closest"):
         EvalConfig(tasks=["glyphbench/classics-snak-easy-v0"], backend="random", episodes=1)

@@ -1,6 +1,6 @@
 import pytest
 
-from glyphbench_rl.train.config import ConfigError, TrainConfig, load_config
+from glyphbench_rl.train.config import FIELDS, ConfigError, TrainConfig, config_from_dict, load_config
 
 pytest.importorskip("yaml")
 
@@ -20,11 +20,11 @@ def test_defaults_and_overrides(tmp_path):
 
 @pytest.mark.parametrize("text, overrides, match", [
     ("lrr: 1\n", [], "unknown config key 'lrr'; did you mean 'lr'"),
-    ("group_size: 0\n", [], "group_size must be an int >= 1"),
+    ("group_size: 0\n", [], "group_size must be an int >= 2"),
     ("group_size: 2.5\n", [], "group_size must be an int"),
     ("loss: ppo\n", [], "loss must be one of"),
     ("lr: fast\n", [], "lr must be a number"),
-    ("harness: {histry: 2}\n", [], "unknown key harness.histry"),
+    ("harness: {histry: 2}\n", [], "unknown config key 'harness.histry'"),
     ("harness: {legend: maybe}\n", [], "harness.legend must be one of"),
     ("[1, 2]\n", [], "mapping"),
     ("lr: [\n", [], "not valid YAML at line"),
@@ -37,9 +37,36 @@ def test_bad_configs_name_the_key(tmp_path, text, overrides, match):
         load_config(_write(tmp_path, text), overrides)
 
 
+@pytest.mark.parametrize("text, message", [
+    ("tasks: [1, 2]\n", "tasks must be a task-list file, glob or comma list, or a non-empty list of "
+                        "task IDs, got [1, 2]"),
+    ("lr: 0\n", "lr must be a number in (0, 1], got 0"),
+    ("group_size: 1\n", "group_size must be an int >= 2, got 1"),
+    ("steps: true\n", "steps must be an int >= 1, got True"),
+    ("steps: '5'\n", "steps must be an int >= 1, got '5'"),
+    ("betas: [0.9, 1]\n", "betas.1 must be a number in [0, 1), got 1"),
+    ("harness: {history: -1}\n", "harness.history must be an int >= 0, got -1"),
+    ("harness: 3\n", "harness must be a mapping, got 3"),
+    ("wandb_name: ' '\n", "wandb_name must be a non-empty string or null, got ' '"),
+])
+def test_bad_values_are_one_line_errors(tmp_path, text, message):
+    with pytest.raises(ConfigError) as e:
+        load_config(_write(tmp_path, text))
+    assert str(e.value).endswith(message) and "\n" not in str(e.value)
+
+
 def test_missing_file(tmp_path):
     with pytest.raises(ConfigError, match="does not exist"):
         load_config(tmp_path / "nope.yaml")
+
+
+def test_to_dict_round_trips_and_assignment_is_checked():
+    cfg = TrainConfig(lr=1, harness={"history": 2})
+    assert cfg.lr == 1.0 and cfg.to_dict()["harness"] == {"history": 2} and cfg.to_dict()["lr"] == 1.0
+    assert set(cfg.to_dict()) == FIELDS
+    with pytest.raises(ConfigError, match=r"^lr must be a number in \(0, 1\], got 0$"):
+        cfg.lr = 0                                      # assignment is checked too
+    assert config_from_dict(cfg.to_dict()) == cfg
 
 
 def test_shipped_configs_load():
