@@ -8,6 +8,8 @@ config is what a run saves beside its outputs.
 
 from __future__ import annotations
 
+import functools
+import re
 from pathlib import Path
 from typing import Annotated, Any, ClassVar, Literal, Mapping, get_args
 
@@ -118,7 +120,7 @@ def parse_override(text: str) -> tuple[str, Any]:
     if not sep or not key.strip():
         raise ConfigError(f"override {text!r} is not key=value")
     try:
-        value = yaml.safe_load(raw) if raw.strip() else ""
+        value = yaml.load(raw, Loader=config_loader()) if raw.strip() else ""
     except yaml.YAMLError:
         value = raw
     return key.strip(), value
@@ -153,19 +155,65 @@ def config_from_dict(data: Mapping[str, Any]) -> TrainConfig:
 
 
 def load_config(path: str | Path | None, overrides: list[str] = ()) -> TrainConfig:
-    import yaml
-
     data: Any = {}
     if path is not None:
-        p = Path(path)
-        if not p.is_file():
-            raise ConfigError(f"config file {p} does not exist")
-        try:
-            data = yaml.safe_load(p.read_text(encoding="utf-8")) or {}
-        except yaml.YAMLError as e:
-            mark = getattr(e, "problem_mark", None)
-            where = f" at line {mark.line + 1}" if mark is not None else ""
-            raise ConfigError(f"{p}: not valid YAML{where}") from None
+        data = read_yaml(path) or {}
         if not isinstance(data, dict):
-            raise ConfigError(f"{p}: a config is a mapping of keys to values")
+            raise ConfigError(f"{path}: a config is a mapping of keys to values")
     return config_from_dict(merge(data, list(overrides)))
+
+
+def read_yaml(path: str | Path, what: str = "config") -> Any:
+    """A YAML file's content; anything wrong with the file is a one-line ``ConfigError`` naming
+    it: missing, a directory, not UTF-8 text, not YAML, or a key given twice in one mapping."""
+    import yaml
+
+    p = Path(path)
+    if p.is_dir():
+        raise ConfigError(f"{what} file {p} is a directory, not a YAML file")
+    if not p.exists():
+        raise ConfigError(f"{what} file {p} does not exist")
+    try:
+        text = p.read_text(encoding="utf-8")
+    except UnicodeDecodeError as e:
+        raise ConfigError(f"{p}: not a text file (byte {e.start} is not UTF-8)") from None
+    except OSError as e:
+        raise ConfigError(f"{what} file {p} cannot be read ({e.strerror or e})") from None
+    try:
+        return yaml.load(text, Loader=config_loader())
+    except yaml.YAMLError as e:
+        mark = getattr(e, "problem_mark", None)
+        line = f" at line {mark.line + 1}" if mark is not None else ""
+        if getattr(e, "problem", "").startswith("duplicate key"):
+            raise ConfigError(f"{p}: {e.problem}{line}") from None
+        raise ConfigError(f"{p}: not valid YAML{line}") from None
+
+
+@functools.cache
+def config_loader() -> type:
+    """``yaml.SafeLoader`` for configs: a key given twice in one mapping is an error (PyYAML
+    keeps the last silently), and ``5e-6`` is a number as in YAML 1.2 (1.1 wants ``5.0e-6``)."""
+    import yaml
+
+    class ConfigLoader(yaml.SafeLoader):
+        def construct_mapping(self, node, deep=False):
+            seen = set()
+            for key_node, _ in node.value:
+                if key_node.tag == "tag:yaml.org,2002:merge":     # `<<: *base` may override
+                    continue
+                key = self.construct_object(key_node, deep=True)
+                try:
+                    again = key in seen
+                    seen.add(key)
+                except TypeError:              # an unhashable key: PyYAML's own error follows
+                    continue
+                if again:
+                    raise yaml.constructor.ConstructorError(
+                        "while reading a mapping", node.start_mark, f"duplicate key {key!r}",
+                        key_node.start_mark)
+            return super().construct_mapping(node, deep)
+
+    ConfigLoader.add_implicit_resolver(
+        "tag:yaml.org,2002:float", re.compile(r"^[-+]?[0-9][0-9_]*(?:\.[0-9_]*)?[eE][-+]?[0-9]+$"),
+        list("-+0123456789"))
+    return ConfigLoader

@@ -48,6 +48,8 @@ def test_bad_configs_name_the_key(tmp_path, text, overrides, match):
     ("harness: {history: -1}\n", "harness.history must be an int >= 0, got -1"),
     ("harness: 3\n", "harness must be a mapping, got 3"),
     ("wandb_name: ' '\n", "wandb_name must be a non-empty string or null, got ' '"),
+    ("lr: 1.0e-6\nsteps: 3\nlr: 2.0e-6\n", "c.yaml: duplicate key 'lr' at line 3"),
+    ("harness:\n  history: 2\n  history: 3\n", "c.yaml: duplicate key 'history' at line 3"),
 ])
 def test_bad_values_are_one_line_errors(tmp_path, text, message):
     with pytest.raises(ConfigError) as e:
@@ -55,9 +57,33 @@ def test_bad_values_are_one_line_errors(tmp_path, text, message):
     assert str(e.value).endswith(message) and "\n" not in str(e.value)
 
 
+def test_numbers_as_yaml_1_2_writes_them_and_ints_for_floats(tmp_path):
+    cfg = load_config(_write(tmp_path, "lr: 5e-6\nformat_reward: 1\n"), ["kl_coef=1e-4"])
+    assert (cfg.lr, cfg.kl_coef, cfg.format_reward) == (5e-6, 1e-4, 1.0)
+    assert isinstance(cfg.format_reward, float)
+
+
+def test_yaml_anchors_may_override_merged_keys(tmp_path):
+    cfg = load_config(_write(tmp_path, "harness: &h {history: 2, legend: changed}\n"), [])
+    assert cfg.harness == {"history": 2, "legend": "changed"}
+    from glyphbench_rl.train.config import read_yaml
+    p = tmp_path / "anchors.yaml"
+    p.write_text("a: &a {x: 1, y: 2}\nb:\n  <<: *a\n  x: 3\n")
+    assert read_yaml(p) == {"a": {"x": 1, "y": 2}, "b": {"x": 3, "y": 2}}
+
+
 def test_missing_file(tmp_path):
     with pytest.raises(ConfigError, match="does not exist"):
         load_config(tmp_path / "nope.yaml")
+
+
+def test_unreadable_config_files_are_one_line_errors(tmp_path):
+    binary = tmp_path / "model.bin"
+    binary.write_bytes(b"\x89PNG\r\n\x1a\n\x00\xff\xfe")
+    with pytest.raises(ConfigError, match=r"^\S*model\.bin: not a text file \(byte 0 is not UTF-8\)$"):
+        load_config(binary)
+    with pytest.raises(ConfigError, match=r"^config file \S+ is a directory, not a YAML file$"):
+        load_config(tmp_path)
 
 
 def test_to_dict_round_trips_and_assignment_is_checked():
