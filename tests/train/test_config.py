@@ -1,5 +1,9 @@
 import pytest
 
+from pathlib import Path
+
+import glyphbench_rl
+from glyphbench_rl.core import resolve_tasks
 from glyphbench_rl.train.config import FIELDS, ConfigError, TrainConfig, config_from_dict, load_config
 
 pytest.importorskip("yaml")
@@ -84,6 +88,37 @@ def test_unreadable_config_files_are_one_line_errors(tmp_path):
         load_config(binary)
     with pytest.raises(ConfigError, match=r"^config file \S+ is a directory, not a YAML file$"):
         load_config(tmp_path)
+
+
+def test_default_task_list_resolves_against_the_project(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)                         # no tasks/ folder here
+    cfg = load_config(None)
+    project = Path(glyphbench_rl.__file__).resolve().parents[1]
+    assert cfg.tasks == str(project / "tasks" / "standard.txt")
+    assert resolve_tasks(cfg.tasks) == resolve_tasks(str(project / "tasks" / "standard.txt"))
+    assert load_config(None, ["tasks=[tasks/standard.txt]"]).tasks == [cfg.tasks]
+    (tmp_path / "tasks").mkdir()                        # a task list of one's own comes first
+    (tmp_path / "tasks" / "standard.txt").write_text("glyphbench/classics-snake-easy-v0\n")
+    assert load_config(None).tasks == "tasks/standard.txt"
+    assert load_config(None, ["tasks=glyphbench/classics-snake-*"]).tasks == "glyphbench/classics-snake-*"
+
+
+def test_train_cli_with_an_empty_config_runs_from_another_directory(tmp_path):
+    """glyphbench-train on an empty config, run elsewhere, trains on the project's standard list
+    (rendered for Prime-RL here, which reads every task and loads no model)."""
+    import os
+    import subprocess
+    import sys
+    import tomllib
+    (tmp_path / "empty.yaml").write_text("")
+    env = {**os.environ, "PATH": str(tmp_path / "nowhere")}             # no `rl` to launch
+    done = subprocess.run([sys.executable, "-m", "glyphbench_rl.train.cli", "empty.yaml", "--backend",
+                           "prime-rl", "--out", "run"], cwd=tmp_path, env=env, capture_output=True,
+                          text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    taskset = tomllib.loads((tmp_path / "run" / "prime_rl.toml").read_text())["orchestrator"]["train"]
+    project_list = str(Path(glyphbench_rl.__file__).resolve().parents[1] / "tasks" / "standard.txt")
+    assert taskset["env"][0]["taskset"]["tasks"] == resolve_tasks(project_list)
 
 
 def test_to_dict_round_trips_and_assignment_is_checked():
