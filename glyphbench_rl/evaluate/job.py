@@ -34,7 +34,7 @@ from .summary import format_summary, summarize
 
 CONFIG, EPISODES, SUMMARY_JSON, SUMMARY_TXT = "config.json", "episodes.jsonl", "summary.json", "summary.txt"
 # settings that change what the episodes are; a rerun into the same directory must match them
-IDENTITY = ("backend", "model", "backend_options", "harness")
+IDENTITY = ("backend", "model", "backend_options", "harness", "seed_start")
 # where a model is served, not which model: a restarted server may come back on another port
 UNTRACKED_OPTIONS = frozenset({"base_url"})
 
@@ -112,6 +112,11 @@ def config_mismatch(old: dict[str, Any], new: dict[str, Any]) -> str | None:
                       for k in sorted(a.keys() | b.keys()) if a.get(k) != b.get(k)]
         else:
             diffs.append(f"{key} was {json.dumps(a)}, now {json.dumps(b)}")
+    # a job may grow: its held-out seeds are the first seeds of a longer job, so more episodes
+    # extend it; fewer would leave records the new config and summary do not account for
+    a, b = old.get("episodes"), new.get("episodes")
+    if isinstance(a, int) and isinstance(b, int) and b < a:
+        diffs.append(f"episodes was {a}, now {b} (a job can grow, not shrink)")
     return "; ".join(diffs) or None
 
 

@@ -1,5 +1,6 @@
 import json
 import math
+import re
 
 import pytest
 
@@ -141,6 +142,20 @@ def test_other_settings_in_the_same_directory_are_refused(tmp_path):
     result = run_job(config(2, harness={"history": 2}), tmp_path, force_config=True,
                      backend=CountingPolicy().backend(), log=None)
     assert result.saved == 4
+
+
+@pytest.mark.parametrize("first, again, differs", [
+    (dict(episodes=2), dict(episodes=1), r"episodes was 2, now 1 \(a job can grow, not shrink\)"),
+    (dict(episodes=1), dict(episodes=1, seed_start=5), r"seed_start was 0, now 5"),
+])
+def test_fewer_episodes_or_other_seeds_in_the_same_directory_are_refused(tmp_path, first, again, differs):
+    run_job(config(**first), tmp_path, backend=CountingPolicy().backend(), log=None)
+    before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    with pytest.raises(EvalError, match=rf"^{re.escape(str(tmp_path))} holds another evaluation "
+                                        rf"\({differs}\); use a new --out, or --force-config to add "
+                                        rf"to it anyway$"):
+        run_job(config(**again), tmp_path, backend_factory=pytest.fail, log=None)
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == before   # config.json untouched
 
 
 @pytest.mark.parametrize("kw, message", [
