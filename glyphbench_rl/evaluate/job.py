@@ -116,7 +116,7 @@ def config_mismatch(old: dict[str, Any], new: dict[str, Any]) -> str | None:
     # extend it; fewer would leave records the new config and summary do not account for
     a, b = old.get("episodes"), new.get("episodes")
     if isinstance(a, int) and isinstance(b, int) and b < a:
-        diffs.append(f"episodes was {a}, now {b} (a job can grow, not shrink)")
+        diffs.append(f"episodes was {a}, now {b}")
     return "; ".join(diffs) or None
 
 
