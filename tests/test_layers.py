@@ -13,7 +13,7 @@ PKG = Path(__file__).resolve().parents[1] / "glyphbench_rl"
 
 # lowest first; a module in layer k may import layers 0..k
 LAYERS = [
-    {"_version"},
+    {"_version", "settings"},
     {"core"},
     {"games", "models"},
     {"agent"},

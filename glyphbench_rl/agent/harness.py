@@ -13,37 +13,30 @@ already in the prompt, so every prompt still holds the current legend exactly on
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Protocol
+from typing import Annotated, ClassVar, Literal, Protocol, get_args
+
+from pydantic import ConfigDict, Field
 
 from ..core.frame import Frame
+from ..settings import Settings
 
-LEGEND_MODES = ("always", "changed")
+Legend = Literal["always", "changed"]
+LEGEND_MODES = get_args(Legend)
 
 
-@dataclass(frozen=True)
-class HarnessConfig:
-    """How prompts are composed. Unknown values fail here with a one-line error."""
+class HarnessConfig(Settings):
+    """How prompts are composed. A bad value fails here with a one-line ValueError naming it."""
 
-    history: int = 8                        # past observation/reply pairs kept in each prompt
-    legend: str = "always"                  # "always" or "changed"
-    max_context_tokens: int | None = None   # prompt budget (tokens, or chars/4 for text backends)
+    model_config = ConfigDict(frozen=True)      # hashable by value
+    where: ClassVar[str] = "harness"
+
+    history: int = Field(8, ge=0)               # past observation/reply pairs kept in each prompt
+    legend: Legend = "always"                   # "changed": see the module docstring
+    #: prompt budget (tokens, or chars/4 for text backends); None: no budget
+    max_context_tokens: Annotated[int, Field(ge=1)] | None = None
     #: text the reply starts with, written by the harness before the model continues (assistant
     #: prefill, e.g. "<action>"); part of the prompt, never trained on. Token backends only.
-    reply_prefix: str = ""
-
-    def __post_init__(self) -> None:
-        if isinstance(self.history, bool) or not isinstance(self.history, int) or self.history < 0:
-            raise ValueError(f"harness.history must be an int >= 0, got {self.history!r}")
-        if self.legend not in LEGEND_MODES:
-            raise ValueError(f"harness.legend must be one of {LEGEND_MODES}, got {self.legend!r}")
-        if self.max_context_tokens is not None and (
-                isinstance(self.max_context_tokens, bool) or not isinstance(self.max_context_tokens, int)
-                or self.max_context_tokens < 1):
-            raise ValueError(f"harness.max_context_tokens must be a positive int or null, "
-                             f"got {self.max_context_tokens!r}")
-        if not isinstance(self.reply_prefix, str) or len(self.reply_prefix) > 200:
-            raise ValueError(f"harness.reply_prefix must be a string of at most 200 characters, "
-                             f"got {self.reply_prefix!r}")
+    reply_prefix: str = Field("", max_length=200)
 
 
 def observation_text(frame: Frame, *, legend: bool = True) -> str:

@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import Sequence
 
 from ..integrations.prime_rl import PrimeRLConfigError, write_toml
-from ..train.config import ConfigError, config_from_dict
+from ..train.config import ConfigError, config_from_dict, read_yaml
 from ..train.sweep import expand, run_local, slurm_script, table, write_conditions
 
 
@@ -24,8 +24,6 @@ def write_prime_rl(out: Path, rows) -> list[Path]:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    import yaml
-
     ap = argparse.ArgumentParser(prog="glyphbench-sweep", description=__doc__.splitlines()[0])
     ap.add_argument("sweep", help="sweep YAML (base, grid, rollout_budget, variants)")
     ap.add_argument("--out", help="sweep directory (default: runs/<sweep name>)")
@@ -40,9 +38,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = ap.parse_args(argv)
     out = Path(args.out or Path("runs") / Path(args.sweep).stem)
     try:
-        spec = yaml.safe_load(Path(args.sweep).read_text(encoding="utf-8"))
-        conditions = expand(spec)
-    except (OSError, yaml.YAMLError, ConfigError) as e:
+        conditions = expand(read_yaml(args.sweep, "sweep"))
+    except ConfigError as e:
         print(f"glyphbench-sweep: error: {str(e).splitlines()[0]}", file=sys.stderr)
         return 2
     if args.dry_run:

@@ -14,9 +14,11 @@ from __future__ import annotations
 import json
 import sys
 import time
-from dataclasses import asdict, dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Callable
+from typing import Annotated, Any, Callable, ClassVar
+
+from pydantic import Field
 
 from .._version import __version__
 from ..agent.harness import HarnessConfig
@@ -26,12 +28,13 @@ from ..rollout.trajectory import Trajectory
 from ..rollout.backend import BackendError, PolicyBackend
 from ..rollout.engine import EpisodeSpec, RolloutEngine
 from ..rollout.factory import make_backend
+from ..settings import Settings
 from .store import EpisodeWriter, deferred_interrupt, move_aside_partial, scan, write_atomic
 from .summary import format_summary, summarize
 
 CONFIG, EPISODES, SUMMARY_JSON, SUMMARY_TXT = "config.json", "episodes.jsonl", "summary.json", "summary.txt"
 # settings that change what the episodes are; a rerun into the same directory must match them
-IDENTITY = ("backend", "model", "backend_options", "harness")
+IDENTITY = ("backend", "model", "backend_options", "harness", "seed_start")
 # where a model is served, not which model: a restarted server may come back on another port
 UNTRACKED_OPTIONS = frozenset({"base_url"})
 
@@ -40,24 +43,24 @@ class EvalError(ValueError):
     """A job that cannot run as asked; the message is one line and nothing was modified."""
 
 
-@dataclass
-class EvalConfig:
+class EvalConfig(Settings):
+    error: ClassVar[type[Exception]] = EvalError
+
     tasks: list[str]
     backend: str
-    episodes: int
+    episodes: Annotated[int, Field(ge=1)]
     model: str | None = None
     seed_start: int = 0                   # offset into the held-out range
-    max_episodes_at_once: int = 64
-    backend_options: dict[str, Any] = field(default_factory=dict)   # only what the user set
-    harness: dict[str, Any] = field(default_factory=dict)           # HarnessConfig fields
+    max_episodes_at_once: Annotated[int, Field(ge=1)] = 64
+    backend_options: dict[str, Any] = Field(default_factory=dict)   # only what the user set
+    harness: dict[str, Any] = Field(default_factory=dict)           # HarnessConfig fields
     tokens: bool = False                  # keep token ids and log-probs in the records
     selection: str | None = None          # the task selection as typed, for the record
+    #: who ran the job and why, for the record only (e.g. a training run's step); not a setting
+    #: of the episodes, so never a reason to refuse a rerun
+    context: dict[str, Any] = Field(default_factory=dict)
 
-    def __post_init__(self) -> None:
-        for name in ("episodes", "max_episodes_at_once"):
-            value = getattr(self, name)
-            if isinstance(value, bool) or not isinstance(value, int) or value < 1:
-                raise EvalError(f"{name} must be an int >= 1, got {value!r}")
+    def check(self) -> None:
         if not self.tasks:
             raise EvalError("no tasks selected")
         for task_id in self.tasks:
@@ -75,8 +78,8 @@ class EvalConfig:
     def harness_config(self) -> HarnessConfig:
         try:
             return HarnessConfig(**self.harness)
-        except TypeError as e:            # an unknown field name
-            raise EvalError(f"harness: {e}") from None
+        except ValueError as e:           # one line naming harness.<key>
+            raise EvalError(str(e)) from None
 
     def plan(self) -> list[EpisodeSpec]:
         # seed-major order: an interrupted job has a few episodes of every task rather than all
@@ -86,10 +89,12 @@ class EvalConfig:
     def to_json(self) -> dict[str, Any]:
         seeds = self.seeds()
         return {"backend": self.backend, "model": self.model, "backend_options": self.backend_options,
-                "harness": asdict(self.harness_config()), "tasks": self.tasks,
+                "harness": self.harness_config().model_dump(), "tasks": self.tasks,
                 "task_selection": self.selection, "episodes": self.episodes,
-                "seed_start": self.seed_start, "seeds": [seeds[0], seeds[-1]],
+                "seed_start": self.seed_start,
+                "seed_range": {"first": seeds[0], "last": seeds[-1], "count": len(seeds)},
                 "max_episodes_at_once": self.max_episodes_at_once, "tokens": self.tokens,
+                **({"context": self.context} if self.context else {}),
                 "glyphbench_rl": __version__}
 
 
@@ -112,6 +117,11 @@ def config_mismatch(old: dict[str, Any], new: dict[str, Any]) -> str | None:
                       for k in sorted(a.keys() | b.keys()) if a.get(k) != b.get(k)]
         else:
             diffs.append(f"{key} was {json.dumps(a)}, now {json.dumps(b)}")
+    # a job may grow: its held-out seeds are the first seeds of a longer job, so more episodes
+    # extend it; fewer would leave records the new config and summary do not account for
+    a, b = old.get("episodes"), new.get("episodes")
+    if isinstance(a, int) and isinstance(b, int) and b < a:
+        diffs.append(f"episodes was {a}, now {b}")
     return "; ".join(diffs) or None
 
 
@@ -151,7 +161,8 @@ def title(cfg: dict[str, Any] | None) -> str | None:
         return None
     h = cfg.get("harness") or {}
     opts = ", ".join(f"{k}={v}" for k, v in (cfg.get("backend_options") or {}).items())
-    seeds = [f"{s:,}" if isinstance(s, int) else "?" for s in cfg.get("seeds") or [None]]
+    rng = cfg.get("seed_range") or {}
+    seeds = [f"{s:,}" if isinstance(s, int) else "?" for s in (rng.get("first"), rng.get("last"))]
     return (f"glyphbench-eval: backend {cfg.get('backend')}, model {cfg.get('model') or '-'}"
             + (f" ({opts})" if opts else "")
             + f"; harness history {h.get('history')}, legend {h.get('legend')}"

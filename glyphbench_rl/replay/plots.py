@@ -282,10 +282,10 @@ def load_sweep(sweep_dir: str | os.PathLike, select: str | None = None
     directory, in the sweep file's order when the directory holds it (``sweep.yaml``), else the
     ``configs/*.yaml`` by name; optionally only names matching the glob ``select``."""
     try:
-        import yaml
+        import yaml  # noqa: F401  (read_yaml's)
     except ImportError:
         raise PlotError("reading a sweep needs pyyaml: pip install pyyaml") from None
-    from ..train.config import ConfigError, config_from_dict
+    from ..train.config import ConfigError, config_from_dict, read_yaml
     from ..train.sweep import expand
 
     root = Path(sweep_dir)
@@ -295,19 +295,20 @@ def load_sweep(sweep_dir: str | os.PathLike, select: str | None = None
     try:
         if spec_path.is_file():
             where = spec_path
-            named = expand(yaml.safe_load(spec_path.read_text(encoding="utf-8")))
+            named = expand(read_yaml(spec_path, "sweep"))
         else:
             named = []
             for path in sorted((root / "configs").glob("*.yaml")):
                 where = path
-                named.append((path.stem, yaml.safe_load(path.read_text(encoding="utf-8")) or {}))
+                named.append((path.stem, read_yaml(path) or {}))
         if not named:
             raise PlotError(f"{root} holds no sweep.yaml or configs/*.yaml (not a glyphbench-sweep "
                             f"directory?)")
         out = [(name, config_from_dict(cfg).to_dict(), root / "runs" / name) for name, cfg in named
                if not select or fnmatch.fnmatchcase(name, select)]
-    except (OSError, yaml.YAMLError, ConfigError, TypeError, AttributeError) as e:
-        raise PlotError(f"{where}: {str(e).splitlines()[0]}") from None
+    except (OSError, ConfigError, TypeError, AttributeError) as e:
+        msg = str(e).splitlines()[0]
+        raise PlotError(msg if str(where) in msg else f"{where}: {msg}") from None
     if not out:
         raise PlotError(f"no condition of {root} matches {select!r}")
     return out

@@ -10,7 +10,7 @@ slots are refilled from the queue.
 from __future__ import annotations
 
 import time
-from dataclasses import asdict, dataclass, field
+from dataclasses import dataclass, field
 from typing import Any, Callable, Iterable, Mapping
 
 from ..agent.harness import HarnessConfig, check_prompt_kind
@@ -51,7 +51,7 @@ class RolloutEngine:
         self.harness = harness or HarnessConfig()
         self.max_episodes = max_episodes
         self.meta = {"backend": getattr(backend, "name", type(backend).__name__),
-                     "harness": asdict(self.harness), **(meta or {})}
+                     "harness": self.harness.model_dump(), **(meta or {})}
         tokenizer = getattr(backend, "tokenizer", None)
         self.chat = ChatTokens(tokenizer, self.harness.reply_prefix) if tokenizer is not None else None
         check_prompt_kind(self.harness, self.chat is not None, self.meta["backend"])

@@ -20,12 +20,32 @@ import subprocess
 import sys
 import time
 from pathlib import Path
-from typing import Any
+from typing import Annotated, Any, ClassVar
 
-from .config import FIELDS, ConfigError, config_from_dict
+from pydantic import BaseModel, Field
+
+from ..settings import STRICT, Settings
+from .config import ConfigError, config_from_dict
 from .metrics import MetricsError, read_metrics
 
 SWEEP_KEYS = {"base", "grid", "rollout_budget", "variants"}
+
+
+class SweepPart(BaseModel):
+    """The keys a sweep file and each of its variants set (a variant overrides the ones it sets)."""
+
+    model_config = STRICT
+
+    base: dict[str, Any] | None = None         # training-config keys shared by every condition
+    grid: dict[str, Annotated[list[Any], Field(min_length=1)]] | None = None   # key: values
+    rollout_budget: Annotated[int, Field(ge=1)] | None = None    # steps = budget / rollouts per step
+
+
+class SweepSpec(Settings, SweepPart):
+    error: ClassVar[type[Exception]] = ConfigError
+    kind: ClassVar[str] = "sweep"
+
+    variants: dict[str, SweepPart] | None = None   # name: the keys it changes
 
 
 def _short(key: str, value: Any) -> str:
@@ -36,33 +56,28 @@ def _short(key: str, value: Any) -> str:
     return f"{abbrev}{value:g}" if isinstance(value, float) else f"{abbrev}{value}"
 
 
-def expand(spec: dict[str, Any]) -> list[tuple[str, dict[str, Any]]]:
+def expand(spec: Any) -> list[tuple[str, dict[str, Any]]]:
     """(name, training config dict) for every condition of the sweep and its variants."""
-    if not isinstance(spec, dict) or set(spec) - SWEEP_KEYS:
-        bad = sorted(set(spec) - SWEEP_KEYS) if isinstance(spec, dict) else [type(spec).__name__]
-        raise ConfigError(f"unknown sweep key {bad[0]!r}; sweep keys: {', '.join(sorted(SWEEP_KEYS))}")
+    if not isinstance(spec, dict):
+        raise ConfigError(f"a sweep file is a mapping of {', '.join(sorted(SWEEP_KEYS))}, got "
+                          f"{type(spec).__name__}")
+    sweep = SweepSpec(**{str(k): v for k, v in spec.items()})
+    parts = [("", sweep)] + [(name, sweep.model_copy(update=variant.model_dump(exclude_unset=True)))
+                             for name, variant in (sweep.variants or {}).items()]
     out: list[tuple[str, dict[str, Any]]] = []
-    runs = [("", spec)] + [(name, {**spec, **v, "variants": {}})
-                           for name, v in (spec.get("variants") or {}).items()]
-    for prefix, part in runs:
-        grid = part.get("grid") or {}
-        for key, values in grid.items():
-            if key not in FIELDS:
-                raise ConfigError(f"unknown config key {key!r} in grid")
-            if not isinstance(values, list) or not values:
-                raise ConfigError(f"grid.{key} must be a non-empty list")
+    for prefix, part in parts:
+        grid = part.grid or {}
         keys = list(grid)
         for combo in itertools.product(*(grid[k] for k in keys)):
-            cfg = {**(part.get("base") or {}), **dict(zip(keys, combo))}
-            budget = part.get("rollout_budget")
-            if budget is not None:
-                per_step = cfg.get("group_size", 32) * cfg.get("groups_per_update", 1)
-                if budget % per_step:
-                    raise ConfigError(f"rollout_budget {budget} is not a multiple of "
+            cfg = {**(part.base or {}), **dict(zip(keys, combo))}
+            checked = config_from_dict(cfg)           # every condition valid before any runs
+            if part.rollout_budget is not None:
+                per_step = checked.group_size * checked.groups_per_update
+                if part.rollout_budget % per_step:
+                    raise ConfigError(f"rollout_budget {part.rollout_budget} is not a multiple of "
                                       f"group_size x groups_per_update = {per_step}")
-                cfg["steps"] = budget // per_step
+                cfg["steps"] = part.rollout_budget // per_step
             name = "_".join(filter(None, [prefix] + [_short(k, v) for k, v in zip(keys, combo)])) or "run"
-            config_from_dict(cfg)                       # every condition valid before any runs
             out.append((name, cfg))
     names = [n for n, _ in out]
     if len(set(names)) != len(names):

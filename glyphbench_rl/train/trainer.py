@@ -240,7 +240,7 @@ class Trainer:
         backend = self._sampler(seed=cfg.seed)
         job = EvalConfig(tasks=self.tasks, backend="hf", episodes=cfg.eval_episodes, model=cfg.model,
                          max_episodes_at_once=cfg.max_episodes_at_once, harness=dict(cfg.harness),
-                         backend_options={"step": self.step})
+                         context={"train_run": str(self.out), "train_step": self.step})
         res = run_job(job, self.out / "eval" / f"{CKPT_PREFIX}{self.step:06d}", backend=backend,
                       log=None)
         overall = res.summary["overall"]

@@ -72,3 +72,27 @@ def test_context_budget_drops_oldest_turns_and_counts_them():
 def test_bad_config(kw):
     with pytest.raises(ValueError, match="harness"):
         HarnessConfig(**kw)
+
+
+@pytest.mark.parametrize("kw, message", [
+    (dict(history=-1), "harness.history must be an int >= 0, got -1"),
+    (dict(history=True), "harness.history must be an int >= 0, got True"),
+    (dict(history="5"), "harness.history must be an int >= 0, got '5'"),
+    (dict(legend="sometimes"), "harness.legend must be one of 'always', 'changed', got 'sometimes'"),
+    (dict(max_context_tokens=0), "harness.max_context_tokens must be an int >= 1 or null, got 0"),
+    (dict(reply_prefix=None), "harness.reply_prefix must be a string of at most 200 characters, got None"),
+    (dict(histroy=3), "unknown config key 'harness.histroy'; did you mean 'harness.history'?"),
+])
+def test_bad_config_is_one_line_naming_the_key(kw, message):
+    with pytest.raises(ValueError) as e:
+        HarnessConfig(**kw)
+    assert str(e.value) == message
+
+
+def test_config_is_frozen_and_hashable_by_value():
+    a, b = HarnessConfig(history=2, legend="changed"), HarnessConfig(history=2, legend="changed")
+    assert a == b and hash(a) == hash(b) and len({a, b, HarnessConfig()}) == 2
+    assert a.model_dump() == {"history": 2, "legend": "changed", "max_context_tokens": None,
+                              "reply_prefix": ""}
+    with pytest.raises(ValueError, match="harness.history cannot be changed"):
+        a.history = 3

@@ -1,5 +1,6 @@
 import json
 import math
+import re
 
 import pytest
 
@@ -63,7 +64,8 @@ def test_job_records_and_summary_match_hand_computed_values(tmp_path):
     saved = json.loads((tmp_path / "summary.json").read_text())
     assert saved["overall"]["return_mean"] == pytest.approx(overall["return_mean"])
     cfg = json.loads((tmp_path / "config.json").read_text())
-    assert cfg["seeds"] == [1_000_000, 1_000_002] and cfg["harness"]["history"] == 8
+    assert cfg["seed_range"] == {"first": 1_000_000, "last": 1_000_002, "count": 3}
+    assert cfg["harness"]["history"] == 8 and "context" not in cfg
 
 
 def test_tokens_flag_keeps_token_fields(tmp_path):
@@ -141,6 +143,36 @@ def test_other_settings_in_the_same_directory_are_refused(tmp_path):
     result = run_job(config(2, harness={"history": 2}), tmp_path, force_config=True,
                      backend=CountingPolicy().backend(), log=None)
     assert result.saved == 4
+
+
+@pytest.mark.parametrize("first, again, differs", [
+    (dict(episodes=2), dict(episodes=1), r"episodes was 2, now 1"),
+    (dict(episodes=1), dict(episodes=1, seed_start=5), r"seed_start was 0, now 5"),
+])
+def test_fewer_episodes_or_other_seeds_in_the_same_directory_are_refused(tmp_path, first, again, differs):
+    run_job(config(**first), tmp_path, backend=CountingPolicy().backend(), log=None)
+    before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    with pytest.raises(EvalError, match=rf"^{re.escape(str(tmp_path))} holds another evaluation "
+                                        rf"\({differs}\); use a new --out, or --force-config to add "
+                                        rf"to it anyway$"):
+        run_job(config(**again), tmp_path, backend_factory=pytest.fail, log=None)
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == before   # config.json untouched
+
+
+@pytest.mark.parametrize("kw, message", [
+    (dict(episodes=0), "episodes must be an int >= 1, got 0"),
+    (dict(episodes=True), "episodes must be an int >= 1, got True"),
+    (dict(episodes="3"), "episodes must be an int >= 1, got '3'"),
+    (dict(seed_start=1.0), "seed_start must be an int, got 1.0"),
+    (dict(tokens="yes"), "tokens must be true or false, got 'yes'"),
+    (dict(harness={"history": -1}), "harness.history must be an int >= 0, got -1"),
+    (dict(harness={"histroy": 3}), "unknown config key 'harness.histroy'; did you mean 'harness.history'?"),
+    (dict(episodez=3), "unknown config key 'episodez'; did you mean 'episodes'?"),
+])
+def test_bad_values_are_one_line_eval_errors(kw, message):
+    with pytest.raises(EvalError) as e:
+        EvalConfig(**{"tasks": [SNAKE], "backend": "random", "episodes": 1, **kw})
+    assert str(e.value) == message
 
 
 def test_bad_settings_fail_before_anything(tmp_path):

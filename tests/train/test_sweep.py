@@ -27,11 +27,31 @@ def test_snake_sweep_expands_to_the_papers_conditions():
     ({"grid": {"lr": 1}}, "must be a non-empty list"),
     ({"base": {}, "grids": {}}, "unknown sweep key 'grids'"),
     ({"grid": {"group_size": [3]}, "rollout_budget": 10}, "not a multiple"),
-    ({"grid": {"group_size": [0]}}, "group_size must be an int >= 1"),
+    ({"grid": {"group_size": [0]}}, "group_size must be an int >= 2"),
+    ({"grid": {"lr": [0]}}, r"^lr must be a number in \(0, 1\], got 0$"),
+    ({"base": {"tasks": [1, 2]}}, r"^tasks must be a task-list file, .* got \[1, 2\]$"),
+    ({"base": [1]}, r"^base must be a mapping or null, got \[1\]$"),
+    ({"grid": {"lr": []}}, r"^grid\.lr must be a non-empty list, got \[\]$"),
+    ({"rollout_budget": "6144"}, r"^rollout_budget must be an int >= 1 or null, got '6144'$"),
+    ({"variants": [1]}, r"^variants must be a mapping or null, got \[1\]$"),
+    ({"variants": {"long": {"grids": {}}}},
+     r"^unknown sweep key 'variants\.long\.grids'; did you mean 'variants\.long\.grid'\?$"),
+    ({"variants": {"long": {"rollout_budget": True}}},
+     r"^variants\.long\.rollout_budget must be an int >= 1 or null, got True$"),
+    ({"variants": {"long": {"variants": {}}}}, r"^unknown sweep key 'variants\.long\.variants'"),
+    ([{"grid": {}}], r"^a sweep file is a mapping of base, grid, rollout_budget, variants, got list$"),
 ])
 def test_bad_sweeps(spec, match):
     with pytest.raises(ConfigError, match=match):
         expand(spec)
+
+
+def test_variants_override_only_what_they_set():
+    conds = dict(expand({"base": {"group_size": 4}, "grid": {"lr": [1e-6]}, "rollout_budget": 8,
+                         "variants": {"big": {"base": {"group_size": 8}}, "plain": {"rollout_budget": None}}}))
+    assert conds == {"lr1e-06": {"group_size": 4, "lr": 1e-6, "steps": 2},
+                     "big_lr1e-06": {"group_size": 8, "lr": 1e-6, "steps": 1},
+                     "plain_lr1e-06": {"group_size": 4, "lr": 1e-6}}
 
 
 def test_slurm_script_and_dry_run(tmp_path, capsys):

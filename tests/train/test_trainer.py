@@ -135,6 +135,8 @@ def test_cli_runs_a_tiny_model(tiny_model_dir, tmp_path, capsys):
     assert train_main([str(cfg), "--out", str(tmp_path / "o")]) == 0
     m = json.loads((tmp_path / "o" / "metrics.jsonl").read_text())
     assert "eval/return_mean" in m and (tmp_path / "o" / "eval" / "step_000001" / "summary.json").exists()
+    job = json.loads((tmp_path / "o" / "eval" / "step_000001" / "config.json").read_text())
+    assert job["backend_options"] == {} and job["context"]["train_step"] == 1   # bookkeeping apart
     out = capsys.readouterr().out
     assert "step 1/1" in out and "step 1/1: rollouts 0/2" in out and "step 1/1: update" in out
 

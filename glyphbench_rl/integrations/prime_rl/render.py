@@ -51,7 +51,6 @@ a group play that one row's seed, where the built-in trainer gives each member i
 
 from __future__ import annotations
 
-import dataclasses
 import hashlib
 import math
 import os
@@ -177,13 +176,13 @@ def write_toml(cfg: TrainConfig, run_dir: str | Path, *, resume: bool = False) -
 
 
 def _refuse_inexpressible(cfg: TrainConfig) -> None:
-    defaults = {f.name: f.default for f in dataclasses.fields(TrainConfig)}
+    defaults = {name: f.default for name, f in TrainConfig.model_fields.items()}
     problems = [f"{name}={_show(getattr(cfg, name))} ({why})" for name, why in ONLY_AT_DEFAULT.items()
                 if getattr(cfg, name) != defaults[name]]
     harness, plain = cfg.harness_config(), HarnessConfig()
-    problems += [f"harness.{f.name}={_show(getattr(harness, f.name))} (the glyphbench-rl taskset "
-                 f"takes only {', '.join(TASKSET_PROMPT_KEYS)})" for f in dataclasses.fields(HarnessConfig)
-                 if f.name not in TASKSET_PROMPT_KEYS and getattr(harness, f.name) != getattr(plain, f.name)]
+    problems += [f"harness.{name}={_show(getattr(harness, name))} (the glyphbench-rl taskset "
+                 f"takes only {', '.join(TASKSET_PROMPT_KEYS)})" for name in HarnessConfig.model_fields
+                 if name not in TASKSET_PROMPT_KEYS and getattr(harness, name) != getattr(plain, name)]
     if problems:
         raise PrimeRLConfigError("no Prime-RL equivalent for " + "; ".join(problems))
 

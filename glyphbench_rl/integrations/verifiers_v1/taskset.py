@@ -12,7 +12,7 @@ from collections.abc import Iterator
 from typing import Literal
 
 import verifiers.v1 as vf
-from pydantic import Field, model_validator
+from pydantic import Field, TypeAdapter, field_validator, model_validator
 
 from ...agent.harness import HarnessConfig, check_prompt_kind
 from ...core import list_tasks, resolve_tasks
@@ -36,6 +36,15 @@ class GlyphbenchTasksetConfig(vf.TasksetConfig):
     """How prompts are composed (--env.taskset.harness.history, .legend, .max_context_tokens): the
     engine's own HarnessConfig, so glyphbench-eval and vf-eval prompts are identical. The
     context budget counts estimated tokens (chars/4): prompts go out as chat messages."""
+
+    @field_validator("harness", mode="before")
+    @classmethod
+    def _harness_from_flags(cls, value):
+        # command-line flags arrive as strings ("--env.taskset.harness.history 2"): read them as
+        # the values they spell; the checks themselves are HarnessConfig's own
+        if isinstance(value, dict):
+            return HarnessConfig(**{k: _from_flag(k, v) for k, v in value.items()})
+        return value
 
     @model_validator(mode="after")
     def _check(self):
@@ -62,6 +71,17 @@ class GlyphbenchTasksetConfig(vf.TasksetConfig):
             return resolve_tasks(list(self.tasks))
         except LookupError as e:   # UnknownTaskError: pydantic reports only ValueErrors cleanly
             raise ValueError(str(e)) from None
+
+
+def _from_flag(key: str, value):
+    """A flag's string as the harness field's type reads it ("2" -> 2), else unchanged."""
+    field = HarnessConfig.model_fields.get(key)
+    if field is None or not isinstance(value, str):
+        return value
+    try:
+        return TypeAdapter(field.annotation).validate_python(value, strict=False)
+    except ValueError:
+        return value            # HarnessConfig names the key and what it must be
 
 
 class GlyphbenchData(vf.TaskData):
