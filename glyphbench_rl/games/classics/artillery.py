@@ -9,8 +9,8 @@ import numpy as np
 
 from ...core import ActionSet, register_variants
 from ...core.params import check_int, check_range
-from .ballistics import flight, launch_velocity
-from .grid import FLOOR, PLAYER, WALL
+from ..common.palette import FLOOR, PLAYER, WALL
+from ..common.physics import flight, launch_velocity
 from .versus import LOSS, OUTCOME_REWARDS, WIN, VersusTask
 
 ENEMY, PATH, LANDED, ENEMY_LANDED = "E", "*", "x", "o"

@@ -8,7 +8,7 @@ import numpy as np
 
 from ...core import ActionSet, cell_names, register_variants
 from ...core.params import check_int, check_range
-from .grid import FLOOR
+from ..common.palette import FLOOR
 from .versus import WIN, VersusTask
 
 MISS, HIT, SUNK = "~", "X", "#"

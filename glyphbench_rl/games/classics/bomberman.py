@@ -8,8 +8,9 @@ import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
 from ...core.actions import directions
-from .grid import DELTAS, FLOOR, GOAL, PLAYER, WALL
-from .waves import Enemy, Rolls, spawn_cells, wander
+from ..common.grid import DELTAS
+from ..common.palette import FLOOR, GOAL, PLAYER, WALL
+from ..common.waves import Enemy, Rolls, spawn_cells, wander
 
 CRATE, BLAST, ENEMY = "▒", "*", "E"
 START = (1, 1)

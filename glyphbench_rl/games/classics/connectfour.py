@@ -13,7 +13,7 @@ import numpy as np
 
 from ...core import ActionSet, register_variants
 from ...core.params import check_int, check_range
-from .grid import FLOOR
+from ..common.palette import FLOOR
 from .versus import DRAW, LOSS, OUTCOME_REWARDS, WIN, VersusTask, choose
 
 YOU, THEM = "X", "O"

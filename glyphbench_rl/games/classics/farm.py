@@ -13,7 +13,8 @@ import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
 from ...core.params import check_int
-from .grid import DELTAS, MOVES, PLAYER, WALL
+from ..common.grid import DELTAS, MOVES
+from ..common.palette import PLAYER, WALL
 
 GRASS, TILLED, SEED, SEED_WET, SPROUT, SPROUT_WET, RIPE = "·", "=", "s", "S", "p", "P", "♣"
 POND = "≈"

@@ -7,8 +7,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from .arcade import fall, overlay, signed, window
-from .grid import FLOOR, PLAYER, WALL
+from ..common.palette import FLOOR, PLAYER, WALL
+from ..common.physics import fall
+from ..common.view import overlay, signed, window
 
 GROUND = "="
 FLAP, GRAVITY, MAX_FALL = -2, 1, 2   # rows per turn, positive = down

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from .boards import Bits
+from ..common.boards import Bits
 
 COLOURS = (("R", "RED"), ("G", "GREEN"), ("B", "BLUE"), ("Y", "YELLOW"), ("P", "PURPLE"), ("O", "ORANGE"))
 _TRIES = 100

@@ -7,8 +7,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from .arcade import Lane, overlay, runs
-from .grid import DELTAS, FLOOR, GOAL, PLAYER, WALL
+from ..common.grid import DELTAS
+from ..common.lanes import Lane, runs
+from ..common.palette import FLOOR, GOAL, PLAYER, WALL
+from ..common.view import overlay
 
 WATER, FILLED = "~", "●"
 CARS = {-1: "<", 1: ">"}

@@ -13,8 +13,8 @@ import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
 from ...core.params import check_int
-from .grid import DELTAS, FLOOR, GOAL, WALL, Board, interior_cells, walled_room
-from .motion import bfs_search
+from ..common.grid import DELTAS, Board, bfs_search, interior_cells, walled_room
+from ..common.palette import FLOOR, GOAL, WALL
 
 BALL, SPIKES = "●", "▲"
 # Gravity directions as DELTAS indices, in clockwise order as seen on screen: down, left, up, right.

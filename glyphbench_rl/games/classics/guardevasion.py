@@ -15,8 +15,9 @@ import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
 from ...core.params import check_int
-from .grid import DELTAS, FLOOR, GOAL, MOVES, PLAYER, WALL, bfs_distances, interior_cells, walled_room
-from .motion import bfs_search, view_cone
+from ..common.grid import DELTAS, MOVES, bfs_distances, bfs_search, interior_cells, walled_room
+from ..common.palette import FLOOR, GOAL, PLAYER, WALL
+from ..common.sight import view_cone
 
 ARROWS = "▲▼◀▶"     # a guard facing up, down, left, right (DELTAS order)
 SENTRIES = "△▽◁▷"   # a sentry, likewise

@@ -14,8 +14,8 @@ import numpy as np
 
 from ...core import GlyphTask, register_variants
 from ...core.params import check_int
-from .grid import DELTAS, FLOOR, GOAL, MOVES, PLAYER, WALL, Board, interior_cells, move_actions, walled_room
-from .motion import bfs_layers, slide
+from ..common.grid import DELTAS, MOVES, Board, bfs_layers, interior_cells, move_actions, slide, walled_room
+from ..common.palette import FLOOR, GOAL, PLAYER, WALL
 
 Cell = tuple[int, int]
 _TRIES = 500   # rock layouts tried per reset before the parameters are declared impossible

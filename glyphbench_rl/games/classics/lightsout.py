@@ -7,7 +7,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, cell_names, register_variants
-from .grid import DELTAS, FLOOR
+from ..common.grid import DELTAS
+from ..common.palette import FLOOR
 
 LIT = "●"
 MAX_ATTEMPTS = 1000  # generation retries before a parameter set is declared impossible

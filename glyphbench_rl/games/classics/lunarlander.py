@@ -11,8 +11,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from .arcade import overlay, signed
-from .grid import FLOOR, PLAYER, WALL
+from ..common.palette import FLOOR, PLAYER, WALL
+from ..common.view import overlay, signed
 
 PAD = "="
 UNIT = 10          # tenths per cell

@@ -7,7 +7,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import GlyphTask, register_variants
-from .grid import DELTAS, FLOOR, GOAL, PLAYER, WALL, Board, bfs_distances, move_actions
+from ..common.grid import DELTAS, Board, bfs_distances, move_actions
+from ..common.palette import FLOOR, GOAL, PLAYER, WALL
 
 
 @dataclass(frozen=True)

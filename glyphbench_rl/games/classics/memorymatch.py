@@ -7,7 +7,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import GlyphTask, register_variants
-from .boards import cell_actions
+from ..common.boards import cell_actions
 
 DOWN = "■"
 FACES = "abcdefghijklmnopqrstuvwxyz"

@@ -11,8 +11,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import GlyphTask, register_variants
-from .boards import Bits, cell_actions
-from .grid import FLOOR
+from ..common.boards import Bits, cell_actions
+from ..common.palette import FLOOR
 
 HIDDEN, MINE = "■", "*"
 NUMBERS = "·12345678"      # glyph of an open cell by the count of mines around it

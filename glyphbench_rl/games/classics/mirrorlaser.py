@@ -15,8 +15,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import GlyphTask, register_variants
-from .boards import cell_actions
-from .grid import FLOOR, GOAL, WALL
+from ..common.boards import cell_actions
+from ..common.palette import FLOOR, GOAL, WALL
 
 DELTAS = ((-1, 0), (0, 1), (1, 0), (0, -1))          # N E S W
 LASERS = "▲▶▼◀"                                        # the laser glyph facing N E S W

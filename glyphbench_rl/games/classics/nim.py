@@ -10,7 +10,7 @@ import numpy as np
 
 from ...core import ActionSet, register_variants
 from ...core.params import check_int, check_range
-from .grid import FLOOR
+from ..common.palette import FLOOR
 from .versus import LOSS, OUTCOME_REWARDS, WIN, VersusTask, choose
 
 OBJECT = "●"

@@ -13,8 +13,8 @@ from functools import lru_cache
 import numpy as np
 
 from ...core import GlyphTask, register_variants
-from .boards import Bits, cell_actions, cell_of, clue_text, runs
-from .grid import FLOOR
+from ..common.boards import Bits, cell_actions, cell_of, clue_text, runs
+from ..common.palette import FLOOR
 
 FILLED, MARK = "■", "x"
 _TRIES = 2000

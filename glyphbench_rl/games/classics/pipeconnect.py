@@ -16,7 +16,7 @@ from heapq import heappop, heappush
 import numpy as np
 
 from ...core import GlyphTask, register_variants
-from .boards import Bits, cell_actions
+from ..common.boards import Bits, cell_actions
 
 # Sides in clockwise order; a tile's openings are a 4-bit mask (bit d = side d), so a quarter
 # turn clockwise rotates the mask left by one.

@@ -7,8 +7,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from .arcade import fall, move_vertical, overlay, signed, window
-from .grid import FLOOR, PLAYER, WALL
+from ..common.palette import FLOOR, PLAYER, WALL
+from ..common.physics import fall, move_vertical
+from ..common.view import overlay, signed, window
 
 COIN, FLAG = "o", "⚑"
 JUMP_SPEED, GRAVITY, MAX_FALL = 2, 1, 2   # rows per turn, positive = down

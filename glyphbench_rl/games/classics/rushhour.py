@@ -17,8 +17,8 @@ import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
 from ...core.params import check_int
-from .grid import FLOOR, GOAL, WALL
-from .motion import bfs_search
+from ..common.grid import bfs_search
+from ..common.palette import FLOOR, GOAL, WALL
 
 N = 6                   # the lot is N x N
 EXIT_ROW = 2            # the exit is in the right wall of this row

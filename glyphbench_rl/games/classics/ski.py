@@ -7,8 +7,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from .arcade import overlay, window
-from .grid import FLOOR, PLAYER
+from ..common.palette import FLOOR, PLAYER
+from ..common.view import overlay, window
 
 TREE, FLAG, FINISH = "T", "|", "="
 SKIER_ROW = 1      # the skier's row on screen; the slope scrolls up past it

@@ -8,7 +8,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import GlyphTask, register_variants
-from .grid import DELTAS, FLOOR, OPPOSITE, move_actions
+from ..common.grid import DELTAS, OPPOSITE, move_actions
+from ..common.palette import FLOOR
 
 HEADS = "▲▼◀▶"  # indexed like DELTAS: up, down, left, right
 

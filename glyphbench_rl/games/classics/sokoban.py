@@ -17,7 +17,8 @@ import numpy as np
 
 from ...core import GlyphTask, register_variants
 from ...core.params import check_int
-from .grid import DELTAS, FLOOR, GOAL, MOVES, PLAYER, WALL, move_actions, shortest_path
+from ..common.grid import DELTAS, MOVES, move_actions, shortest_path
+from ..common.palette import FLOOR, GOAL, PLAYER, WALL
 
 BOX, BOX_ON_GOAL, PLAYER_ON_GOAL = "$", "*", "+"   # the classic Sokoban text notation
 Cell = tuple[int, int]

@@ -7,8 +7,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from .arcade import Bag, move_vertical
-from .grid import FLOOR
+from ..common.lanes import Bag
+from ..common.palette import FLOOR
+from ..common.physics import move_vertical
 
 BLOCK, PIECE = "#", "@"
 

@@ -7,8 +7,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, cell_names, register_variants
-from .grid import FLOOR
-from .waves import Enemy, covered_steps, spawn_schedule, volley, walk_path
+from ..common.palette import FLOOR
+from ..common.waves import Enemy, covered_steps, spawn_schedule, volley, walk_path
 
 PATH = "░"
 HEIGHT, WIDTH = 7, 10

@@ -13,7 +13,8 @@ import numpy as np
 
 from ...core import register_variants
 from ...core.params import check_int, check_range
-from .grid import DELTAS, FLOOR, PLAYER, WALL, move_actions
+from ..common.grid import DELTAS, move_actions
+from ..common.palette import FLOOR, PLAYER, WALL
 from .versus import DRAW, LOSS, OUTCOME_REWARDS, WIN, VersusTask, choose
 
 TRAIL, RIVAL, RIVAL_TRAIL, CRASH = "o", "E", "e", "*"

@@ -7,9 +7,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import GlyphTask, register_variants
-from .grid import FLOOR, move_actions
+from ..common.grid import move_actions
 
 # A tile 2**k is drawn as the k-th character here: "1" is 2, "9" is 512, "A" is 1024, ...
+from ..common.palette import FLOOR
 TILE_GLYPHS = "123456789ABCDEFGH"
 
 

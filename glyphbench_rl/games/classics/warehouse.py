@@ -12,7 +12,8 @@ import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
 from ...core.params import check_int
-from .grid import DELTAS, FLOOR, MOVES, PLAYER, WALL, Board, bfs_distances
+from ..common.grid import DELTAS, MOVES, Board, bfs_distances
+from ..common.palette import FLOOR, PLAYER, WALL
 
 FILLED = "■"
 Cell = tuple[int, int]

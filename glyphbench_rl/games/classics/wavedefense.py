@@ -7,8 +7,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from .grid import FLOOR
-from .waves import Enemy, Rolls, hit, march
+from ..common.palette import FLOOR
+from ..common.waves import Enemy, Rolls, hit, march
 
 DEFENDER, INVADER, ARMORED, SHOT, BOMB = "▲", "M", "W", "|", "!"
 LEFT, RIGHT, SHOOT = 0, 1, 2      # action indices
