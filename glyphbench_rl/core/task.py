@@ -22,6 +22,7 @@ import numpy as np
 
 from .actions import ActionSet
 from .frame import Frame, build_frame
+from .params import ParamError, check_params
 from .seeding import check_seed
 
 STANDARD_TURN_CAP = 512
@@ -204,7 +205,12 @@ class GlyphTask(gym.Env[str, int]):
         if unknown:
             raise ValueError(f"{self.task_id}: unknown parameter {unknown[0]!r}; "
                              f"valid parameters: {', '.join(names + ['max_turns']) }")
-        return self.Params(**params)
+        values = self.Params(**params)
+        try:
+            check_params(values)
+        except ParamError as e:
+            raise ParamError(f"{self.task_id}: {e}") from None
+        return values
 
     def _reset_counters(self) -> None:
         self.turn = 0
