@@ -86,8 +86,9 @@ def param_specs(cls: type) -> dict[str, tuple[Any, ParamSpec | None]]:
 
 def undeclared(cls: type) -> list[str]:
     """Fields of ``cls`` that declare no range or choices (a bool field needs neither)."""
-    return [name for name, (kind, spec) in param_specs(cls).items()
-            if spec is None or (kind is not bool and spec.choices is None and spec.lo is None and spec.hi is None)]
+    def bare(kind: Any, spec: ParamSpec) -> bool:
+        return kind is not bool and spec.choices is None and spec.lo is None and spec.hi is None
+    return [name for name, (kind, spec) in param_specs(cls).items() if spec is None or bare(kind, spec)]
 
 
 def check_params(params: Any) -> None:

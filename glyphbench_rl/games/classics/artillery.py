@@ -22,13 +22,18 @@ _TRIES = 200    # terrains tried per reset before the parameters are declared im
 class ArtilleryParams:
     width: int = param(28, 16, 60)
     height: int = param(10, 8, 30)
-    max_wind: float = param(0.3, 0, 1)       # wind is drawn from [-max_wind, max_wind], in cells/s^2 (gravity is 1)
+    # wind is drawn from [-max_wind, max_wind], in cells/s^2 (gravity is 1)
+    max_wind: float = param(0.3, 0, 1)
     angle_step: int = param(5, 1, 20)        # degrees per RAISE / LOWER
-    max_power: int = param(30, 5, 100)       # power runs 1..max_power; a shell leaves at power x speed_step cells/s
+    # power runs 1..max_power; a shell leaves at power x speed_step cells/s
+    max_power: int = param(30, 5, 100)
     speed_step: float = param(0.25, 0.05, 2)
-    blast: int = param(1, 0, 3)              # a shell landing within this many cells (any direction) hits a cannon
-    aim_error: float = param(6.0, 0, 50)     # spread (power levels) of the enemy's first shot around a hitting power
-    aim_decay: float = param(0.75, 0, 1)     # the enemy's spread is multiplied by this after every shot it fires
+    # a shell landing within this many cells (any direction) hits a cannon
+    blast: int = param(1, 0, 3)
+    # spread (power levels) of the enemy's first shot around a hitting power
+    aim_error: float = param(6.0, 0, 50)
+    # the enemy's spread is multiplied by this after every shot it fires
+    aim_decay: float = param(0.75, 0, 1)
 
 
 class Artillery(VersusTask):

@@ -23,7 +23,8 @@ YOU, THEM = "X", "O"
 class ConnectFourParams:
     rows: int = param(6, 4, 10)
     cols: int = param(7, 4, 12)
-    strength: float = param(0.9, 0, 1)   # probability that the opponent plays its search's move, else a random one
+    # probability that the opponent plays its search's move, else a random one
+    strength: float = param(0.9, 0, 1)
 
 
 class Bitboard:

@@ -26,7 +26,8 @@ class FlappyParams:
     # (checked by exhaustive search over the reachable states in the tests).
     gap: int = param(4, 4, lambda p: p.height - 3)                # open rows in each pipe
     spacing: int = param(6, PIPE_WIDTH + 3, lambda p: p.width)    # columns from one pipe to the next
-    max_shift: int = param(3, 0, lambda p: p.spacing - 1)         # most rows a gap moves from one pipe to the next
+    # most rows a gap moves from one pipe to the next
+    max_shift: int = param(3, 0, lambda p: p.spacing - 1)
     target: int = param(10, 1, 100)          # pipes to pass
     crash_penalty: float = param(0.5, 0, 1)
 

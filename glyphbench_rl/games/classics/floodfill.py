@@ -25,7 +25,8 @@ class FloodFillParams:
     size: int = param(8, 3, 16)              # the board is size x size
     colours: int = param(6, 2, len(COLOURS))
     slack: int = param(0, 0, 20)             # moves allowed beyond the solver's solution
-    progress_share: float = param(0.5, 0, 1, open_hi=True)   # the return flooding earns along the way; the rest is for finishing
+    # the return flooding earns along the way; the rest is for finishing
+    progress_share: float = param(0.5, 0, 1, open_hi=True)
 
 
 def pick(bits: Bits, masks: list[int], region: int, colour: int) -> int:

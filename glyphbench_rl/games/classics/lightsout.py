@@ -21,7 +21,8 @@ class LightsOutParams:
     # Boards are scrambled by k distinct random presses, k in min_presses..max_scramble. The
     # scramble itself is a solution, so the optimum never exceeds k: k below min_presses could
     # never pass the min_presses check and is not drawn.
-    min_presses: int = param(4, 1, lambda p: p.max_scramble)   # the optimum of every generated board is at least this
+    # the optimum of every generated board is at least this
+    min_presses: int = param(4, 1, lambda p: p.max_scramble)
     max_scramble: int = param(10, 1, lambda p: p.size * p.size)
     time_weight: float = param(0.5, 0, 1, open_hi=True)   # share of the win reward lost by using every turn
 

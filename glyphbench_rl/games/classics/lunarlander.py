@@ -24,7 +24,8 @@ class LunarLanderParams:
     width: int = param(14, 8, 30)
     height: int = param(9, 7, 20)
     gravity: int = param(1, 1, 5)            # tenths of a cell per turn, added to Vy every turn
-    main_thrust: int = param(3, lambda p: p.gravity + 1, lambda p: 5 * p.gravity)   # subtracted from Vy by the main engine
+    # subtracted from Vy by the main engine
+    main_thrust: int = param(3, lambda p: p.gravity + 1, lambda p: 5 * p.gravity)
     side_thrust: int = param(2, 1, 5)        # added to or subtracted from Vx by a side thruster
     fuel: int = param(40, 1, 200)            # turns of thrust
     safe_vy: int = param(3, 0, 10)           # the fastest touchdown that does not crash

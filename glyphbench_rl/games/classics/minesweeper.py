@@ -23,7 +23,8 @@ NUMBERS = "·12345678"      # glyph of an open cell by the count of mines around
 class MinesweeperParams:
     size: int = param(8, 4, 16)
     mines: int = param(10, 1, lambda p: p.size * p.size - 9)
-    progress_share: float = param(0.5, 0, 1, open_hi=True)   # the return opening every safe cell earns along the way
+    # the return opening every safe cell earns along the way
+    progress_share: float = param(0.5, 0, 1, open_hi=True)
     # what opening a mine costs: a lost game never opened every safe cell, so its return is
     # progress - penalty < 0
     mine_penalty: float = param(0.5, lambda p: p.progress_share, 1)

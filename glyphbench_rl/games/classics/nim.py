@@ -20,7 +20,8 @@ OBJECT = "●"
 class NimParams:
     heaps: int = param(3, 2, 9)
     max_heap: int = param(5, 2, 9)           # heap sizes are drawn from 1..max_heap; one turn takes 1..max_heap
-    strength: float = param(0.6, 0, 1)       # probability that the opponent plays a nim-sum move when it has one
+    # probability that the opponent plays a nim-sum move when it has one
+    strength: float = param(0.6, 0, 1)
 
 
 def winning_moves(heaps: list[int]) -> list[tuple[int, int]]:

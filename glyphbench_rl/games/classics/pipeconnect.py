@@ -53,7 +53,8 @@ COST = [[[min((q for q in range(4) if turn(base, r + q) & need == need), default
 @dataclass(frozen=True)
 class PipeConnectParams:
     size: int = param(5, 3, 12)
-    min_rotations: int = param(4, 1, lambda p: 2 * p.size)   # the fewest rotations solving a level is at least this
+    # the fewest rotations solving a level is at least this
+    min_rotations: int = param(4, 1, lambda p: 2 * p.size)
     time_weight: float = param(0.5, 0, 1, open_hi=True)      # share of the win reward lost by using every turn
 
 

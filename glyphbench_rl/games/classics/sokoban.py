@@ -33,9 +33,12 @@ _TRIES = 1000             # rooms tried per reset before the parameters are decl
 class SokobanParams:
     size: int = param(6, 4, 12)              # the room's interior is size x size; the grid adds the outer wall
     boxes: int = param(1, 1, 4)              # boxes, and as many goals
-    inner_walls: int = param(2, 0, lambda p: p.size * p.size // 4)   # wall cells tried inside the room (kept only if the room stays connected)
-    min_pushes: int = param(3, 1, lambda p: 6 * p.size)   # generated levels need at least this many pushes to solve
-    max_moves: int = param(30, lambda p: p.min_pushes, 512)   # ... and a push-optimal solution of at most this many moves
+    # wall cells tried inside the room (kept only if the room stays connected)
+    inner_walls: int = param(2, 0, lambda p: p.size * p.size // 4)
+    # generated levels need at least this many pushes to solve
+    min_pushes: int = param(3, 1, lambda p: 6 * p.size)
+    # ... and a push-optimal solution of at most this many moves
+    max_moves: int = param(30, lambda p: p.min_pushes, 512)
 
 
 class _Room:

@@ -23,8 +23,10 @@ TRAIL, RIVAL, RIVAL_TRAIL, CRASH = "o", "E", "e", "*"
 @dataclass(frozen=True)
 class TronParams:
     size: int = param(12, 6, 26)             # the arena is size x size; leaving it crashes
-    walls: int = param(4, 0, lambda p: p.size * p.size // 8)   # wall pairs placed point-symmetrically, so neither side is favoured
-    strength: float = param(0.9, 0, 1)       # probability that the opponent takes its flood-fill move, else a random safe one
+    # wall pairs placed point-symmetrically, so neither side is favoured
+    walls: int = param(4, 0, lambda p: p.size * p.size // 8)
+    # probability that the opponent takes its flood-fill move, else a random safe one
+    strength: float = param(0.9, 0, 1)
 
 
 def flood(start: int, free: int, width: int) -> int:

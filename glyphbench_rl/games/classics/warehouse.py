@@ -24,7 +24,8 @@ class WarehouseParams:
     size: int = param(9, 5, 20)              # the floor is size x size inside the outer wall
     packages: int = param(3, 1, lambda p: min(8, (p.size + 1) // 2))   # packages, each with its own dock
     rack_gap: int = param(2, 1, lambda p: p.size)   # floor rows between two rows of racks
-    delivery_share: float = param(0.5, 0, 1, open_lo=True, open_hi=True)   # part of the return shared by the deliveries; the rest is the finish bonus
+    # part of the return shared by the deliveries; the rest is the finish bonus
+    delivery_share: float = param(0.5, 0, 1, open_lo=True, open_hi=True)
     time_weight: float = param(0.5, 0, 1, open_hi=True)   # share of the finish bonus lost by using every turn
 
 

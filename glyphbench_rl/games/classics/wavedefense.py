@@ -21,9 +21,11 @@ class WaveDefenseParams:
     height: int = param(10, 6, 20)
     target: int = param(15, 1, 99)           # invaders destroyed to win
     rows: int = param(2, 1, lambda p: min(4, p.height - 3))   # formation rows per wave, 3 rows left below it
-    cols: int = param(4, 1, lambda p: (p.width - 1) // 2)     # formation columns per wave (every other column, with room to march)
+    # formation columns per wave (every other column, with room to march)
+    cols: int = param(4, 1, lambda p: (p.width - 1) // 2)
     fill: float = param(0.85, 0, 1, open_lo=True)   # chance that a formation slot holds an invader
-    armor_step: float = param(0.25, 0, 1)    # wave w: an invader is armored (2 hits) with chance armor_step x (w-1)
+    # wave w: an invader is armored (2 hits) with chance armor_step x (w-1)
+    armor_step: float = param(0.25, 0, 1)
     march_period: int = param(2, 1, 9)       # the formation steps once every this many turns
     shot_speed: int = param(3, 1, 9)         # cells your shot climbs per turn
     fire_chance: float = param(0.2, 0, 1)    # chance per turn that an invader drops a bomb

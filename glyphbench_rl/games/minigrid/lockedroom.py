@@ -22,7 +22,8 @@ from .world import COLOR_NAMES, Door, Goal, Key, Wall
 
 @dataclass(frozen=True)
 class LockedRoomParams(MiniGridParams):
-    size: int = param(19, 13, 31, odd=True)   # the grid is size x size; odd, so the six rooms fit MiniGrid's layout
+    # the grid is size x size; odd, so the six rooms fit MiniGrid's layout
+    size: int = param(19, 13, 31, odd=True)
 
 
 @dataclass
