@@ -82,3 +82,79 @@ def test_catalog_task_not_yet_implemented_says_so():
     from glyphbench_rl.core import UnknownTaskError, make
     with pytest.raises(UnknownTaskError, match="in the GlyphBench catalog but not implemented"):
         make("glyphbench/minihack-boxoban-hard-v0")
+
+
+SNAKE = "glyphbench/classics-snake-easy-v0"
+
+
+def test_named_streams_are_per_episode_deterministic_and_leave_the_main_rng_alone():
+    from glyphbench_rl.core import make
+    a, b = make(SNAKE), make(SNAKE)
+    with pytest.raises(RuntimeError, match="reset"):
+        a.stream("mobs")
+    a.reset(seed=5)
+    b.reset(seed=5)
+    mobs = a.stream("mobs")
+    assert a.stream("mobs") is mobs and a.stream("mobs", 2) is not mobs
+    x = mobs.integers(1 << 62, size=8)
+    assert np.array_equal(x, seeding.generator(5, "mobs").integers(1 << 62, size=8))   # the seed's "mobs"
+    assert np.array_equal(x, b.stream("mobs").integers(1 << 62, size=8))
+    assert not np.array_equal(x, a.stream("plants").integers(1 << 62, size=8))
+    a.stream("mobs").random(1000)                                   # drawing here ...
+    assert a.np_random.bit_generator.state == b.np_random.bit_generator.state   # ... moves nothing there
+    for move in ["UP", "RIGHT", "RIGHT", "DOWN", "DOWN", "LEFT"] * 3:       # same food, same game
+        assert a.step(move)[:4] == b.step(move)[:4]
+        if a.done:
+            break
+    a.reset(seed=5)
+    assert a.stream("mobs") is not mobs and np.array_equal(a.stream("mobs").integers(1 << 62, size=8), x)
+    a.reset(seed=6)
+    assert not np.array_equal(a.stream("mobs").integers(1 << 62, size=8), x)
+    a.reset(seed=5)
+    a.reset()                                                       # continues the seeded stream
+    assert not np.array_equal(a.stream("mobs").integers(1 << 62, size=8), x)
+    with pytest.raises(TypeError, match="string"):
+        a.stream(0)
+
+
+def test_derived_sequences_match_seed_sequence():
+    parent = np.random.SeedSequence(11)
+    assert (seeding.derive(parent, "level", 3).generate_state(4)
+            == seeding.seed_sequence(11, "level", 3).generate_state(4)).all()
+    child = parent.spawn(1)[0]
+    assert not np.array_equal(seeding.derive(child, "a").generate_state(4),
+                              seeding.derive(parent, "a").generate_state(4))
+
+
+def test_nle_seeds_are_stable_distinct_and_in_range():
+    core, disp, lgen = seeding.nle_seeds(7)
+    assert seeding.nle_seeds(7) == (core, disp, lgen) == seeding.nle_seeds(np.random.SeedSequence(7))
+    assert all(type(v) is int and 0 <= v < 2**63 for v in (core, disp, lgen))
+    assert len({core, disp, lgen}) == 3
+    many = [seeding.nle_seeds(s) for s in range(500)]
+    assert len({s for triple in many for s in triple}) == 1500
+    assert seeding.nle_seeds(np.random.SeedSequence(7).spawn(1)[0]) != (core, disp, lgen)
+    with pytest.raises(TypeError):
+        seeding.nle_seeds(7.0)
+
+
+def test_jax_key_material_is_stable_distinct_and_in_range():
+    key = seeding.jax_key_data(3)
+    assert key.shape == (2,) and key.dtype == np.uint32
+    assert np.array_equal(key, seeding.jax_key_data(3))
+    assert np.array_equal(key, seeding.jax_key_data(np.random.SeedSequence(3)))
+    keys = {tuple(int(w) for w in seeding.jax_key_data(s)) for s in range(500)}
+    assert len(keys) == 500
+    ints = [seeding.jax_seed(s) for s in range(500)]
+    assert all(type(v) is int and 0 <= v < 2**31 for v in ints) and len(set(ints)) == 500
+    assert ints == [seeding.jax_seed(s) for s in range(500)]
+    with pytest.raises(ValueError):
+        seeding.jax_seed(-1)
+
+
+def test_jax_accepts_the_key_material():
+    jax = pytest.importorskip("jax")
+    a = jax.random.uniform(jax.random.PRNGKey(seeding.jax_seed(3)))
+    assert a == jax.random.uniform(jax.random.PRNGKey(seeding.jax_seed(3)))
+    key = jax.random.wrap_key_data(seeding.jax_key_data(3))
+    assert jax.random.uniform(key) == jax.random.uniform(jax.random.wrap_key_data(seeding.jax_key_data(3)))

@@ -6,8 +6,26 @@ Games register their variants next to their class, as data::
         "glyphbench/classics-snake-easy-v0": dict(size=8, max_turns=128),
     })
 
-A spec's ``game`` may also be a ``"module:Class"`` string so that wrappers over heavy engines
-(JAX, NLE) are imported only when one of their tasks is made.
+A spec's ``game`` may also be a ``"module:Class"`` string: the module is imported only when one
+of its tasks is made (``TaskSpec.load_class``); registering, listing, ``get_spec`` and
+``game_name`` never import it. This is how families over heavy engines register, so that
+``import glyphbench_rl`` and ``glyphbench list`` stay light (``tests/test_light_import.py``
+checks that neither loads jax, nle, minihack, torch or transformers). Such a family (NetHack
+and MiniHack over ``nle``/``minihack``, the full Craftax over ``craftax``/JAX) keeps two kinds of
+module:
+
+- its package ``__init__`` (imported by ``games/__init__.py``) and a light variants module that
+  import nothing heavy and hold only the variants table, registered with strings::
+
+      register_variants("glyphbench_rl.games.nethack.engine:NetHackTask", "NetHack", {
+          "glyphbench/nethack-full-v0": dict(character="mon-hum-neu-mal", max_turns=10_000),
+      }, tier="extended")
+
+  (parameter values are plain data, checked by the class's ``Params`` when the task is made);
+- the engine module (``engine.py`` above) that imports ``nle`` / ``jax`` at module level and
+  defines the ``GlyphTask`` subclass, imported by nothing but the registry.
+
+Engines seed from the task seed through ``core.seeding`` (``nle_seeds``, ``jax_key_data``).
 """
 
 from __future__ import annotations

@@ -1,8 +1,17 @@
-"""Seed ranges and derived random streams.
+"""Seed ranges, derived random streams and seeds for external engines.
 
 Training draws game instances from [0, 1,000,000) and held-out evaluation from
 [1,000,000, 2,000,000), so the two never overlap. Independent streams are derived with
-``numpy.random.SeedSequence`` (never ``seed + i``, whose streams collide across runs).
+``numpy.random.SeedSequence`` (never ``seed + i``, whose streams collide across runs): a stream
+is named by keys (strings hash stably across processes), and the same (seed, names) always
+gives the same numbers.
+
+Engines with their own generators get their seeds from the task seed the same way, under
+fixed names: ``nle_seeds(seed)`` gives NetHack's (core, disp, lgen), ``jax_key_data(seed)`` /
+``jax_seed(seed)`` a JAX PRNG key's two words / an int for ``jax.random.PRNGKey``. Each also
+takes an episode's ``SeedSequence`` (``GlyphTask.seed_sequence``), so an unseeded reset that
+continues the stream gives the engine fresh, reproducible seeds too. Nothing here imports the
+engines.
 """
 
 from __future__ import annotations
@@ -50,6 +59,14 @@ def seed_sequence(seed: int, *keys: int | str) -> np.random.SeedSequence:
     return np.random.SeedSequence(seed, spawn_key=tuple(_key(k) for k in keys))
 
 
+def derive(parent: np.random.SeedSequence, *keys: int | str) -> np.random.SeedSequence:
+    """The child of ``parent`` named by ``keys``: ``derive(SeedSequence(s), *k)`` is
+    ``seed_sequence(s, *k)``. A string key is a 64-bit hash, so named children do not meet the
+    ``spawn()`` children (keys 0, 1, 2 ...) that unseeded resets use."""
+    return np.random.SeedSequence(parent.entropy, spawn_key=(*parent.spawn_key, *map(_key, keys)),
+                                  pool_size=parent.pool_size)
+
+
 def generator(seed: int, *keys: int | str) -> np.random.Generator:
     return np.random.Generator(np.random.PCG64(seed_sequence(seed, *keys)))
 
@@ -67,3 +84,31 @@ def heldout_seeds(count: int, start: int = 0) -> list[int]:
     if start < 0 or count < 0 or start + count > len(HELDOUT_SEEDS):
         raise ValueError(f"held-out seeds {start}..{start + count} exceed the held-out range")
     return list(HELDOUT_SEEDS[start:start + count])
+
+
+
+# -- seeds for external engines ---------------------------------------------------------------
+def _root(seed: int | np.random.SeedSequence) -> np.random.SeedSequence:
+    if isinstance(seed, np.random.SeedSequence):
+        return seed
+    return np.random.SeedSequence(check_seed(seed))
+
+
+def nle_seeds(seed: int | np.random.SeedSequence) -> tuple[int, int, int]:
+    """NetHack's three generator seeds ``(core, disp, lgen)`` for a task seed (or an episode's
+    SeedSequence), for NLE's ``env.seed(core, disp, reseed=False, lgen=lgen)``. Each is below
+    2**63, so it fits NLE's unsigned long and a signed 64-bit integer alike."""
+    words = derive(_root(seed), "nle").generate_state(3, np.uint64)
+    return tuple(int(w) >> 1 for w in words)
+
+
+def jax_key_data(seed: int | np.random.SeedSequence) -> np.ndarray:
+    """The two uint32 words of a JAX threefry key for a task seed (or an episode's
+    SeedSequence): ``jax.random.wrap_key_data(jax_key_data(s))``, or the array itself where a
+    raw ``uint32[2]`` key is expected. 64 bits of key space, unlike ``PRNGKey(int32)``."""
+    return derive(_root(seed), "jax").generate_state(2, np.uint32)
+
+
+def jax_seed(seed: int | np.random.SeedSequence) -> int:
+    """An int in [0, 2**31) for ``jax.random.PRNGKey(...)``: accepted with or without x64."""
+    return int(derive(_root(seed), "jax-seed").generate_state(1, np.uint32)[0]) >> 1

@@ -6,9 +6,16 @@ the end, rewards accumulated (never overwritten) within a step, and the system p
 from the game's rules template, its parameters and its ActionSet.
 
 A game supplies: ``title``, ``rules``/``rewards``/``ends`` templates (formatted with the game's
-parameters), a ``Params`` dataclass, a glyph vocabulary ``glyphs`` (legend order), an ActionSet,
-and four hooks: ``_setup(rng)``, ``_act(action)``, ``_grid()`` and ``_hud()``. Inside ``_act``
-the game reports outcomes with ``self.reward(x)``, ``self.finish(won)`` and ``self.say(text)``.
+parameters), a ``Params`` dataclass whose fields declare their ranges (``core.params.param``;
+checked here, once), a glyph vocabulary ``glyphs`` (legend order), an ActionSet, and four hooks:
+``_setup(rng)``, ``_act(action)``, ``_grid()`` and ``_hud()``. Inside ``_act`` the game reports
+outcomes with ``self.reward(x)``, ``self.finish(won)`` and ``self.say(text)``.
+
+Randomness: ``_setup`` gets the episode's one generator. Rules that want their own stream (so
+that adding a draw to one rule does not shift every other) take ``self.stream("mobs")``: a
+generator derived from the episode's SeedSequence and the name, the same object for the whole
+episode, independent of the main generator. Wrappers over engines with their own generators
+seed them from ``self.seed_sequence`` (``seeding.nle_seeds``, ``seeding.jax_key_data``).
 """
 
 from __future__ import annotations
@@ -22,7 +29,8 @@ import numpy as np
 
 from .actions import ActionSet
 from .frame import Frame, build_frame
-from .seeding import check_seed
+from .params import ParamError, check_params
+from .seeding import check_seed, derive
 
 STANDARD_TURN_CAP = 512
 _RETURN_EPS = 1e-9
@@ -81,6 +89,7 @@ class GlyphTask(gym.Env[str, int]):
         self.observation_space = gym.spaces.Text(max_length=200_000, min_length=1,
                                                  charset=frozenset(chars))
         self._seedseq: np.random.SeedSequence | None = None
+        self._streams: dict[tuple, np.random.Generator] = {}
         self._started = False
         self._reset_counters()
 
@@ -126,6 +135,28 @@ class GlyphTask(gym.Env[str, int]):
     def say(self, text: str) -> None:
         self._messages.append(text)
 
+    def stream(self, name: str, *keys: int | str) -> np.random.Generator:
+        """This episode's random stream called ``name`` (and ``keys``): a deterministic function
+        of the episode's SeedSequence and the names, the same generator on every call within
+        the episode, and independent of the generator ``_setup`` got (drawing from it changes
+        nothing there)."""
+        if not isinstance(name, str):
+            raise TypeError(f"a stream is named by a string first, got {name!r}")
+        if self._seedseq is None:
+            raise RuntimeError(f"{self.task_id}: call reset(seed=...) before using a stream")
+        key = (name, *keys)
+        gen = self._streams.get(key)
+        if gen is None:
+            gen = self._streams[key] = np.random.Generator(np.random.PCG64(derive(self._seedseq, *key)))
+        return gen
+
+    @property
+    def seed_sequence(self) -> np.random.SeedSequence:
+        """The episode's SeedSequence, for seeding external engines (``core.seeding``)."""
+        if self._seedseq is None:
+            raise RuntimeError(f"{self.task_id}: call reset(seed=...) first")
+        return self._seedseq
+
     def time_bonus(self, weight: float) -> float:
         """1 minus ``weight`` x the share of the horizon used so far: the usual win reward of
         puzzles that pay for finishing early."""
@@ -145,6 +176,7 @@ class GlyphTask(gym.Env[str, int]):
         rng = np.random.Generator(np.random.PCG64(self._seedseq))
         self._np_random = rng
         self._np_random_seed = self.seed_value if self.seed_value is not None else -1
+        self._streams = {}
         self._reset_counters()
         self._setup(rng)
         self._started = True
@@ -204,7 +236,12 @@ class GlyphTask(gym.Env[str, int]):
         if unknown:
             raise ValueError(f"{self.task_id}: unknown parameter {unknown[0]!r}; "
                              f"valid parameters: {', '.join(names + ['max_turns']) }")
-        return self.Params(**params)
+        values = self.Params(**params)
+        try:
+            check_params(values)
+        except ParamError as e:
+            raise ParamError(f"{self.task_id}: {e}") from None
+        return values
 
     def _reset_counters(self) -> None:
         self.turn = 0

@@ -4,7 +4,7 @@ import pytest
 
 import glyphbench_rl
 from glyphbench_rl.games.classics.artillery import MAX_ANGLE, MIN_ANGLE
-from glyphbench_rl.games.classics.ballistics import flight, launch_velocity
+from glyphbench_rl.games.common.physics import flight, launch_velocity
 
 ID = "glyphbench/classics-artillery-v0"
 

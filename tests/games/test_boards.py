@@ -1,6 +1,6 @@
 import pytest
 
-from glyphbench_rl.games.classics.boards import Bits, cell_actions, cell_of
+from glyphbench_rl.games.common.boards import Bits, cell_actions, cell_of
 
 
 def mask(lines):

@@ -4,7 +4,8 @@ import pytest
 
 import glyphbench_rl
 from glyphbench_rl.games.classics.bomberman import CRATE, SAFE, START
-from glyphbench_rl.games.classics.grid import DELTAS, FLOOR, MOVES, WALL
+from glyphbench_rl.games.common.grid import DELTAS, MOVES
+from glyphbench_rl.games.common.palette import FLOOR, WALL
 
 TASK = "glyphbench/classics-bomberman-v0"
 NAMES = tuple(MOVES)

@@ -4,7 +4,8 @@ import glyphbench_rl
 from glyphbench_rl.core import check_frame
 from glyphbench_rl.games.classics import farm  # noqa: F401  (registers the task)
 from glyphbench_rl.games.classics.farm import GRASS, POND, RIPE, SEED, SEED_WET, SPROUT, SPROUT_WET, TILLED
-from glyphbench_rl.games.classics.grid import DELTAS, MOVES, WALL, shortest_path
+from glyphbench_rl.games.common.grid import DELTAS, MOVES, shortest_path
+from glyphbench_rl.games.common.palette import WALL
 
 TASK = "glyphbench/classics-farm-v0"
 WORK = {RIPE: "HARVEST", SEED: "WATER", SPROUT: "WATER", TILLED: "PLANT", GRASS: "TILL"}

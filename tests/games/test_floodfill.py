@@ -2,7 +2,7 @@ import numpy as np
 import pytest
 
 import glyphbench_rl
-from glyphbench_rl.games.classics.boards import Bits
+from glyphbench_rl.games.common.boards import Bits
 from glyphbench_rl.games.classics.floodfill import greedy_plan, lower_bound, pick
 
 VARIANTS = ["easy", "hard"]

@@ -5,8 +5,8 @@ import pytest
 import glyphbench_rl
 from glyphbench_rl.core import check_frame
 from glyphbench_rl.games.classics.gravitymaze import fall, solve, turn
-from glyphbench_rl.games.classics.grid import WALL, Board
-from glyphbench_rl.games.classics.motion import bfs_search
+from glyphbench_rl.games.common.grid import Board, bfs_search
+from glyphbench_rl.games.common.palette import WALL
 
 TASK = "glyphbench/classics-gravitymaze-v0"
 DOWN, LEFT, UP, RIGHT = 1, 2, 0, 3   # DELTAS indices

@@ -4,9 +4,10 @@ import pytest
 
 import glyphbench_rl
 from glyphbench_rl.core import check_frame
-from glyphbench_rl.games.classics.grid import MOVES, WALL
+from glyphbench_rl.games.common.grid import MOVES
+from glyphbench_rl.games.common.palette import WALL
 from glyphbench_rl.games.classics.guardevasion import patrol_steps, sentry_steps
-from glyphbench_rl.games.classics.motion import view_cone
+from glyphbench_rl.games.common.sight import view_cone
 
 VARIANTS = ["easy", "medium", "hard"]
 UP, DOWN, LEFT, RIGHT = range(4)

@@ -2,9 +2,10 @@ import pytest
 
 import glyphbench_rl
 from glyphbench_rl.core import check_frame
-from glyphbench_rl.games.classics.grid import MOVES, WALL, Board
+from glyphbench_rl.games.common.grid import MOVES, Board
+from glyphbench_rl.games.common.palette import WALL
 from glyphbench_rl.games.classics.icesliding import solve
-from glyphbench_rl.games.classics.motion import bfs_search
+from glyphbench_rl.games.common.grid import bfs_search
 
 VARIANTS = ["easy", "medium", "hard"]
 

@@ -1,7 +1,8 @@
 import pytest
 
 import glyphbench_rl
-from glyphbench_rl.games.classics.grid import WALL, bfs_distances, shortest_path
+from glyphbench_rl.games.common.grid import bfs_distances, shortest_path
+from glyphbench_rl.games.common.palette import WALL
 
 
 @pytest.mark.parametrize("variant", ["easy", "medium", "hard"])

@@ -1,7 +1,7 @@
 import pytest
 
 import glyphbench_rl
-from glyphbench_rl.games.classics.boards import Bits
+from glyphbench_rl.games.common.boards import Bits
 from glyphbench_rl.games.classics.minesweeper import NUMBERS
 
 ID = "glyphbench/classics-minesweeper-v0"

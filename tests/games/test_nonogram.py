@@ -2,7 +2,7 @@ import numpy as np
 import pytest
 
 import glyphbench_rl
-from glyphbench_rl.games.classics.boards import Bits, clue_text, runs
+from glyphbench_rl.games.common.boards import Bits, clue_text, runs
 from glyphbench_rl.games.classics.nonogram import arrangements, line_solve
 
 VARIANTS = ["easy", "hard"]

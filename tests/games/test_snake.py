@@ -1,7 +1,7 @@
 import pytest
 
 import glyphbench_rl
-from glyphbench_rl.games.classics.grid import shortest_path
+from glyphbench_rl.games.common.grid import shortest_path
 
 
 def chase_food(task):

@@ -5,7 +5,7 @@ import pytest
 
 import glyphbench_rl
 from glyphbench_rl.core import check_frame
-from glyphbench_rl.games.classics.grid import MOVES
+from glyphbench_rl.games.common.grid import MOVES
 from glyphbench_rl.games.classics.sokoban import solve
 
 VARIANTS = ["easy", "medium", "hard"]

@@ -2,7 +2,7 @@ import pytest
 
 import glyphbench_rl
 from glyphbench_rl.games.classics.towerdefense import TOWERS, WAYPOINTS, trace
-from glyphbench_rl.games.classics.waves import Enemy
+from glyphbench_rl.games.common.waves import Enemy
 
 TASK = "glyphbench/classics-towerdefense-v0"
 

@@ -1,7 +1,8 @@
 import pytest
 
 import glyphbench_rl
-from glyphbench_rl.games.classics.grid import WALL, bfs_distances
+from glyphbench_rl.games.common.grid import bfs_distances
+from glyphbench_rl.games.common.palette import WALL
 from glyphbench_rl.games.classics.tron import flood
 
 ID = "glyphbench/classics-tron-v0"

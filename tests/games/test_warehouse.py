@@ -3,7 +3,8 @@ import pytest
 import glyphbench_rl
 from glyphbench_rl.core import check_frame
 from glyphbench_rl.games.classics import warehouse  # noqa: F401  (registers the task)
-from glyphbench_rl.games.classics.grid import WALL, bfs_distances, shortest_path
+from glyphbench_rl.games.common.grid import bfs_distances, shortest_path
+from glyphbench_rl.games.common.palette import WALL
 
 TASK = "glyphbench/classics-warehouse-v0"
 

@@ -1,7 +1,7 @@
 import pytest
 
 import glyphbench_rl
-from glyphbench_rl.games.classics.waves import Enemy, march
+from glyphbench_rl.games.common.waves import Enemy, march
 
 TASK = "glyphbench/classics-wavedefense-v0"
 

@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from glyphbench_rl.games.classics.waves import (Enemy, Rolls, covered_steps, hit, spawn_cells,
-                                                spawn_schedule, volley, walk_path, wander)
+from glyphbench_rl.games.common.waves import (Enemy, Rolls, covered_steps, hit, spawn_cells,
+                                             spawn_schedule, volley, walk_path, wander)
 
 
 def test_spawn_schedule_and_cells_are_seeded_and_bounded():

@@ -1,4 +1,10 @@
-"""Classics: puzzles and familiar games. Importing a module registers its tasks."""
+"""Classics: puzzles and familiar games. Importing a module registers its tasks.
+
+Each game is one module built on ``core.GlyphTask`` and the shared mechanics in ``games.common``
+(grid motion and search, lanes, physics, waves, board cells, the palette). The one engine-level
+module of the family is ``versus`` (the turn loop and outcomes of games against a built-in
+opponent); game modules import it, never each other.
+"""
 
 from . import snake  # noqa: F401
 from . import maze  # noqa: F401

@@ -8,9 +8,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, register_variants
-from ...core.params import check_int, check_range
-from .ballistics import flight, launch_velocity
-from .grid import FLOOR, PLAYER, WALL
+from ...core.params import param
+from ..common.palette import FLOOR, PLAYER, WALL
+from ..common.physics import flight, launch_velocity
 from .versus import LOSS, OUTCOME_REWARDS, WIN, VersusTask
 
 ENEMY, PATH, LANDED, ENEMY_LANDED = "E", "*", "x", "o"
@@ -20,26 +20,20 @@ _TRIES = 200    # terrains tried per reset before the parameters are declared im
 
 @dataclass(frozen=True)
 class ArtilleryParams:
-    width: int = 28
-    height: int = 10
-    max_wind: float = 0.3     # wind is drawn from [-max_wind, max_wind], in cells/s^2 (gravity is 1)
-    angle_step: int = 5       # degrees per RAISE / LOWER
-    max_power: int = 30       # power runs 1..max_power; a shell leaves at power x speed_step cells/s
-    speed_step: float = 0.25
-    blast: int = 1            # a shell landing within this many cells (any direction) hits a cannon
-    aim_error: float = 6.0    # spread (power levels) of the enemy's first shot around a hitting power
-    aim_decay: float = 0.75   # the enemy's spread is multiplied by this after every shot it fires
-
-    def __post_init__(self) -> None:
-        check_int("width", self.width, 16, 60)
-        check_int("height", self.height, 8, 30)
-        check_range("max_wind", self.max_wind, 0.0, 1.0)
-        check_int("angle_step", self.angle_step, 1, 20)
-        check_int("max_power", self.max_power, 5, 100)
-        check_range("speed_step", self.speed_step, 0.05, 2.0)
-        check_int("blast", self.blast, 0, 3)
-        check_range("aim_error", self.aim_error, 0.0, 50.0)
-        check_range("aim_decay", self.aim_decay, 0.0, 1.0)
+    width: int = param(28, 16, 60)
+    height: int = param(10, 8, 30)
+    # wind is drawn from [-max_wind, max_wind], in cells/s^2 (gravity is 1)
+    max_wind: float = param(0.3, 0, 1)
+    angle_step: int = param(5, 1, 20)        # degrees per RAISE / LOWER
+    # power runs 1..max_power; a shell leaves at power x speed_step cells/s
+    max_power: int = param(30, 5, 100)
+    speed_step: float = param(0.25, 0.05, 2)
+    # a shell landing within this many cells (any direction) hits a cannon
+    blast: int = param(1, 0, 3)
+    # spread (power levels) of the enemy's first shot around a hitting power
+    aim_error: float = param(6.0, 0, 50)
+    # the enemy's spread is multiplied by this after every shot it fires
+    aim_decay: float = param(0.75, 0, 1)
 
 
 class Artillery(VersusTask):

@@ -7,8 +7,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, cell_names, register_variants
-from ...core.params import check_int, check_range
-from .grid import FLOOR
+from ...core.params import param, require
+from ..common.palette import FLOOR
 from .versus import WIN, VersusTask
 
 MISS, HIT, SUNK = "~", "X", "#"
@@ -17,20 +17,14 @@ _TRIES = 10_000   # placement attempts per reset before the fleet is declared im
 
 @dataclass(frozen=True)
 class BattleshipParams:
-    size: int = 10
-    fleet: tuple[int, ...] = (5, 4, 3, 3, 2)   # ship lengths
-    fleet_bonus: float = 0.5                   # reward for sinking the whole fleet; hits share the rest
+    size: int = param(10, 4, 26)
+    fleet: tuple[int, ...] = param((5, 4, 3, 3, 2), 1, lambda p: p.size)   # ship lengths
+    fleet_bonus: float = param(0.5, 0, 1)    # reward for sinking the whole fleet; hits share the rest
 
-    def __post_init__(self) -> None:
-        check_int("size", self.size, 4, 26)
-        if not isinstance(self.fleet, tuple) or not self.fleet:
-            raise ValueError(f"fleet must be a non-empty tuple of ship lengths, got {self.fleet!r}")
-        for length in self.fleet:
-            check_int("fleet length", length, 1, self.size)
-        if sum(self.fleet) > self.size * self.size // 2:
-            raise ValueError(f"fleet must cover at most half of the {self.size}x{self.size} sea, "
-                             f"got {sum(self.fleet)} cells")
-        check_range("fleet_bonus", self.fleet_bonus, 0.0, 1.0)
+    def check(self) -> None:
+        half = self.size * self.size // 2
+        require(sum(self.fleet) <= half, "fleet", f"at most {half} cells of ships (half of the "
+                f"{self.size}x{self.size} sea)", self.fleet)
 
 
 class Battleship(VersusTask):

@@ -8,8 +8,10 @@ import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
 from ...core.actions import directions
-from .grid import DELTAS, FLOOR, GOAL, PLAYER, WALL
-from .waves import Enemy, Rolls, spawn_cells, wander
+from ...core.params import param
+from ..common.grid import DELTAS
+from ..common.palette import FLOOR, GOAL, PLAYER, WALL
+from ..common.waves import Enemy, Rolls, spawn_cells, wander
 
 CRATE, BLAST, ENEMY = "▒", "*", "E"
 START = (1, 1)
@@ -19,31 +21,14 @@ BOMB, WAIT = 4, 5                 # action indices after the four moves
 
 @dataclass(frozen=True)
 class BombermanParams:
-    size: int = 11               # the arena with its outer wall is size x size (odd)
-    crate_density: float = 0.4   # chance that an open cell holds a crate
-    min_enemies: int = 1         # the enemy count is drawn in min_enemies..max_enemies
-    max_enemies: int = 3
-    fuse: int = 3                # your actions between placing a bomb and its explosion
-    blast_range: int = 2         # cells the blast reaches in each direction
-    enemy_speed: float = 0.5     # chance that an enemy moves on a turn
-    death_penalty: float = 0.5
-
-    def __post_init__(self) -> None:
-        if not 7 <= self.size <= 15 or self.size % 2 == 0:
-            raise ValueError(f"size must be odd and in 7..15, got {self.size}")
-        if not 0 < self.crate_density <= 0.8:
-            raise ValueError(f"crate_density must be in (0, 0.8], got {self.crate_density}")
-        if not 1 <= self.min_enemies <= self.max_enemies <= 5:
-            raise ValueError(f"min_enemies and max_enemies need 1 <= min_enemies <= max_enemies <= 5, "
-                             f"got {self.min_enemies} and {self.max_enemies}")
-        if not 2 <= self.fuse <= 9:
-            raise ValueError(f"fuse must be in 2..9, got {self.fuse}")
-        if not 1 <= self.blast_range <= self.fuse:
-            raise ValueError(f"blast_range must be in 1..fuse ({self.fuse}), got {self.blast_range}")
-        if not 0 < self.enemy_speed <= 1:
-            raise ValueError(f"enemy_speed must be in (0, 1], got {self.enemy_speed}")
-        if not 0 <= self.death_penalty <= 1:
-            raise ValueError(f"death_penalty must be in [0, 1], got {self.death_penalty}")
+    size: int = param(11, 7, 15, odd=True)            # the arena with its outer wall is size x size
+    crate_density: float = param(0.4, 0, 0.8, open_lo=True)   # chance that an open cell holds a crate
+    min_enemies: int = param(1, 1, lambda p: p.max_enemies)   # the enemy count is drawn in min..max
+    max_enemies: int = param(3, 1, 5)
+    fuse: int = param(3, 2, 9)                        # your actions between placing a bomb and its explosion
+    blast_range: int = param(2, 1, lambda p: p.fuse)  # cells the blast reaches in each direction
+    enemy_speed: float = param(0.5, 0, 1, open_lo=True)   # chance that an enemy moves on a turn
+    death_penalty: float = param(0.5, 0, 1)
 
 
 class Bomberman(GlyphTask):

@@ -12,8 +12,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, register_variants
-from ...core.params import check_int, check_range
-from .grid import FLOOR
+from ...core.params import param
+from ..common.palette import FLOOR
 from .versus import DRAW, LOSS, OUTCOME_REWARDS, WIN, VersusTask, choose
 
 YOU, THEM = "X", "O"
@@ -21,14 +21,10 @@ YOU, THEM = "X", "O"
 
 @dataclass(frozen=True)
 class ConnectFourParams:
-    rows: int = 6
-    cols: int = 7
-    strength: float = 0.9   # probability that the opponent plays its search's move, else a random one
-
-    def __post_init__(self) -> None:
-        check_int("rows", self.rows, 4, 10)
-        check_int("cols", self.cols, 4, 12)
-        check_range("strength", self.strength, 0.0, 1.0)
+    rows: int = param(6, 4, 10)
+    cols: int = param(7, 4, 12)
+    # probability that the opponent plays its search's move, else a random one
+    strength: float = param(0.9, 0, 1)
 
 
 class Bitboard:

@@ -12,8 +12,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from ...core.params import check_int
-from .grid import DELTAS, MOVES, PLAYER, WALL
+from ...core.params import param
+from ..common.grid import DELTAS, MOVES
+from ..common.palette import PLAYER, WALL
 
 GRASS, TILLED, SEED, SEED_WET, SPROUT, SPROUT_WET, RIPE = "·", "=", "s", "S", "p", "P", "♣"
 POND = "≈"
@@ -27,18 +28,11 @@ Cell = tuple[int, int]
 
 @dataclass(frozen=True)
 class FarmParams:
-    size: int = 7            # the field is size x size inside the fence
-    target: int = 8          # harvests that win
-    grow_time: int = 4       # turns a watered seed or sprout takes to grow a stage
-    can_size: int = 4        # waterings a full can holds
-    pond: int = 2            # pond cells, in a row along one fence
-
-    def __post_init__(self) -> None:
-        check_int("size", self.size, 4, 16)
-        check_int("target", self.target, 1, 100)
-        check_int("grow_time", self.grow_time, 1, 20)
-        check_int("can_size", self.can_size, 1, 20)
-        check_int("pond", self.pond, 1, self.size - 1)
+    size: int = param(7, 4, 16)              # the field is size x size inside the fence
+    target: int = param(8, 1, 100)           # harvests that win
+    grow_time: int = param(4, 1, 20)         # turns a watered seed or sprout takes to grow a stage
+    can_size: int = param(4, 1, 20)          # waterings a full can holds
+    pond: int = param(2, 1, lambda p: p.size - 1)   # pond cells, in a row along one fence
 
 
 class Farm(GlyphTask):

@@ -7,8 +7,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from .arcade import fall, overlay, signed, window
-from .grid import FLOOR, PLAYER, WALL
+from ...core.params import param
+from ..common.palette import FLOOR, PLAYER, WALL
+from ..common.physics import fall
+from ..common.view import overlay, signed, window
 
 GROUND = "="
 FLAP, GRAVITY, MAX_FALL = -2, 1, 2   # rows per turn, positive = down
@@ -18,31 +20,16 @@ BIRD_COL = 2                         # the bird's column on screen
 
 @dataclass(frozen=True)
 class FlappyParams:
-    height: int = 10          # rows, the ground row included
-    width: int = 12
-    gap: int = 4              # open rows in each pipe
-    spacing: int = 6          # columns from one pipe to the next
-    max_shift: int = 3        # most rows a gap moves from one pipe to the next
-    target: int = 10          # pipes to pass
-    crash_penalty: float = 0.5
-
-    def __post_init__(self) -> None:
-        if not 7 <= self.height <= 20:
-            raise ValueError(f"height must be in 7..20, got {self.height}")
-        if not 8 <= self.width <= 30:
-            raise ValueError(f"width must be in 8..30, got {self.width}")
-        # Narrower gaps, or pipes closer together, are not always passable at these speeds
-        # (checked by exhaustive search over the reachable states in the tests).
-        if not 4 <= self.gap <= self.height - 3:
-            raise ValueError(f"gap must be in 4..{self.height - 3}, got {self.gap}")
-        if not PIPE_WIDTH + 3 <= self.spacing <= self.width:
-            raise ValueError(f"spacing must be in {PIPE_WIDTH + 3}..{self.width}, got {self.spacing}")
-        if not 0 <= self.max_shift < self.spacing:
-            raise ValueError(f"max_shift must be in 0..{self.spacing - 1}, got {self.max_shift}")
-        if not 1 <= self.target <= 100:
-            raise ValueError(f"target must be in 1..100, got {self.target}")
-        if not 0 <= self.crash_penalty <= 1:
-            raise ValueError(f"crash_penalty must be in [0, 1], got {self.crash_penalty}")
+    height: int = param(10, 7, 20)           # rows, the ground row included
+    width: int = param(12, 8, 30)
+    # Narrower gaps, or pipes closer together, are not always passable at these speeds
+    # (checked by exhaustive search over the reachable states in the tests).
+    gap: int = param(4, 4, lambda p: p.height - 3)                # open rows in each pipe
+    spacing: int = param(6, PIPE_WIDTH + 3, lambda p: p.width)    # columns from one pipe to the next
+    # most rows a gap moves from one pipe to the next
+    max_shift: int = param(3, 0, lambda p: p.spacing - 1)
+    target: int = param(10, 1, 100)          # pipes to pass
+    crash_penalty: float = param(0.5, 0, 1)
 
 
 class Flappy(GlyphTask):

@@ -13,7 +13,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from .boards import Bits
+from ...core.params import param
+from ..common.boards import Bits
 
 COLOURS = (("R", "RED"), ("G", "GREEN"), ("B", "BLUE"), ("Y", "YELLOW"), ("P", "PURPLE"), ("O", "ORANGE"))
 _TRIES = 100
@@ -21,20 +22,11 @@ _TRIES = 100
 
 @dataclass(frozen=True)
 class FloodFillParams:
-    size: int = 8            # the board is size x size
-    colours: int = 6
-    slack: int = 0           # moves allowed beyond the solver's solution
-    progress_share: float = 0.5  # the return flooding earns along the way; the rest is for finishing
-
-    def __post_init__(self) -> None:
-        if not 3 <= self.size <= 16:
-            raise ValueError(f"size must be in 3..16, got {self.size}")
-        if not 2 <= self.colours <= len(COLOURS):
-            raise ValueError(f"colours must be in 2..{len(COLOURS)}, got {self.colours}")
-        if not 0 <= self.slack <= 20:
-            raise ValueError(f"slack must be in 0..20, got {self.slack}")
-        if not 0 <= self.progress_share < 1:
-            raise ValueError(f"progress_share must be in [0, 1), got {self.progress_share}")
+    size: int = param(8, 3, 16)              # the board is size x size
+    colours: int = param(6, 2, len(COLOURS))
+    slack: int = param(0, 0, 20)             # moves allowed beyond the solver's solution
+    # the return flooding earns along the way; the rest is for finishing
+    progress_share: float = param(0.5, 0, 1, open_hi=True)
 
 
 def pick(bits: Bits, masks: list[int], region: int, colour: int) -> int:

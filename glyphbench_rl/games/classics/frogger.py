@@ -7,8 +7,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from .arcade import Lane, overlay, runs
-from .grid import DELTAS, FLOOR, GOAL, PLAYER, WALL
+from ...core.params import param
+from ..common.grid import DELTAS
+from ..common.lanes import Lane, runs
+from ..common.palette import FLOOR, GOAL, PLAYER, WALL
+from ..common.view import overlay
 
 WATER, FILLED = "~", "●"
 CARS = {-1: "<", 1: ">"}
@@ -19,29 +22,13 @@ LOG_LENGTHS, LOG_GAPS = (2, 4), (1, 3)
 
 @dataclass(frozen=True)
 class FroggerParams:
-    width: int = 11
-    river: int = 3            # lanes of river
-    road: int = 3             # lanes of traffic
-    homes: int = 3
-    lives: int = 3
-    max_period: int = 2       # the slowest lanes move one cell every this many turns
-    death_penalty: float = 0.2
-
-    def __post_init__(self) -> None:
-        if not 7 <= self.width <= 26:
-            raise ValueError(f"width must be in 7..26, got {self.width}")
-        if not 1 <= self.river <= 6:
-            raise ValueError(f"river must be in 1..6, got {self.river}")
-        if not 1 <= self.road <= 6:
-            raise ValueError(f"road must be in 1..6, got {self.road}")
-        if not 1 <= self.homes <= self.width // 2:
-            raise ValueError(f"homes must be in 1..{self.width // 2}, got {self.homes}")
-        if not 1 <= self.lives <= 9:
-            raise ValueError(f"lives must be in 1..9, got {self.lives}")
-        if not 1 <= self.max_period <= 4:
-            raise ValueError(f"max_period must be in 1..4, got {self.max_period}")
-        if not 0 <= self.death_penalty * self.lives <= 1:
-            raise ValueError(f"death_penalty must be in [0, 1/lives], got {self.death_penalty}")
+    width: int = param(11, 7, 26)
+    river: int = param(3, 1, 6)              # lanes of river
+    road: int = param(3, 1, 6)               # lanes of traffic
+    homes: int = param(3, 1, lambda p: p.width // 2)
+    lives: int = param(3, 1, 9)
+    max_period: int = param(2, 1, 4)         # the slowest lanes move one cell every this many turns
+    death_penalty: float = param(0.2, 0, lambda p: 1 / p.lives)   # all lives lost cost at most 1
 
 
 class Frogger(GlyphTask):

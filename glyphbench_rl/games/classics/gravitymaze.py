@@ -12,9 +12,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from ...core.params import check_int
-from .grid import DELTAS, FLOOR, GOAL, WALL, Board, interior_cells, walled_room
-from .motion import bfs_search
+from ...core.params import param
+from ..common.grid import DELTAS, Board, bfs_search, interior_cells, walled_room
+from ..common.palette import FLOOR, GOAL, WALL
 
 BALL, SPIKES = "●", "▲"
 # Gravity directions as DELTAS indices, in clockwise order as seen on screen: down, left, up, right.
@@ -28,22 +28,12 @@ State = tuple[Cell, int]   # the ball's cell and gravity (a DELTAS index)
 
 @dataclass(frozen=True)
 class GravityMazeParams:
-    size: int = 8                # the room's interior is size x size
-    walls: int = 12              # wall blocks scattered inside
-    spikes: int = 3              # spike cells: the ball is lost on them
-    min_moves: int = 10          # generated levels need at least this many turns
-    spike_penalty: float = 0.5
-    time_weight: float = 0.5     # share of the win reward lost by using every turn
-
-    def __post_init__(self) -> None:
-        check_int("size", self.size, 4, 16)
-        check_int("walls", self.walls, 0, self.size * self.size // 3)
-        check_int("spikes", self.spikes, 0, self.size * self.size // 6)
-        check_int("min_moves", self.min_moves, 1, 60)
-        if not 0 <= self.spike_penalty <= 1:
-            raise ValueError(f"spike_penalty must be in [0, 1], got {self.spike_penalty}")
-        if not 0 <= self.time_weight < 1:
-            raise ValueError(f"time_weight must be in [0, 1), got {self.time_weight}")
+    size: int = param(8, 4, 16)              # the room's interior is size x size
+    walls: int = param(12, 0, lambda p: p.size * p.size // 3)    # wall blocks scattered inside
+    spikes: int = param(3, 0, lambda p: p.size * p.size // 6)    # spike cells: the ball is lost on them
+    min_moves: int = param(10, 1, 60)        # generated levels need at least this many turns
+    spike_penalty: float = param(0.5, 0, 1)
+    time_weight: float = param(0.5, 0, 1, open_hi=True)   # share of the win reward lost by using every turn
 
 
 def turn(gravity: int, action: int) -> int:

@@ -14,9 +14,10 @@ from math import lcm
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from ...core.params import check_int
-from .grid import DELTAS, FLOOR, GOAL, MOVES, PLAYER, WALL, bfs_distances, interior_cells, walled_room
-from .motion import bfs_search, view_cone
+from ...core.params import param
+from ..common.grid import DELTAS, MOVES, bfs_distances, bfs_search, interior_cells, walled_room
+from ..common.palette import FLOOR, GOAL, PLAYER, WALL
+from ..common.sight import view_cone
 
 ARROWS = "▲▼◀▶"     # a guard facing up, down, left, right (DELTAS order)
 SENTRIES = "△▽◁▷"   # a sentry, likewise
@@ -29,30 +30,16 @@ Cell = tuple[int, int]
 
 @dataclass(frozen=True)
 class GuardEvasionParams:
-    size: int = 8                 # the room's interior is size x size
-    pillars: int = 8              # wall blocks to hide behind
-    guards: int = 2               # guards patrolling straight lines
-    sentries: int = 0             # guards standing still, turning clockwise
-    sentry_turn: int = 2          # a sentry turns every this many turns
-    patrol: int = 5               # longest patrol line, in cells
-    reach: int = 3                # how far a guard sees
-    min_moves: int = 10           # generated levels need at least this many turns
-    caught_penalty: float = 0.5
-    time_weight: float = 0.5      # share of the win reward lost by using every turn
-
-    def __post_init__(self) -> None:
-        check_int("size", self.size, 5, 20)
-        check_int("pillars", self.pillars, 0, self.size * self.size // 4)
-        check_int("guards", self.guards, 0, 8)
-        check_int("sentries", self.sentries, 0, 4)
-        check_int("sentry_turn", self.sentry_turn, 1, 4)
-        check_int("patrol", self.patrol, 2, 6)
-        check_int("reach", self.reach, 1, 8)
-        check_int("min_moves", self.min_moves, 1, 100)
-        if not 0 <= self.caught_penalty <= 1:
-            raise ValueError(f"caught_penalty must be in [0, 1], got {self.caught_penalty}")
-        if not 0 <= self.time_weight < 1:
-            raise ValueError(f"time_weight must be in [0, 1), got {self.time_weight}")
+    size: int = param(8, 5, 20)              # the room's interior is size x size
+    pillars: int = param(8, 0, lambda p: p.size * p.size // 4)   # wall blocks to hide behind
+    guards: int = param(2, 0, 8)             # guards patrolling straight lines
+    sentries: int = param(0, 0, 4)           # guards standing still, turning clockwise
+    sentry_turn: int = param(2, 1, 4)        # a sentry turns every this many turns
+    patrol: int = param(5, 2, 6)             # longest patrol line, in cells
+    reach: int = param(3, 1, 8)              # how far a guard sees
+    min_moves: int = param(10, 1, 100)       # generated levels need at least this many turns
+    caught_penalty: float = param(0.5, 0, 1)
+    time_weight: float = param(0.5, 0, 1, open_hi=True)   # share of the win reward lost by using every turn
 
 
 def patrol_steps(line: list[Cell], phase: int, period: int) -> list[tuple[Cell, int]]:

@@ -13,9 +13,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import GlyphTask, register_variants
-from ...core.params import check_int
-from .grid import DELTAS, FLOOR, GOAL, MOVES, PLAYER, WALL, Board, interior_cells, move_actions, walled_room
-from .motion import bfs_layers, slide
+from ...core.params import param
+from ..common.grid import DELTAS, MOVES, Board, bfs_layers, interior_cells, move_actions, slide, walled_room
+from ..common.palette import FLOOR, GOAL, PLAYER, WALL
 
 Cell = tuple[int, int]
 _TRIES = 500   # rock layouts tried per reset before the parameters are declared impossible
@@ -23,17 +23,10 @@ _TRIES = 500   # rock layouts tried per reset before the parameters are declared
 
 @dataclass(frozen=True)
 class IceSlidingParams:
-    size: int = 7              # the room's interior is size x size; the grid adds the outer wall
-    rocks: int = 6             # rocks scattered on the ice
-    min_moves: int = 3         # generated levels need at least this many moves
-    time_weight: float = 0.5   # share of the win reward lost by using every turn
-
-    def __post_init__(self) -> None:
-        check_int("size", self.size, 4, 16)
-        check_int("rocks", self.rocks, 0, self.size * self.size // 3)
-        check_int("min_moves", self.min_moves, 1, 30)
-        if not 0 <= self.time_weight < 1:
-            raise ValueError(f"time_weight must be in [0, 1), got {self.time_weight}")
+    size: int = param(7, 4, 16)              # the room's interior is size x size; the grid adds the outer wall
+    rocks: int = param(6, 0, lambda p: p.size * p.size // 3)     # rocks scattered on the ice
+    min_moves: int = param(3, 1, 30)         # generated levels need at least this many moves
+    time_weight: float = param(0.5, 0, 1, open_hi=True)   # share of the win reward lost by using every turn
 
 
 def slide_graph(board: Board, exit_: Cell) -> dict[Cell, list[Cell]]:

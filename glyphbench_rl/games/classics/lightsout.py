@@ -7,7 +7,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, cell_names, register_variants
-from .grid import DELTAS, FLOOR
+from ...core.params import param
+from ..common.grid import DELTAS
+from ..common.palette import FLOOR
 
 LIT = "●"
 MAX_ATTEMPTS = 1000  # generation retries before a parameter set is declared impossible
@@ -15,23 +17,14 @@ MAX_ATTEMPTS = 1000  # generation retries before a parameter set is declared imp
 
 @dataclass(frozen=True)
 class LightsOutParams:
-    size: int = 5
+    size: int = param(5, 2, 9)
     # Boards are scrambled by k distinct random presses, k in min_presses..max_scramble. The
     # scramble itself is a solution, so the optimum never exceeds k: k below min_presses could
     # never pass the min_presses check and is not drawn.
-    min_presses: int = 4        # the optimum solution of every generated board is at least this
-    max_scramble: int = 10
-    time_weight: float = 0.5    # share of the win reward lost by using every turn
-
-    def __post_init__(self) -> None:
-        if not 2 <= self.size <= 9:
-            raise ValueError(f"size must be in 2..9, got {self.size}")
-        if not 1 <= self.min_presses <= self.max_scramble <= self.size * self.size:
-            raise ValueError(f"min_presses and max_scramble need 1 <= min_presses <= max_scramble "
-                             f"<= {self.size ** 2}, got min_presses={self.min_presses}, "
-                             f"max_scramble={self.max_scramble}")
-        if not 0 <= self.time_weight < 1:
-            raise ValueError(f"time_weight must be in [0, 1), got {self.time_weight}")
+    # the optimum of every generated board is at least this
+    min_presses: int = param(4, 1, lambda p: p.max_scramble)
+    max_scramble: int = param(10, 1, lambda p: p.size * p.size)
+    time_weight: float = param(0.5, 0, 1, open_hi=True)   # share of the win reward lost by using every turn
 
 
 def press_masks(size: int) -> list[int]:

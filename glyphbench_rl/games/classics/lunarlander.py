@@ -11,8 +11,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from .arcade import overlay, signed
-from .grid import FLOOR, PLAYER, WALL
+from ...core.params import param
+from ..common.palette import FLOOR, PLAYER, WALL
+from ..common.view import overlay, signed
 
 PAD = "="
 UNIT = 10          # tenths per cell
@@ -20,40 +21,18 @@ UNIT = 10          # tenths per cell
 
 @dataclass(frozen=True)
 class LunarLanderParams:
-    width: int = 14
-    height: int = 9
-    gravity: int = 1           # tenths of a cell per turn, added to Vy every turn
-    main_thrust: int = 3       # subtracted from Vy by the main engine
-    side_thrust: int = 2       # added to or subtracted from Vx by a side thruster
-    fuel: int = 40             # turns of thrust
-    safe_vy: int = 3           # the fastest touchdown that does not crash
-    safe_vx: int = 2
-    pad_width: int = 4
-    max_hill: int = 4          # terrain rises at most this many rows
-    crash_penalty: float = 0.5
-
-    def __post_init__(self) -> None:
-        if not 8 <= self.width <= 30:
-            raise ValueError(f"width must be in 8..30, got {self.width}")
-        if not 7 <= self.height <= 20:
-            raise ValueError(f"height must be in 7..20, got {self.height}")
-        if not 1 <= self.gravity <= 5:
-            raise ValueError(f"gravity must be in 1..5, got {self.gravity}")
-        if not self.gravity < self.main_thrust <= 5 * self.gravity:
-            raise ValueError(f"main_thrust must be in {self.gravity + 1}..{5 * self.gravity}, "
-                             f"got {self.main_thrust}")
-        if not 1 <= self.side_thrust <= 5:
-            raise ValueError(f"side_thrust must be in 1..5, got {self.side_thrust}")
-        if not 1 <= self.fuel <= 200:
-            raise ValueError(f"fuel must be in 1..200, got {self.fuel}")
-        if not 0 <= self.safe_vy <= 10 or not 0 <= self.safe_vx <= 10:
-            raise ValueError(f"safe_vy and safe_vx must be in 0..10, got {self.safe_vy}, {self.safe_vx}")
-        if not 1 <= self.pad_width <= self.width - 2:
-            raise ValueError(f"pad_width must be in 1..{self.width - 2}, got {self.pad_width}")
-        if not 1 <= self.max_hill <= self.height - 4:
-            raise ValueError(f"max_hill must be in 1..{self.height - 4}, got {self.max_hill}")
-        if not 0 <= self.crash_penalty <= 1:
-            raise ValueError(f"crash_penalty must be in [0, 1], got {self.crash_penalty}")
+    width: int = param(14, 8, 30)
+    height: int = param(9, 7, 20)
+    gravity: int = param(1, 1, 5)            # tenths of a cell per turn, added to Vy every turn
+    # subtracted from Vy by the main engine
+    main_thrust: int = param(3, lambda p: p.gravity + 1, lambda p: 5 * p.gravity)
+    side_thrust: int = param(2, 1, 5)        # added to or subtracted from Vx by a side thruster
+    fuel: int = param(40, 1, 200)            # turns of thrust
+    safe_vy: int = param(3, 0, 10)           # the fastest touchdown that does not crash
+    safe_vx: int = param(2, 0, 10)
+    pad_width: int = param(4, 1, lambda p: p.width - 2)
+    max_hill: int = param(4, 1, lambda p: p.height - 4)   # terrain rises at most this many rows
+    crash_penalty: float = param(0.5, 0, 1)
 
 
 class LunarLander(GlyphTask):

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from ...core.params import check_int
+from ...core.params import param
 
 GEMS = "rgbypo"
 GEM_NAMES = ("red", "green", "blue", "yellow", "purple", "orange")
@@ -16,14 +16,9 @@ _TRIES = 1000    # boards drawn per deal before the parameters are declared impo
 
 @dataclass(frozen=True)
 class Match3Params:
-    size: int = 8      # the board is size x size
-    kinds: int = 6     # gem kinds in play
-    target: int = 80   # gems to clear
-
-    def __post_init__(self) -> None:
-        check_int("size", self.size, 4, 12)
-        check_int("kinds", self.kinds, 3, len(GEMS))
-        check_int("target", self.target, 3, 10_000)
+    size: int = param(8, 4, 12)       # the board is size x size
+    kinds: int = param(6, 3, len(GEMS))   # gem kinds in play
+    target: int = param(80, 3, 10_000)    # gems to clear
 
 
 def find_matches(board: list[list[str]]) -> set[tuple[int, int]]:

@@ -7,19 +7,15 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import GlyphTask, register_variants
-from .grid import DELTAS, FLOOR, GOAL, PLAYER, WALL, Board, bfs_distances, move_actions
+from ...core.params import param
+from ..common.grid import DELTAS, Board, bfs_distances, move_actions
+from ..common.palette import FLOOR, GOAL, PLAYER, WALL
 
 
 @dataclass(frozen=True)
 class MazeParams:
-    cells: int = 5                  # the maze is cells x cells rooms; the grid is 2*cells+1 wide
-    time_weight: float = 0.9        # share of the win reward lost by using every turn
-
-    def __post_init__(self) -> None:
-        if not 2 <= self.cells <= 20:
-            raise ValueError(f"cells must be in 2..20, got {self.cells}")
-        if not 0 <= self.time_weight < 1:
-            raise ValueError(f"time_weight must be in [0, 1), got {self.time_weight}")
+    cells: int = param(5, 2, 20)      # the maze is cells x cells rooms; the grid is 2*cells+1 wide
+    time_weight: float = param(0.9, 0, 1, open_hi=True)   # share of the win reward lost by using every turn
 
 
 def carve(cells: int, rng: np.random.Generator) -> Board:

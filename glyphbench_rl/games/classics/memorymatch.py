@@ -7,7 +7,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import GlyphTask, register_variants
-from .boards import cell_actions
+from ...core.params import param, require
+from ..common.boards import cell_actions
 
 DOWN = "■"
 FACES = "abcdefghijklmnopqrstuvwxyz"
@@ -15,20 +16,14 @@ FACES = "abcdefghijklmnopqrstuvwxyz"
 
 @dataclass(frozen=True)
 class MemoryMatchParams:
-    rows: int = 4
-    cols: int = 5
-    pair_share: float = 0.5    # the return shared by the pairs; clearing the board adds the rest
+    rows: int = param(4, 2, 8)
+    cols: int = param(5, 2, 8)
+    pair_share: float = param(0.5, 0, 1)   # the return shared by the pairs; clearing the board adds the rest
 
-    def __post_init__(self) -> None:
-        if not 2 <= self.rows <= 8:
-            raise ValueError(f"rows must be in 2..8, got {self.rows}")
-        if not 2 <= self.cols <= 8:
-            raise ValueError(f"cols must be in 2..8, got {self.cols}")
-        if self.rows * self.cols % 2 or self.rows * self.cols > 2 * len(FACES):
-            raise ValueError(f"rows x cols must be even (cards come in pairs) and at most "
-                             f"{2 * len(FACES)}, got {self.rows}x{self.cols}")
-        if not 0 <= self.pair_share <= 1:
-            raise ValueError(f"pair_share must be in [0, 1], got {self.pair_share}")
+    def check(self) -> None:
+        cards = self.rows * self.cols
+        require(cards % 2 == 0 and cards <= 2 * len(FACES), "rows x cols",
+                f"even (cards come in pairs) and at most {2 * len(FACES)}", cards)
 
 
 class MemoryMatch(GlyphTask):

@@ -11,8 +11,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import GlyphTask, register_variants
-from .boards import Bits, cell_actions
-from .grid import FLOOR
+from ...core.params import param
+from ..common.boards import Bits, cell_actions
+from ..common.palette import FLOOR
 
 HIDDEN, MINE = "■", "*"
 NUMBERS = "·12345678"      # glyph of an open cell by the count of mines around it
@@ -20,21 +21,13 @@ NUMBERS = "·12345678"      # glyph of an open cell by the count of mines around
 
 @dataclass(frozen=True)
 class MinesweeperParams:
-    size: int = 8
-    mines: int = 10
-    progress_share: float = 0.5   # the return opening every safe cell earns along the way
-    mine_penalty: float = 0.5     # what opening a mine costs
-
-    def __post_init__(self) -> None:
-        if not 4 <= self.size <= 16:
-            raise ValueError(f"size must be in 4..16, got {self.size}")
-        if not 1 <= self.mines <= self.size * self.size - 9:
-            raise ValueError(f"mines must be in 1..{self.size * self.size - 9}, got {self.mines}")
-        if not 0 <= self.progress_share < 1:
-            raise ValueError(f"progress_share must be in [0, 1), got {self.progress_share}")
-        # a lost game never opened every safe cell, so its return is progress - penalty < 0
-        if not self.progress_share <= self.mine_penalty <= 1:
-            raise ValueError(f"mine_penalty must be in [progress_share, 1], got {self.mine_penalty}")
+    size: int = param(8, 4, 16)
+    mines: int = param(10, 1, lambda p: p.size * p.size - 9)
+    # the return opening every safe cell earns along the way
+    progress_share: float = param(0.5, 0, 1, open_hi=True)
+    # what opening a mine costs: a lost game never opened every safe cell, so its return is
+    # progress - penalty < 0
+    mine_penalty: float = param(0.5, lambda p: p.progress_share, 1)
 
 
 class Minesweeper(GlyphTask):

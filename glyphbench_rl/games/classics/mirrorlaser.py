@@ -15,8 +15,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import GlyphTask, register_variants
-from .boards import cell_actions
-from .grid import FLOOR, GOAL, WALL
+from ...core.params import param
+from ..common.boards import cell_actions
+from ..common.palette import FLOOR, GOAL, WALL
 
 DELTAS = ((-1, 0), (0, 1), (1, 0), (0, -1))          # N E S W
 LASERS = "▲▶▼◀"                                        # the laser glyph facing N E S W
@@ -31,23 +32,11 @@ _TRIES = 500
 
 @dataclass(frozen=True)
 class MirrorLaserParams:
-    size: int = 7
-    mirrors: int = 3          # mirrors you may place (at most this many on the board at once)
-    min_mirrors: int = 2      # no level can be solved with fewer mirrors than this
-    walls: int = 6
-    time_weight: float = 0.5  # share of the win reward lost by using every turn
-
-    def __post_init__(self) -> None:
-        if not 5 <= self.size <= 12:
-            raise ValueError(f"size must be in 5..12, got {self.size}")
-        if not 1 <= self.mirrors <= 6:
-            raise ValueError(f"mirrors must be in 1..6, got {self.mirrors}")
-        if not 1 <= self.min_mirrors <= self.mirrors:
-            raise ValueError(f"min_mirrors must be in 1..mirrors ({self.mirrors}), got {self.min_mirrors}")
-        if not 0 <= self.walls <= self.size * self.size // 3:
-            raise ValueError(f"walls must be in 0..{self.size * self.size // 3}, got {self.walls}")
-        if not 0 <= self.time_weight < 1:
-            raise ValueError(f"time_weight must be in [0, 1), got {self.time_weight}")
+    size: int = param(7, 5, 12)
+    mirrors: int = param(3, 1, 6)            # mirrors you may place (at most this many on the board at once)
+    min_mirrors: int = param(2, 1, lambda p: p.mirrors)   # no level can be solved with fewer mirrors than this
+    walls: int = param(6, 0, lambda p: p.size * p.size // 3)
+    time_weight: float = param(0.5, 0, 1, open_hi=True)   # share of the win reward lost by using every turn
 
 
 def trace(cells: list[str], size: int, start: int, heading: int) -> tuple[list[tuple[int, int]], bool]:

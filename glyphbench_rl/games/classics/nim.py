@@ -9,8 +9,8 @@ from operator import xor
 import numpy as np
 
 from ...core import ActionSet, register_variants
-from ...core.params import check_int, check_range
-from .grid import FLOOR
+from ...core.params import param
+from ..common.palette import FLOOR
 from .versus import LOSS, OUTCOME_REWARDS, WIN, VersusTask, choose
 
 OBJECT = "●"
@@ -18,14 +18,10 @@ OBJECT = "●"
 
 @dataclass(frozen=True)
 class NimParams:
-    heaps: int = 3
-    max_heap: int = 5       # heap sizes are drawn from 1..max_heap; one turn takes 1..max_heap
-    strength: float = 0.6   # probability that the opponent plays a nim-sum move when it has one
-
-    def __post_init__(self) -> None:
-        check_int("heaps", self.heaps, 2, 9)
-        check_int("max_heap", self.max_heap, 2, 9)
-        check_range("strength", self.strength, 0.0, 1.0)
+    heaps: int = param(3, 2, 9)
+    max_heap: int = param(5, 2, 9)           # heap sizes are drawn from 1..max_heap; one turn takes 1..max_heap
+    # probability that the opponent plays a nim-sum move when it has one
+    strength: float = param(0.6, 0, 1)
 
 
 def winning_moves(heaps: list[int]) -> list[tuple[int, int]]:

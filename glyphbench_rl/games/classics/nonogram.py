@@ -13,8 +13,9 @@ from functools import lru_cache
 import numpy as np
 
 from ...core import GlyphTask, register_variants
-from .boards import Bits, cell_actions, cell_of, clue_text, runs
-from .grid import FLOOR
+from ...core.params import param
+from ..common.boards import Bits, cell_actions, cell_of, clue_text, runs
+from ..common.palette import FLOOR
 
 FILLED, MARK = "■", "x"
 _TRIES = 2000
@@ -22,17 +23,9 @@ _TRIES = 2000
 
 @dataclass(frozen=True)
 class NonogramParams:
-    size: int = 5
-    density: float = 0.6        # chance that a cell of the hidden picture is filled
-    time_weight: float = 0.5    # share of the win reward lost by using every turn
-
-    def __post_init__(self) -> None:
-        if not 2 <= self.size <= 12:
-            raise ValueError(f"size must be in 2..12, got {self.size}")
-        if not 0.2 <= self.density <= 0.9:
-            raise ValueError(f"density must be in [0.2, 0.9], got {self.density}")
-        if not 0 <= self.time_weight < 1:
-            raise ValueError(f"time_weight must be in [0, 1), got {self.time_weight}")
+    size: int = param(5, 2, 12)
+    density: float = param(0.6, 0.2, 0.9)    # chance that a cell of the hidden picture is filled
+    time_weight: float = param(0.5, 0, 1, open_hi=True)   # share of the win reward lost by using every turn
 
 
 @lru_cache(maxsize=None)

@@ -16,7 +16,8 @@ from heapq import heappop, heappush
 import numpy as np
 
 from ...core import GlyphTask, register_variants
-from .boards import Bits, cell_actions
+from ...core.params import param
+from ..common.boards import Bits, cell_actions
 
 # Sides in clockwise order; a tile's openings are a 4-bit mask (bit d = side d), so a quarter
 # turn clockwise rotates the mask left by one.
@@ -51,17 +52,10 @@ COST = [[[min((q for q in range(4) if turn(base, r + q) & need == need), default
 
 @dataclass(frozen=True)
 class PipeConnectParams:
-    size: int = 5
-    min_rotations: int = 4       # the fewest rotations solving a level is at least this
-    time_weight: float = 0.5     # share of the win reward lost by using every turn
-
-    def __post_init__(self) -> None:
-        if not 3 <= self.size <= 12:
-            raise ValueError(f"size must be in 3..12, got {self.size}")
-        if not 1 <= self.min_rotations <= 2 * self.size:
-            raise ValueError(f"min_rotations must be in 1..{2 * self.size}, got {self.min_rotations}")
-        if not 0 <= self.time_weight < 1:
-            raise ValueError(f"time_weight must be in [0, 1), got {self.time_weight}")
+    size: int = param(5, 3, 12)
+    # the fewest rotations solving a level is at least this
+    min_rotations: int = param(4, 1, lambda p: 2 * p.size)
+    time_weight: float = param(0.5, 0, 1, open_hi=True)      # share of the win reward lost by using every turn
 
 
 def solve(kinds: list[int], rots: list[int], size: int, source: int, drain: int) -> tuple[int, list[int]] | None:

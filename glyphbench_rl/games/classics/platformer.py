@@ -7,8 +7,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from .arcade import fall, move_vertical, overlay, signed, window
-from .grid import FLOOR, PLAYER, WALL
+from ...core.params import param
+from ..common.palette import FLOOR, PLAYER, WALL
+from ..common.physics import fall, move_vertical
+from ..common.view import overlay, signed, window
 
 COIN, FLAG = "o", "⚑"
 JUMP_SPEED, GRAVITY, MAX_FALL = 2, 1, 2   # rows per turn, positive = down
@@ -17,23 +19,11 @@ START_RUN, END_RUN = 4, 6                 # flat columns at each end of a level
 
 @dataclass(frozen=True)
 class PlatformerParams:
-    length: int = 48          # columns in the level
-    height: int = 8           # rows; the bottom two are ground
-    view: int = 14            # columns shown
-    coin_share: float = 0.3   # of the return, split evenly over the level's coins
-    fall_penalty: float = 0.5
-
-    def __post_init__(self) -> None:
-        if not 16 <= self.length <= 200:
-            raise ValueError(f"length must be in 16..200, got {self.length}")
-        if not 7 <= self.height <= 16:
-            raise ValueError(f"height must be in 7..16, got {self.height}")
-        if not 8 <= self.view <= self.length:
-            raise ValueError(f"view must be in 8..{self.length}, got {self.view}")
-        if not 0 <= self.coin_share < 1:
-            raise ValueError(f"coin_share must be in [0, 1), got {self.coin_share}")
-        if not 0 <= self.fall_penalty <= 1:
-            raise ValueError(f"fall_penalty must be in [0, 1], got {self.fall_penalty}")
+    length: int = param(48, 16, 200)         # columns in the level
+    height: int = param(8, 7, 16)            # rows; the bottom two are ground
+    view: int = param(14, 8, lambda p: p.length)   # columns shown
+    coin_share: float = param(0.3, 0, 1, open_hi=True)   # of the return, split evenly over the level's coins
+    fall_penalty: float = param(0.5, 0, 1)
 
 
 class Platformer(GlyphTask):

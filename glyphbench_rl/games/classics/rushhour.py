@@ -16,9 +16,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from ...core.params import check_int
-from .grid import FLOOR, GOAL, WALL
-from .motion import bfs_search
+from ...core.params import param
+from ..common.grid import bfs_search
+from ..common.palette import FLOOR, GOAL, WALL
 
 N = 6                   # the lot is N x N
 EXIT_ROW = 2            # the exit is in the right wall of this row
@@ -31,20 +31,11 @@ _TRIES = 2000           # parkings tried per reset before the parameters are dec
 
 @dataclass(frozen=True)
 class RushHourParams:
-    horizontal: int = 1          # vehicles besides the red car that move left-right
-    vertical: int = 3            # vehicles that move up-down
-    truck_chance: float = 0.3    # a vehicle is a 3-cell truck with this probability, else a car
-    min_moves: int = 8           # generated levels need at least this many one-cell moves
-    time_weight: float = 0.5     # share of the win reward lost by using every turn
-
-    def __post_init__(self) -> None:
-        check_int("horizontal", self.horizontal, 0, 4)
-        check_int("vertical", self.vertical, 0, 6)
-        if not 0 <= self.truck_chance <= 1:
-            raise ValueError(f"truck_chance must be in [0, 1], got {self.truck_chance}")
-        check_int("min_moves", self.min_moves, 1, 40)
-        if not 0 <= self.time_weight < 1:
-            raise ValueError(f"time_weight must be in [0, 1), got {self.time_weight}")
+    horizontal: int = param(1, 0, 4)         # vehicles besides the red car that move left-right
+    vertical: int = param(3, 0, 6)           # vehicles that move up-down
+    truck_chance: float = param(0.3, 0, 1)   # a vehicle is a 3-cell truck with this probability, else a car
+    min_moves: int = param(8, 1, 40)         # generated levels need at least this many one-cell moves
+    time_weight: float = param(0.5, 0, 1, open_hi=True)   # share of the win reward lost by using every turn
 
 
 class Lot:

@@ -7,8 +7,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from .arcade import overlay, window
-from .grid import FLOOR, PLAYER
+from ...core.params import param
+from ..common.palette import FLOOR, PLAYER
+from ..common.view import overlay, window
 
 TREE, FLAG, FINISH = "T", "|", "="
 SKIER_ROW = 1      # the skier's row on screen; the slope scrolls up past it
@@ -16,29 +17,13 @@ SKIER_ROW = 1      # the skier's row on screen; the slope scrolls up past it
 
 @dataclass(frozen=True)
 class SkiParams:
-    width: int = 13
-    height: int = 9            # rows in view
-    gates: int = 10
-    gate_gap: int = 6          # rows from one gate to the next
-    gate_width: int = 3        # open cells between a gate's two flags (odd)
-    tree_density: float = 0.1  # chance of a tree on each free cell off the gate rows
-    crash_penalty: float = 0.5
-
-    def __post_init__(self) -> None:
-        if not 7 <= self.width <= 30:
-            raise ValueError(f"width must be in 7..30, got {self.width}")
-        if not 4 <= self.height <= 20:
-            raise ValueError(f"height must be in 4..20, got {self.height}")
-        if not 1 <= self.gates <= 40:
-            raise ValueError(f"gates must be in 1..40, got {self.gates}")
-        if not 2 <= self.gate_gap <= 20:
-            raise ValueError(f"gate_gap must be in 2..20, got {self.gate_gap}")
-        if self.gate_width % 2 == 0 or not 1 <= self.gate_width <= self.width - 4:
-            raise ValueError(f"gate_width must be odd and in 1..{self.width - 4}, got {self.gate_width}")
-        if not 0 <= self.tree_density <= 0.5:
-            raise ValueError(f"tree_density must be in [0, 0.5], got {self.tree_density}")
-        if not 0 <= self.crash_penalty <= 1:
-            raise ValueError(f"crash_penalty must be in [0, 1], got {self.crash_penalty}")
+    width: int = param(13, 7, 30)
+    height: int = param(9, 4, 20)            # rows in view
+    gates: int = param(10, 1, 40)
+    gate_gap: int = param(6, 2, 20)          # rows from one gate to the next
+    gate_width: int = param(3, 1, lambda p: p.width - 4, odd=True)   # open cells between a gate's two flags
+    tree_density: float = param(0.1, 0, 0.5)   # chance of a tree on each free cell off the gate rows
+    crash_penalty: float = param(0.5, 0, 1)
 
 
 class Ski(GlyphTask):

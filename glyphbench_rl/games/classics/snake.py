@@ -8,27 +8,19 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import GlyphTask, register_variants
-from .grid import DELTAS, FLOOR, OPPOSITE, move_actions
+from ...core.params import param
+from ..common.grid import DELTAS, OPPOSITE, move_actions
+from ..common.palette import FLOOR
 
 HEADS = "▲▼◀▶"  # indexed like DELTAS: up, down, left, right
 
 
 @dataclass(frozen=True)
 class SnakeParams:
-    size: int = 8             # the board is size x size cells
-    target: int = 8           # food eaten to win
-    death_penalty: float = 0.5
-    start_length: int = 3
-
-    def __post_init__(self) -> None:
-        if not 5 <= self.size <= 26:
-            raise ValueError(f"size must be in 5..26, got {self.size}")
-        if not 1 <= self.target <= self.size * self.size - self.start_length:
-            raise ValueError(f"target must be in 1..{self.size * self.size - self.start_length}, got {self.target}")
-        if not 0 <= self.death_penalty <= 1:
-            raise ValueError(f"death_penalty must be in [0, 1], got {self.death_penalty}")
-        if not 1 <= self.start_length <= self.size // 2:
-            raise ValueError(f"start_length must be in 1..{self.size // 2}, got {self.start_length}")
+    size: int = param(8, 5, 26)              # the board is size x size cells
+    target: int = param(8, 1, lambda p: p.size * p.size - p.start_length)   # food eaten to win
+    death_penalty: float = param(0.5, 0, 1)
+    start_length: int = param(3, 1, lambda p: p.size // 2)
 
 
 class Snake(GlyphTask):

@@ -16,8 +16,9 @@ from typing import Iterable
 import numpy as np
 
 from ...core import GlyphTask, register_variants
-from ...core.params import check_int
-from .grid import DELTAS, FLOOR, GOAL, MOVES, PLAYER, WALL, move_actions, shortest_path
+from ...core.params import param
+from ..common.grid import DELTAS, MOVES, move_actions, shortest_path
+from ..common.palette import FLOOR, GOAL, PLAYER, WALL
 
 BOX, BOX_ON_GOAL, PLAYER_ON_GOAL = "$", "*", "+"   # the classic Sokoban text notation
 Cell = tuple[int, int]
@@ -30,18 +31,14 @@ _TRIES = 1000             # rooms tried per reset before the parameters are decl
 
 @dataclass(frozen=True)
 class SokobanParams:
-    size: int = 6          # the room's interior is size x size; the grid adds the outer wall
-    boxes: int = 1         # boxes, and as many goals
-    inner_walls: int = 2   # wall cells tried inside the room (kept only if the room stays connected)
-    min_pushes: int = 3    # generated levels need at least this many pushes to solve
-    max_moves: int = 30    # ... and a push-optimal solution of at most this many moves
-
-    def __post_init__(self) -> None:
-        check_int("size", self.size, 4, 12)
-        check_int("boxes", self.boxes, 1, 4)
-        check_int("inner_walls", self.inner_walls, 0, self.size * self.size // 4)
-        check_int("min_pushes", self.min_pushes, 1, 6 * self.size)
-        check_int("max_moves", self.max_moves, self.min_pushes, 512)
+    size: int = param(6, 4, 12)              # the room's interior is size x size; the grid adds the outer wall
+    boxes: int = param(1, 1, 4)              # boxes, and as many goals
+    # wall cells tried inside the room (kept only if the room stays connected)
+    inner_walls: int = param(2, 0, lambda p: p.size * p.size // 4)
+    # generated levels need at least this many pushes to solve
+    min_pushes: int = param(3, 1, lambda p: 6 * p.size)
+    # ... and a push-optimal solution of at most this many moves
+    max_moves: int = param(30, lambda p: p.min_pushes, 512)
 
 
 class _Room:

@@ -7,8 +7,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from .arcade import Bag, move_vertical
-from .grid import FLOOR
+from ...core.params import param
+from ..common.lanes import Bag
+from ..common.palette import FLOOR
+from ..common.physics import move_vertical
 
 BLOCK, PIECE = "#", "@"
 
@@ -38,23 +40,11 @@ KICKS = (0, -1, 1, -2, 2)   # column shifts tried, in order, when a rotation is 
 
 @dataclass(frozen=True)
 class TetrisParams:
-    width: int = 10
-    height: int = 16
-    target: int = 5               # lines to clear
-    fall_every: int = 1           # gravity drops the piece one row every this many turns
-    topout_penalty: float = 0.5
-
-    def __post_init__(self) -> None:
-        if not 4 <= self.width <= 20:
-            raise ValueError(f"width must be in 4..20, got {self.width}")
-        if not 6 <= self.height <= 30:
-            raise ValueError(f"height must be in 6..30, got {self.height}")
-        if not 1 <= self.target <= 100:
-            raise ValueError(f"target must be in 1..100, got {self.target}")
-        if not 1 <= self.fall_every <= 8:
-            raise ValueError(f"fall_every must be in 1..8, got {self.fall_every}")
-        if not 0 <= self.topout_penalty <= 1:
-            raise ValueError(f"topout_penalty must be in [0, 1], got {self.topout_penalty}")
+    width: int = param(10, 4, 20)
+    height: int = param(16, 6, 30)
+    target: int = param(5, 1, 100)           # lines to clear
+    fall_every: int = param(1, 1, 8)         # gravity drops the piece one row every this many turns
+    topout_penalty: float = param(0.5, 0, 1)
 
 
 class Tetris(GlyphTask):

@@ -7,8 +7,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, cell_names, register_variants
-from .grid import FLOOR
-from .waves import Enemy, covered_steps, spawn_schedule, volley, walk_path
+from ...core.params import param, require
+from ..common.palette import FLOOR
+from ..common.waves import Enemy, covered_steps, spawn_schedule, volley, walk_path
 
 PATH = "░"
 HEIGHT, WIDTH = 7, 10
@@ -43,29 +44,20 @@ TOWERS = {"ARROW": Tower("A", cost=5, reach=2, damage=1, splash=False),
 
 @dataclass(frozen=True)
 class TowerDefenseParams:
-    waves: int = 5
-    lives: int = 3            # each enemy that walks off the end of the path costs one
-    start_gold: int = 5
-    bounty: int = 1           # gold per kill
-    build_turns: int = 5      # turns before a wave starts by itself
-    base_count: int = 3       # wave w has base_count + w enemies
-    hp_growth: float = 1.5    # wave w draws hit points in low .. low + hp_spread,
-    hp_spread: int = 2        # low = 1 + floor(hp_growth * (w - 1))
-    speed: int = 2            # path cells an enemy walks per turn
-    loss_penalty: float = 0.5
+    waves: int = param(5, 1, 9)
+    lives: int = param(3, 1, 20)             # each enemy that walks off the end of the path costs one
+    start_gold: int = param(5, 0, 99)
+    bounty: int = param(1, 0, 9)             # gold per kill
+    build_turns: int = param(5, 1, 20)       # turns before a wave starts by itself
+    base_count: int = param(3, 1, 12)        # wave w has base_count + w enemies
+    hp_growth: float = param(1.5, 0, None)   # wave w draws hit points in low .. low + hp_spread,
+    hp_spread: int = param(2, 0, 8)          # low = 1 + floor(hp_growth * (w - 1))
+    speed: int = param(2, 1, 3)              # path cells an enemy walks per turn
+    loss_penalty: float = param(0.5, 0, 1)
 
-    def __post_init__(self) -> None:
-        for name, lo, hi in (("waves", 1, 9), ("lives", 1, 20), ("start_gold", 0, 99), ("bounty", 0, 9),
-                             ("build_turns", 1, 20), ("base_count", 1, 12), ("hp_spread", 0, 8),
-                             ("speed", 1, 3)):
-            value = getattr(self, name)
-            if isinstance(value, bool) or not isinstance(value, int) or not lo <= value <= hi:
-                raise ValueError(f"{name} must be an int in {lo}..{hi}, got {value!r}")
-        if not 0 <= self.hp_growth or 1 + int(self.hp_growth * (self.waves - 1)) + self.hp_spread > 9:
-            raise ValueError(f"hp_growth must be >= 0 and keep hit points at most 9 "
-                             f"in wave {self.waves}, got {self.hp_growth}")
-        if not 0 <= self.loss_penalty <= 1:
-            raise ValueError(f"loss_penalty must be in [0, 1], got {self.loss_penalty}")
+    def check(self) -> None:
+        require(1 + int(self.hp_growth * (self.waves - 1)) + self.hp_spread <= 9, "hp_growth",
+                f"small enough to keep hit points at most 9 in wave {self.waves}", self.hp_growth)
 
 
 class TowerDefense(GlyphTask):

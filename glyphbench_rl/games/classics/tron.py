@@ -12,8 +12,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import register_variants
-from ...core.params import check_int, check_range
-from .grid import DELTAS, FLOOR, PLAYER, WALL, move_actions
+from ...core.params import param
+from ..common.grid import DELTAS, move_actions
+from ..common.palette import FLOOR, PLAYER, WALL
 from .versus import DRAW, LOSS, OUTCOME_REWARDS, WIN, VersusTask, choose
 
 TRAIL, RIVAL, RIVAL_TRAIL, CRASH = "o", "E", "e", "*"
@@ -21,14 +22,11 @@ TRAIL, RIVAL, RIVAL_TRAIL, CRASH = "o", "E", "e", "*"
 
 @dataclass(frozen=True)
 class TronParams:
-    size: int = 12          # the arena is size x size; leaving it crashes
-    walls: int = 4          # wall pairs placed point-symmetrically, so neither side is favoured
-    strength: float = 0.9   # probability that the opponent takes its flood-fill move, else a random safe one
-
-    def __post_init__(self) -> None:
-        check_int("size", self.size, 6, 26)
-        check_int("walls", self.walls, 0, self.size * self.size // 8)
-        check_range("strength", self.strength, 0.0, 1.0)
+    size: int = param(12, 6, 26)             # the arena is size x size; leaving it crashes
+    # wall pairs placed point-symmetrically, so neither side is favoured
+    walls: int = param(4, 0, lambda p: p.size * p.size // 8)
+    # probability that the opponent takes its flood-fill move, else a random safe one
+    strength: float = param(0.9, 0, 1)
 
 
 def flood(start: int, free: int, width: int) -> int:

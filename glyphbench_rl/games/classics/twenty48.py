@@ -7,29 +7,23 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import GlyphTask, register_variants
-from .grid import FLOOR, move_actions
+from ...core.params import param, require
+from ..common.grid import move_actions
 
 # A tile 2**k is drawn as the k-th character here: "1" is 2, "9" is 512, "A" is 1024, ...
+from ..common.palette import FLOOR
 TILE_GLYPHS = "123456789ABCDEFGH"
 
 
 @dataclass(frozen=True)
 class Twenty48Params:
-    size: int = 4
-    target: int = 512            # reaching this tile wins
-    four_chance: float = 0.1     # a new tile is a 4 with this probability, else a 2
-    loss_penalty: float = 0.5    # when no move is possible
+    size: int = param(4, 2, 8)
+    target: int = param(512, 8, 1 << len(TILE_GLYPHS))   # reaching this tile wins
+    four_chance: float = param(0.1, 0, 1)    # a new tile is a 4 with this probability, else a 2
+    loss_penalty: float = param(0.5, 0, 1)   # when no move is possible
 
-    def __post_init__(self) -> None:
-        if not 2 <= self.size <= 8:
-            raise ValueError(f"size must be in 2..8, got {self.size}")
-        k = self.target.bit_length() - 1
-        if self.target != 1 << k or not 3 <= k <= len(TILE_GLYPHS):
-            raise ValueError(f"target must be a power of two from 8 to {1 << len(TILE_GLYPHS)}, got {self.target}")
-        if not 0 <= self.four_chance <= 1:
-            raise ValueError(f"four_chance must be in [0, 1], got {self.four_chance}")
-        if not 0 <= self.loss_penalty <= 1:
-            raise ValueError(f"loss_penalty must be in [0, 1], got {self.loss_penalty}")
+    def check(self) -> None:
+        require(self.target & (self.target - 1) == 0, "target", "a power of two", self.target)
 
 
 def slide_row(row: list[int]) -> list[int]:

@@ -25,7 +25,6 @@ from typing import Callable, ClassVar, Mapping, Sequence, TypeVar
 import numpy as np
 
 from ...core import GlyphTask
-from ...core.params import check_int, check_range
 
 WIN, LOSS, DRAW = "win", "loss", "draw"
 OUTCOME_TEXT = {WIN: "You win.", LOSS: "You lose.", DRAW: "Draw."}

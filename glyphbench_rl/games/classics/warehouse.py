@@ -11,8 +11,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from ...core.params import check_int
-from .grid import DELTAS, FLOOR, MOVES, PLAYER, WALL, Board, bfs_distances
+from ...core.params import param
+from ..common.grid import DELTAS, MOVES, Board, bfs_distances
+from ..common.palette import FLOOR, PLAYER, WALL
 
 FILLED = "■"
 Cell = tuple[int, int]
@@ -20,20 +21,12 @@ Cell = tuple[int, int]
 
 @dataclass(frozen=True)
 class WarehouseParams:
-    size: int = 9                # the floor is size x size inside the outer wall
-    packages: int = 3            # packages, each with its own dock
-    rack_gap: int = 2            # floor rows between two rows of racks
-    delivery_share: float = 0.5  # part of the return shared by the deliveries; the rest is the finish bonus
-    time_weight: float = 0.5     # share of the finish bonus lost by using every turn
-
-    def __post_init__(self) -> None:
-        check_int("size", self.size, 5, 20)
-        check_int("packages", self.packages, 1, min(8, (self.size + 1) // 2))
-        check_int("rack_gap", self.rack_gap, 1, self.size)
-        if not 0 < self.delivery_share < 1:
-            raise ValueError(f"delivery_share must be in (0, 1), got {self.delivery_share}")
-        if not 0 <= self.time_weight < 1:
-            raise ValueError(f"time_weight must be in [0, 1), got {self.time_weight}")
+    size: int = param(9, 5, 20)              # the floor is size x size inside the outer wall
+    packages: int = param(3, 1, lambda p: min(8, (p.size + 1) // 2))   # packages, each with its own dock
+    rack_gap: int = param(2, 1, lambda p: p.size)   # floor rows between two rows of racks
+    # part of the return shared by the deliveries; the rest is the finish bonus
+    delivery_share: float = param(0.5, 0, 1, open_lo=True, open_hi=True)
+    time_weight: float = param(0.5, 0, 1, open_hi=True)   # share of the finish bonus lost by using every turn
 
 
 class Warehouse(GlyphTask):

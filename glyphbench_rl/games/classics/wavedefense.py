@@ -7,8 +7,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
-from .grid import FLOOR
-from .waves import Enemy, Rolls, hit, march
+from ...core.params import param
+from ..common.palette import FLOOR
+from ..common.waves import Enemy, Rolls, hit, march
 
 DEFENDER, INVADER, ARMORED, SHOT, BOMB = "▲", "M", "W", "|", "!"
 LEFT, RIGHT, SHOOT = 0, 1, 2      # action indices
@@ -16,37 +17,19 @@ LEFT, RIGHT, SHOOT = 0, 1, 2      # action indices
 
 @dataclass(frozen=True)
 class WaveDefenseParams:
-    width: int = 9
-    height: int = 10
-    target: int = 15            # invaders destroyed to win
-    rows: int = 2               # formation rows per wave
-    cols: int = 4               # formation columns per wave (every other column)
-    fill: float = 0.85          # chance that a formation slot holds an invader
-    armor_step: float = 0.25    # wave w: an invader is armored (2 hits) with chance armor_step x (w-1)
-    march_period: int = 2       # the formation steps once every this many turns
-    shot_speed: int = 3         # cells your shot climbs per turn
-    fire_chance: float = 0.2    # chance per turn that an invader drops a bomb
-    death_penalty: float = 0.5
-
-    def __post_init__(self) -> None:
-        for name, lo, hi in (("width", 5, 26), ("height", 6, 20), ("target", 1, 99), ("rows", 1, 4),
-                             ("march_period", 1, 9), ("shot_speed", 1, 9)):
-            value = getattr(self, name)
-            if isinstance(value, bool) or not isinstance(value, int) or not lo <= value <= hi:
-                raise ValueError(f"{name} must be an int in {lo}..{hi}, got {value!r}")
-        if not 1 <= self.cols <= (self.width - 1) // 2:
-            raise ValueError(f"cols must be in 1..{(self.width - 1) // 2} (every other column, "
-                             f"with room to march), got {self.cols}")
-        if self.rows + 3 > self.height:
-            raise ValueError(f"rows must leave 3 rows below the formation, got rows={self.rows}, "
-                             f"height={self.height}")
-        for name in ("fill", "armor_step", "fire_chance"):
-            if not 0 <= getattr(self, name) <= 1:
-                raise ValueError(f"{name} must be in [0, 1], got {getattr(self, name)}")
-        if self.fill == 0:
-            raise ValueError("fill must be above 0")
-        if not 0 <= self.death_penalty <= 1:
-            raise ValueError(f"death_penalty must be in [0, 1], got {self.death_penalty}")
+    width: int = param(9, 5, 26)
+    height: int = param(10, 6, 20)
+    target: int = param(15, 1, 99)           # invaders destroyed to win
+    rows: int = param(2, 1, lambda p: min(4, p.height - 3))   # formation rows per wave, 3 rows left below it
+    # formation columns per wave (every other column, with room to march)
+    cols: int = param(4, 1, lambda p: (p.width - 1) // 2)
+    fill: float = param(0.85, 0, 1, open_lo=True)   # chance that a formation slot holds an invader
+    # wave w: an invader is armored (2 hits) with chance armor_step x (w-1)
+    armor_step: float = param(0.25, 0, 1)
+    march_period: int = param(2, 1, 9)       # the formation steps once every this many turns
+    shot_speed: int = param(3, 1, 9)         # cells your shot climbs per turn
+    fire_chance: float = param(0.2, 0, 1)    # chance per turn that an invader drops a bomb
+    death_penalty: float = param(0.5, 0, 1)
 
 
 class WaveDefense(GlyphTask):

@@ -1,8 +1,11 @@
 """MiniGrid: Farama MiniGrid's tasks on one shared engine. Importing a module registers its tasks.
 
-``engine.MiniGridTask`` holds MiniGrid's rules, ``world`` its objects, ``grid`` the grid and the
-agent's view, ``solver`` a search used by tests; each family module only generates its level
-(see README_FAMILIES.md).
+Engine-level modules: ``engine`` (``MiniGridTask``: MiniGrid's rules, its level-building helpers
+and random draws, ``beside``), ``world`` (the objects, their glyphs on top of the shared
+palette in ``games.common.palette``), ``grid`` (the grid and the agent's view), ``rooms``
+(MiniGrid's RoomGrid, the two-room layout and the pick-up-the-target mission) and ``solver``
+(a search used by win scripts and tests). Each game module only generates its level and
+imports engine-level modules, never another game.
 """
 
 from . import empty  # noqa: F401

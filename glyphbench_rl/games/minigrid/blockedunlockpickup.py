@@ -14,22 +14,23 @@ import numpy as np
 
 from ...core import register_variants
 from .engine import capped
-from .rooms import RoomGridTask
+from .rooms import PickupTask, TwoRoomParams
 from .solver import drop_beside, fetch, win_script
-from .unlockpickup import UnlockPickup
 from .world import Ball
 
 
-class BlockedUnlockPickup(UnlockPickup):
+class BlockedUnlockPickup(PickupTask):
     title = "MiniGrid BlockedUnlockPickup"
     about = ("Two rooms of {room_size}x{room_size} cells (walls included) are joined by a locked "
              "door whose key lies in your room, and a ball blocks the door on your side; the box to "
              "pick up is in the other room. You carry one object at a time, and opening a box "
              "(TOGGLE) destroys it.")
+    Params = TwoRoomParams             # UnlockPickup's two rooms
     kinds = ("door", "key", "ball", "box")
+    target_kind = "box"
 
     def _gen(self, rng: np.random.Generator) -> None:
-        RoomGridTask._gen(self, rng)                   # the two rooms, then MiniGrid's order
+        super()._gen(rng)                              # the two rooms, then MiniGrid's order
         self.obj, _ = self.add_object(1, 0, kind="box")
         door, (x, y) = self.add_door(0, 0, 0, locked=True)
         self.ball = Ball(self.rand_color())

@@ -19,7 +19,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import register_variants
-from .engine import MiniGridParams, MiniGridTask, capped, check_int
+from ...core.params import param
+from .engine import MiniGridParams, MiniGridTask, capped
 from .world import Goal, Lava, Wall
 
 _OBSTACLES = {"lava": Lava, "wall": Wall}
@@ -27,18 +28,9 @@ _OBSTACLES = {"lava": Lava, "wall": Wall}
 
 @dataclass(frozen=True)
 class CrossingParams(MiniGridParams):
-    size: int = 9               # odd; rivers run along even rows and columns
-    crossings: int = 1          # rivers, each crossable at one cell
-    obstacle: str = "lava"      # "lava" (deadly) or "wall"
-
-    def __post_init__(self) -> None:
-        super().__post_init__()
-        check_int("size", self.size, 5, 31)
-        if self.size % 2 == 0:
-            raise ValueError(f"size must be odd, got {self.size}")
-        check_int("crossings", self.crossings, 1, 2 * ((self.size - 3) // 2))
-        if self.obstacle not in _OBSTACLES:
-            raise ValueError(f"obstacle must be one of {sorted(_OBSTACLES)}, got {self.obstacle!r}")
+    size: int = param(9, 5, 31, odd=True)     # rivers run along even rows and columns
+    crossings: int = param(1, 1, lambda p: 2 * ((p.size - 3) // 2))   # rivers, each crossable at one cell
+    obstacle: str = param("lava", choices=("lava", "wall"))          # "lava" (deadly) or "wall"
 
 
 class Crossing(MiniGridTask):

@@ -9,17 +9,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import register_variants
-from .engine import MiniGridParams, MiniGridTask, capped, check_int
+from ...core.params import param
+from .engine import MiniGridParams, MiniGridTask, capped
 from .world import Goal, Lava
 
 
 @dataclass(frozen=True)
 class DistShiftParams(MiniGridParams):
-    strip2_row: int = 2      # the row of the second lava strip (the first is on row 1)
-
-    def __post_init__(self) -> None:
-        super().__post_init__()
-        check_int("strip2_row", self.strip2_row, 1, 5)
+    strip2_row: int = param(2, 1, 5)      # the row of the second lava strip (the first is on row 1)
 
 
 class DistShift(MiniGridTask):

@@ -8,17 +8,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import register_variants
-from .engine import MiniGridParams, MiniGridTask, capped, check_int
+from ...core.params import param
+from .engine import MiniGridParams, MiniGridTask, capped
 from .world import Door, Goal, Key
 
 
 @dataclass(frozen=True)
 class DoorKeyParams(MiniGridParams):
-    size: int = 8
-
-    def __post_init__(self) -> None:
-        super().__post_init__()
-        check_int("size", self.size, 5, 32)
+    size: int = param(8, 5, 32)
 
 
 class DoorKey(MiniGridTask):

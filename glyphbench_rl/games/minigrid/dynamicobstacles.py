@@ -14,7 +14,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import register_variants
-from .engine import FORWARD, NAV_ACTIONS, MiniGridParams, MiniGridTask, capped, check_int
+from ...core.params import param
+from .engine import FORWARD, NAV_ACTIONS, MiniGridParams, MiniGridTask, capped
 from .world import Ball, Goal
 
 COLLISION_PENALTY = 1.0
@@ -22,13 +23,8 @@ COLLISION_PENALTY = 1.0
 
 @dataclass(frozen=True)
 class DynamicObstaclesParams(MiniGridParams):
-    size: int = 8
-    obstacles: int = 4
-
-    def __post_init__(self) -> None:
-        super().__post_init__()
-        check_int("size", self.size, 4, 32)
-        check_int("obstacles", self.obstacles, 0, self.size // 2 + 1)
+    size: int = param(8, 4, 32)
+    obstacles: int = param(4, 0, lambda p: p.size // 2 + 1)
 
 
 class DynamicObstacles(MiniGridTask):

@@ -12,18 +12,15 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import register_variants
-from .engine import MiniGridParams, MiniGridTask, capped, check_int
+from ...core.params import param
+from .engine import MiniGridParams, MiniGridTask, capped
 from .world import Goal
 
 
 @dataclass(frozen=True)
 class EmptyParams(MiniGridParams):
-    size: int = 8               # the room with its walls is size x size
-    random_start: bool = False  # False: start at (1, 1) facing east
-
-    def __post_init__(self) -> None:
-        super().__post_init__()
-        check_int("size", self.size, 4, 32)
+    size: int = param(8, 4, 32)               # the room with its walls is size x size
+    random_start: bool = param(False)         # False: start at (1, 1) facing east
 
 
 class Empty(MiniGridTask):

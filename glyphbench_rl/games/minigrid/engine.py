@@ -28,8 +28,9 @@ from typing import Any, Callable, ClassVar, Iterable, Sequence, TypeVar
 import numpy as np
 
 from ...core import STANDARD_TURN_CAP, ActionSet, GlyphTask
+from ...core.params import param
 from .grid import VIEW_PAD, Grid
-from .world import AGENT, COLOR_NAMES, DIR_VEC, KINDS, UNSEEN, WorldObj, from_glyph, vocabulary
+from .world import AGENT, COLOR_NAMES, DIR_VEC, KINDS, PORTABLE, UNSEEN, WorldObj, from_glyph, vocabulary
 
 T = TypeVar("T")
 
@@ -58,16 +59,13 @@ def capped(max_steps: int) -> int:
 
 @dataclass(frozen=True)
 class MiniGridParams:
-    view: str = "partial"     # "partial": MiniGrid's 7x7 egocentric view; "full": the whole grid
-
-    def __post_init__(self) -> None:
-        if self.view not in ("partial", "full"):
-            raise ValueError(f"view must be 'partial' or 'full', got {self.view!r}")
+    # "partial": MiniGrid's 7x7 egocentric view; "full": the whole grid
+    view: str = param("partial", choices=("partial", "full"))
 
 
-def check_int(name: str, value: object, lo: int, hi: int) -> None:
-    if isinstance(value, bool) or not isinstance(value, int) or not lo <= value <= hi:
-        raise ValueError(f"{name} must be an int in {lo}..{hi}, got {value!r}")
+def beside(a: tuple[int, int], b: tuple[int, int]) -> bool:
+    """MiniGrid's test for DONE missions: the cells share an edge."""
+    return abs(a[0] - b[0]) + abs(a[1] - b[1]) == 1
 
 
 _VIEW_RULES = {
@@ -250,6 +248,25 @@ class MiniGridTask(GlyphTask):
         if rand_dir:
             self.agent_dir = self.rand_int(0, 4)
         return self.agent_pos
+
+    def place_distinct_objects(self, count: int, *, apart: bool = False
+                               ) -> tuple[list[tuple[str, str]], list[tuple[int, int]]]:
+        """``count`` objects of distinct (kind, colour) on random cells, drawn as MiniGrid's
+        GoToObject and PutNear draw them; ``apart`` keeps each off the 8 cells around earlier ones."""
+        objs: list[tuple[str, str]] = []
+        positions: list[tuple[int, int]] = []
+
+        def near(_task: MiniGridTask, p1: tuple[int, int]) -> bool:
+            return any(abs(p1[0] - p2[0]) <= 1 and abs(p1[1] - p2[1]) <= 1 for p2 in positions)
+
+        while len(objs) < count:
+            kind = self.rand_elem(list(PORTABLE))
+            color = self.rand_elem(COLOR_NAMES)
+            if (kind, color) in objs:
+                continue
+            positions.append(self.place_obj(PORTABLE[kind](color), reject_fn=near if apart else None))
+            objs.append((kind, color))
+        return objs, positions
 
     def rand_int(self, low: int, high: int) -> int:
         """An int in [low, high)."""

@@ -17,7 +17,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import register_variants
-from .engine import PICKUP, MiniGridParams, MiniGridTask, capped, check_int
+from ...core.params import param
+from .engine import PICKUP, MiniGridParams, MiniGridTask, capped
 from .solver import find, plan, run, win_script
 from .world import COLOR_NAMES, Ball, Key
 
@@ -26,13 +27,8 @@ SYNTAX = ("get a", "go get a", "fetch a", "go fetch a", "you must fetch a")
 
 @dataclass(frozen=True)
 class FetchParams(MiniGridParams):
-    size: int = 8
-    objects: int = 3
-
-    def __post_init__(self) -> None:
-        super().__post_init__()
-        check_int("size", self.size, 4, 32)
-        check_int("objects", self.objects, 1, (self.size - 2) ** 2 - 1)
+    size: int = param(8, 4, 32)
+    objects: int = param(3, 1, lambda p: (p.size - 2) ** 2 - 1)
 
 
 class Fetch(MiniGridTask):

@@ -18,23 +18,15 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import register_variants
-from .engine import DONE, TOGGLE, MiniGridParams, MiniGridTask, capped, check_int
+from ...core.params import param
+from .engine import DONE, TOGGLE, MiniGridParams, MiniGridTask, beside, capped
 from .solver import find, plan, run, win_script
 from .world import COLOR_NAMES, Door
 
 
 @dataclass(frozen=True)
 class GoToDoorParams(MiniGridParams):
-    size: int = 5
-
-    def __post_init__(self) -> None:
-        super().__post_init__()
-        check_int("size", self.size, 5, 32)
-
-
-def beside(a: tuple[int, int], b: tuple[int, int]) -> bool:
-    """MiniGrid's test for DONE missions: the cells share an edge."""
-    return abs(a[0] - b[0]) + abs(a[1] - b[1]) == 1
+    size: int = param(5, 5, 32)
 
 
 class GoToDoor(MiniGridTask):

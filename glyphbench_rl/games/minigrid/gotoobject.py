@@ -18,43 +18,15 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import register_variants
-from .engine import DONE, TOGGLE, MiniGridParams, MiniGridTask, capped, check_int
-from .gotodoor import beside
+from ...core.params import param
+from .engine import DONE, TOGGLE, MiniGridParams, MiniGridTask, beside, capped
 from .solver import plan, run, win_script
-from .world import COLOR_NAMES, Ball, Box, Key
-
-MAKERS = {"key": Key, "ball": Ball, "box": Box}
-
-
-def place_distinct_objects(task: MiniGridTask, count: int, *, apart: bool = False
-                           ) -> tuple[list[tuple[str, str]], list[tuple[int, int]]]:
-    """``count`` objects of distinct (kind, colour) on random cells, drawn as MiniGrid's
-    GoToObject and PutNear draw them; ``apart`` keeps each off the 8 cells around earlier ones."""
-    objs: list[tuple[str, str]] = []
-    positions: list[tuple[int, int]] = []
-
-    def near(_task: MiniGridTask, p1: tuple[int, int]) -> bool:
-        return any(abs(p1[0] - p2[0]) <= 1 and abs(p1[1] - p2[1]) <= 1 for p2 in positions)
-
-    while len(objs) < count:
-        kind = task.rand_elem(list(MAKERS))
-        color = task.rand_elem(COLOR_NAMES)
-        if (kind, color) in objs:
-            continue
-        positions.append(task.place_obj(MAKERS[kind](color), reject_fn=near if apart else None))
-        objs.append((kind, color))
-    return objs, positions
 
 
 @dataclass(frozen=True)
 class GoToObjectParams(MiniGridParams):
-    size: int = 6
-    objects: int = 2
-
-    def __post_init__(self) -> None:
-        super().__post_init__()
-        check_int("size", self.size, 4, 32)
-        check_int("objects", self.objects, 1, min(18, (self.size - 2) ** 2 - 1))
+    size: int = param(6, 4, 32)
+    objects: int = param(2, 1, lambda p: min(18, (p.size - 2) ** 2 - 1))
 
 
 class GoToObject(MiniGridTask):
@@ -72,7 +44,7 @@ class GoToObject(MiniGridTask):
     def _gen(self, rng: np.random.Generator) -> None:
         n = self.params.size
         self.new_grid(n, n).wall_rect(0, 0, n, n)
-        objs, positions = place_distinct_objects(self, self.params.objects)
+        objs, positions = self.place_distinct_objects(self.params.objects)
         self.place_agent()
         k = self.rand_int(0, len(objs))
         self.target, self.target_pos = objs[k], positions[k]

@@ -19,8 +19,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import register_variants
-from .engine import PICKUP, capped
-from .rooms import RoomGridParams, RoomGridTask
+from ...core.params import param
+from .engine import capped
+from .rooms import PickupTask, RoomGridParams
 from .solver import fetch, win_script
 
 
@@ -28,26 +29,16 @@ from .solver import fetch, win_script
 class KeyCorridorParams(RoomGridParams):
     room_size: int = 6
     num_rows: int = 3
-    num_cols: int = 3            # MiniGrid's RoomGrid default; the level needs exactly three
-    obj_type: str = "ball"       # the object behind the locked door
-
-    def __post_init__(self) -> None:
-        super().__post_init__()
-        if self.num_cols != 3:
-            raise ValueError(f"num_cols must be 3, got {self.num_cols}")
-        if self.obj_type not in ("ball", "key", "box"):
-            raise ValueError(f"obj_type must be 'ball', 'key' or 'box', got {self.obj_type!r}")
+    num_cols: int = param(3, choices=(3,))     # MiniGrid's RoomGrid default; the level needs three
+    obj_type: str = param("ball", choices=("ball", "key", "box"))   # the object behind the locked door
 
 
-class KeyCorridor(RoomGridTask):
+class KeyCorridor(PickupTask):
     title = "MiniGrid KeyCorridor"
     about = ("Three columns of {num_rows} rooms of {room_size}x{room_size} cells (walls included): "
              "you start in the middle column, an open hallway. A locked door on its east side hides "
              "the {obj_type} to pick up; the key of that door, of the door's colour, lies in one of "
              "the western rooms, behind closed doors. You carry one object at a time.")
-    rewards = ("picking up the {obj_type} named in the mission gives 1 - {decay:g} x (turns used / "
-               "{max_turns}); running out of time gives 0.")
-    ends = "when you pick up the {obj_type} named in the mission"
     Params = KeyCorridorParams
     kinds = ("door", "key", "ball", "box")
 
@@ -64,10 +55,8 @@ class KeyCorridor(RoomGridTask):
         self.connect_all()
         self.mission = f"pick up the {self.obj.color} {self.obj.kind}"
 
-    def _act(self, action: int) -> None:
-        super()._act(action)
-        if action == PICKUP and self.carrying is self.obj:   # MiniGrid's step: carrying == obj
-            self.succeed("That was the mission.")
+    def family_fields(self) -> dict:
+        return {"target_kind": self.params.obj_type}
 
 
 @win_script(KeyCorridor)

@@ -8,17 +8,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import register_variants
-from .engine import MiniGridParams, MiniGridTask, capped, check_int
+from ...core.params import param
+from .engine import MiniGridParams, MiniGridTask, capped
 from .world import Goal, Lava
 
 
 @dataclass(frozen=True)
 class LavaGapParams(MiniGridParams):
-    size: int = 5
-
-    def __post_init__(self) -> None:
-        super().__post_init__()
-        check_int("size", self.size, 5, 32)
+    size: int = param(5, 5, 32)
 
 
 class LavaGap(MiniGridTask):

@@ -15,19 +15,15 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import register_variants
-from .engine import MiniGridParams, MiniGridTask, capped, check_int
+from ...core.params import param
+from .engine import MiniGridParams, MiniGridTask, capped
 from .world import COLOR_NAMES, Door, Goal, Key, Wall
 
 
 @dataclass(frozen=True)
 class LockedRoomParams(MiniGridParams):
-    size: int = 19      # the grid is size x size; odd, so that the six rooms fit MiniGrid's layout
-
-    def __post_init__(self) -> None:
-        super().__post_init__()
-        check_int("size", self.size, 13, 31)
-        if self.size % 2 == 0:
-            raise ValueError(f"size must be odd, got {self.size}")
+    # the grid is size x size; odd, so the six rooms fit MiniGrid's layout
+    size: int = param(19, 13, 31, odd=True)
 
 
 @dataclass

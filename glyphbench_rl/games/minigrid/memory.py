@@ -19,20 +19,15 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import register_variants
-from .engine import PICKUP, TOGGLE, MiniGridParams, MiniGridTask, capped, check_int
+from ...core.params import param
+from .engine import PICKUP, TOGGLE, MiniGridParams, MiniGridTask, capped
 from .solver import plan, run, win_script
 from .world import Ball, Key, Wall
 
 
 @dataclass(frozen=True)
 class MemoryParams(MiniGridParams):
-    size: int = 13
-
-    def __post_init__(self) -> None:
-        super().__post_init__()
-        check_int("size", self.size, 7, 31)
-        if self.size % 2 == 0:
-            raise ValueError(f"size must be odd, got {self.size}")
+    size: int = param(13, 7, 31, odd=True)
 
 
 class Memory(MiniGridTask):

@@ -14,7 +14,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import register_variants
-from .engine import MiniGridParams, MiniGridTask, capped, check_int
+from ...core.params import param
+from .engine import MiniGridParams, MiniGridTask, capped
 from .world import COLOR_NAMES, Door, Goal, Wall
 
 GRID_SIZE = 25
@@ -29,13 +30,8 @@ class _Room:
 
 @dataclass(frozen=True)
 class MultiRoomParams(MiniGridParams):
-    rooms: int = 2
-    max_room_size: int = 10     # rooms measure 4..max_room_size cells a side, walls included
-
-    def __post_init__(self) -> None:
-        super().__post_init__()
-        check_int("rooms", self.rooms, 1, 10)
-        check_int("max_room_size", self.max_room_size, 4, 12)
+    rooms: int = param(2, 1, 10)
+    max_room_size: int = param(10, 4, 12)     # rooms measure 4..max_room_size cells a side, walls included
 
 
 class MultiRoom(MiniGridTask):

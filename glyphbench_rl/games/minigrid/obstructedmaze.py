@@ -29,7 +29,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import register_variants
-from .engine import PICKUP, capped, check_int
+from ...core.params import param, require
+from .engine import PICKUP, capped
 from .rooms import RoomGridParams, RoomGridTask
 from .solver import pick_up, win_script
 from .world import COLOR_NAMES, DIR_VEC, Ball, Box, Key
@@ -44,20 +45,17 @@ class ObstructedMazeParams(RoomGridParams):
     room_size: int = 6
     num_rows: int = 3
     num_cols: int = 3
-    quarters: int = 4            # 0: MiniGrid's 1Dl* (two rooms, one locked door); 1-4: the 3x3 maze
-    agent_room: tuple = (1, 1)   # the 3x3 maze's start room (column, row)
-    key_in_box: bool = True
-    blocked: bool = True
-    keys_last: bool = True       # MiniGrid's -v1: keys placed after all doors and blocking balls
+    quarters: int = param(4, 0, 4)      # 0: MiniGrid's 1Dl* (two rooms, one locked door); 1-4: the 3x3 maze
+    agent_room: tuple[int, int] = param((1, 1), 0, 2)   # the 3x3 maze's start room (column, row)
+    key_in_box: bool = param(True)
+    blocked: bool = param(True)
+    keys_last: bool = param(True)       # MiniGrid's -v1: keys placed after all doors and blocking balls
 
-    def __post_init__(self) -> None:
-        super().__post_init__()
-        check_int("quarters", self.quarters, 0, 4)
+    def check(self) -> None:
         shape = (1, 2) if self.quarters == 0 else (3, 3)
-        if (self.num_rows, self.num_cols, self.room_size) != (*shape, 6):
-            raise ValueError(f"quarters={self.quarters} needs {shape[0]}x{shape[1]} rooms of size 6")
-        if len(self.agent_room) != 2 or not all(isinstance(v, int) and 0 <= v < 3 for v in self.agent_room):
-            raise ValueError(f"agent_room must be a (column, row) of the 3x3 maze, got {self.agent_room!r}")
+        require((self.num_rows, self.num_cols, self.room_size) == (*shape, 6), "num_rows, num_cols, room_size",
+                f"{shape[0]}, {shape[1]}, 6 for quarters={self.quarters}",
+                (self.num_rows, self.num_cols, self.room_size))
 
 
 class ObstructedMaze(RoomGridTask):

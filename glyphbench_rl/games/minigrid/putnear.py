@@ -19,21 +19,16 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import register_variants
-from .engine import DROP, PICKUP, MiniGridParams, MiniGridTask, capped, check_int
-from .gotoobject import place_distinct_objects
+from ...core.params import param
+from .engine import DROP, PICKUP, MiniGridParams, MiniGridTask, capped
 from .solver import plan, run, win_script
 
 
 @dataclass(frozen=True)
 class PutNearParams(MiniGridParams):
-    size: int = 6
-    objects: int = 2
-
-    def __post_init__(self) -> None:
-        super().__post_init__()
-        check_int("size", self.size, 5, 32)
-        # objects keep a cell apart: a room of side m always fits ceil(m / 3) ** 2 of them
-        check_int("objects", self.objects, 2, min(18, (-(-(self.size - 2) // 3)) ** 2))
+    size: int = param(6, 5, 32)
+    # objects keep a cell apart: a room of side m always fits ceil(m / 3) ** 2 of them
+    objects: int = param(2, 2, lambda p: min(18, (-(-(p.size - 2) // 3)) ** 2))
 
 
 class PutNear(MiniGridTask):
@@ -51,7 +46,7 @@ class PutNear(MiniGridTask):
     def _gen(self, rng: np.random.Generator) -> None:
         n = self.params.size
         self.new_grid(n, n).wall_rect(0, 0, n, n)
-        objs, positions = place_distinct_objects(self, self.params.objects, apart=True)
+        objs, positions = self.place_distinct_objects(self.params.objects, apart=True)
         self.place_agent()
         k = self.rand_int(0, len(objs))
         self.move, self.move_pos = objs[k], positions[k]

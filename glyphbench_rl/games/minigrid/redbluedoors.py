@@ -16,18 +16,15 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...core import register_variants
-from .engine import TOGGLE, MiniGridParams, MiniGridTask, capped, check_int
+from ...core.params import param
+from .engine import TOGGLE, MiniGridParams, MiniGridTask, capped
 from .solver import plan, run, win_script
 from .world import Door
 
 
 @dataclass(frozen=True)
 class RedBlueDoorsParams(MiniGridParams):
-    size: int = 8
-
-    def __post_init__(self) -> None:
-        super().__post_init__()
-        check_int("size", self.size, 4, 32)
+    size: int = param(8, 4, 32)
 
 
 class RedBlueDoors(MiniGridTask):

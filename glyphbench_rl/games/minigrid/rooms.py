@@ -9,16 +9,22 @@ ported call for call from MiniGrid builds MiniGrid's level for the same seed. A 
 subclasses :class:`RoomGridTask`, calls ``super()._gen(rng)`` first in its own ``_gen`` and
 takes its sizes from ``RoomGridParams`` fields. MiniGrid's RoomGrid.place_agent(i, j) is
 ``place_agent_in_room`` here (the plain ``place_agent`` keeps the base signature).
+
+Shared by several families: ``TwoRoomParams`` (two 6x6 rooms side by side: Unlock,
+UnlockPickup, BlockedUnlockPickup) and ``PickupTask`` (won by picking up ``self.obj``:
+KeyCorridor, UnlockPickup, BlockedUnlockPickup).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import ClassVar
 
 import numpy as np
 
-from .engine import MiniGridParams, MiniGridTask, check_int
-from .world import COLOR_NAMES, Ball, Box, Door, Key, WorldObj
+from ...core.params import param
+from .engine import PICKUP, MiniGridParams, MiniGridTask
+from .world import COLOR_NAMES, PORTABLE, Door, WorldObj
 
 Pos = tuple[int, int]
 
@@ -46,15 +52,17 @@ class Room:
 
 @dataclass(frozen=True)
 class RoomGridParams(MiniGridParams):
-    room_size: int = 7
-    num_rows: int = 3
-    num_cols: int = 3
+    room_size: int = param(7, 3, 16)
+    num_rows: int = param(3, 1, 8)
+    num_cols: int = param(3, 1, 8)
 
-    def __post_init__(self) -> None:
-        super().__post_init__()
-        check_int("room_size", self.room_size, 3, 16)
-        check_int("num_rows", self.num_rows, 1, 8)
-        check_int("num_cols", self.num_cols, 1, 8)
+
+@dataclass(frozen=True)
+class TwoRoomParams(RoomGridParams):
+    """Two rooms of 6x6 cells side by side: Unlock, UnlockPickup, BlockedUnlockPickup."""
+    room_size: int = 6
+    num_rows: int = 1
+    num_cols: int = param(2, 2, 8)
 
 
 class RoomGridTask(MiniGridTask):
@@ -107,10 +115,10 @@ class RoomGridTask(MiniGridTask):
     def add_object(self, i: int, j: int, kind: str | None = None,
                    color: str | None = None) -> tuple[WorldObj, Pos]:
         if kind is None:
-            kind = self.rand_elem(["key", "ball", "box"])
+            kind = self.rand_elem(list(PORTABLE))
         if color is None:
             color = self.rand_color()
-        obj = {"key": Key, "ball": Ball, "box": Box}[kind](color)
+        obj = PORTABLE[kind](color)
         return self.place_in_room(i, j, obj)
 
     def add_door(self, i: int, j: int, door_idx: int | None = None, color: str | None = None,
@@ -202,7 +210,7 @@ class RoomGridTask(MiniGridTask):
         dists = []
         while len(dists) < num_distractors:
             color = self.rand_elem(COLOR_NAMES)
-            kind = self.rand_elem(["key", "ball", "box"])
+            kind = self.rand_elem(list(PORTABLE))
             if all_unique and (kind, color) in objs:
                 continue
             room_i = self.rand_int(0, self.params.num_cols) if i is None else i
@@ -211,3 +219,21 @@ class RoomGridTask(MiniGridTask):
             objs.append((kind, color))
             dists.append(dist)
         return dists
+
+
+class PickupTask(RoomGridTask):
+    """A room-grid level won by picking up ``self.obj``, the object the mission names (MiniGrid's
+    step compares ``carrying == obj``); picking up anything else does not end the episode."""
+
+    rewards = ("picking up the {target_kind} named in the mission gives 1 - {decay:g} x (turns used "
+               "/ {max_turns}); running out of time gives 0.")
+    ends = "when you pick up the {target_kind} named in the mission"
+    target_kind: ClassVar[str] = "object"      # what the prompt calls the object to pick up
+
+    def family_fields(self) -> dict:
+        return {"target_kind": self.target_kind}
+
+    def _act(self, action: int) -> None:
+        super()._act(action)
+        if action == PICKUP and self.carrying is self.obj:
+            self.succeed("That was the mission.")

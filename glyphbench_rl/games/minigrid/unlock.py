@@ -8,26 +8,12 @@ otherwise runs to the horizon with 0; nothing else ends it.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
 from ...core import register_variants
 from .engine import TOGGLE, capped
-from .rooms import RoomGridParams, RoomGridTask
+from .rooms import RoomGridTask, TwoRoomParams
 from .solver import open_door, win_script
-
-
-@dataclass(frozen=True)
-class UnlockParams(RoomGridParams):
-    room_size: int = 6
-    num_rows: int = 1
-    num_cols: int = 2
-
-    def __post_init__(self) -> None:
-        super().__post_init__()
-        if self.num_cols < 2:
-            raise ValueError(f"num_cols must be at least 2, got {self.num_cols}")
 
 
 class Unlock(RoomGridTask):
@@ -37,7 +23,7 @@ class Unlock(RoomGridTask):
     rewards = ("opening the door gives 1 - {decay:g} x (turns used / {max_turns}); running out of "
                "time gives 0.")
     ends = "when you open the door"
-    Params = UnlockParams
+    Params = TwoRoomParams
     kinds = ("door", "key")
     mission = "open the door"
 

@@ -10,32 +10,22 @@ leaves the episode to run out with 0.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
 from ...core import register_variants
-from .engine import PICKUP, capped
-from .rooms import RoomGridTask
-from .unlock import UnlockParams
+from .engine import capped
+from .rooms import PickupTask, TwoRoomParams
 from .solver import fetch, win_script
 
 
-@dataclass(frozen=True)
-class UnlockPickupParams(UnlockParams):   # the same two-room layout as Unlock
-    pass
-
-
-class UnlockPickup(RoomGridTask):
+class UnlockPickup(PickupTask):
     title = "MiniGrid UnlockPickup"
     about = ("Two rooms of {room_size}x{room_size} cells (walls included) are joined by a locked "
              "door whose key lies in your room; the box to pick up is in the other room. You carry "
              "one object at a time, and opening a box (TOGGLE) destroys it.")
-    rewards = ("picking up the box named in the mission gives 1 - {decay:g} x (turns used / "
-               "{max_turns}); running out of time gives 0.")
-    ends = "when you pick up the box named in the mission"
-    Params = UnlockPickupParams
+    Params = TwoRoomParams             # the same two-room layout as Unlock
     kinds = ("door", "key", "box")
+    target_kind = "box"
 
     def _gen(self, rng: np.random.Generator) -> None:
         super()._gen(rng)
@@ -44,11 +34,6 @@ class UnlockPickup(RoomGridTask):
         self.add_object(0, 0, "key", door.color)
         self.place_agent_in_room(0, 0)
         self.mission = f"pick up the {self.obj.color} {self.obj.kind}"
-
-    def _act(self, action: int) -> None:
-        super()._act(action)
-        if action == PICKUP and self.carrying is self.obj:   # MiniGrid's step: carrying == obj
-            self.succeed("That was the mission.")
 
 
 @win_script(UnlockPickup)

@@ -19,6 +19,8 @@ from __future__ import annotations
 from functools import lru_cache
 from typing import TYPE_CHECKING, ClassVar
 
+from ..common.palette import FLOOR, GOAL, LAVA, UNSEEN, WALL
+
 if TYPE_CHECKING:
     from .engine import MiniGridTask
 
@@ -27,7 +29,7 @@ COLORS = ("red", "green", "blue", "purple", "yellow", "grey")
 COLOR_NAMES = tuple(sorted(COLORS))
 _INITIAL = dict(zip(COLORS, "rgbpye"))
 
-WALL, FLOOR, UNSEEN, GOAL, LAVA, OPEN_DOOR = "█", "·", "░", "◎", "≈", "_"
+OPEN_DOOR = "_"
 AGENT = "▶▼◀▲"                       # indexed by direction: 0 east, 1 south, 2 west, 3 north
 DIR_NAMES = ("east", "south", "west", "north")
 DIR_VEC = ((1, 0), (0, 1), (-1, 0), (0, -1))
@@ -201,6 +203,7 @@ class Door(WorldObj):
 
 
 KINDS = ("goal", "lava", "door", "key", "ball", "box")
+PORTABLE = {"key": Key, "ball": Ball, "box": Box}    # what the agent can carry, in MiniGrid's draw order
 
 
 def from_glyph(glyph: str) -> WorldObj | None:

@@ -1,19 +1,15 @@
-"""Mechanics shared by the real-time Classics arcade games (one tick per turn).
+"""Spawners for real-time games (one tick per turn), driven by the task's rng.
 
-- ``Bag``: shuffled-bag draws (Tetris's 7-bag) from the task's rng.
-- ``fall`` / ``move_vertical``: integer gravity and a cell-by-cell vertical sweep, so a body
-  moving several cells in one tick never tunnels through a solid cell.
+- ``Bag``: shuffled-bag draws (Tetris's 7-bag).
 - ``Lane``: a cyclic row that slides one cell every ``period`` ticks (Frogger's cars and logs).
   Its content is a pure function of the tick, so a whole lane renders as one precomputed string
   and a planner can read any future tick.
-- ``window`` / ``overlay``: a scrolling course is generated once as long row strings; a frame is
-  a slice of it (Flappy's pipes, Ski's slope, the Platformer's camera), with sprites drawn on top.
 - ``runs``: a random pattern of objects and gaps, the way rows of cars, logs and trees spawn.
 """
 
 from __future__ import annotations
 
-from typing import Callable, Sequence, TypeVar
+from typing import Sequence, TypeVar
 
 import numpy as np
 
@@ -41,29 +37,6 @@ class Bag:
         if not self.queue:
             self._fill()
         return self.queue[0]
-
-
-def fall(vy: int, gravity: int, max_fall: int) -> int:
-    """Vertical speed after one tick of gravity (rows per tick, positive = down), capped."""
-    return min(vy + gravity, max_fall)
-
-
-def move_vertical(y: int, dy: int, blocked: Callable[[int], bool]) -> tuple[int, bool]:
-    """Move ``dy`` rows one row at a time, stopping before the first blocked row.
-
-    Returns the new row and whether something stopped the move.
-    """
-    step = 1 if dy > 0 else -1
-    for _ in range(abs(dy)):
-        if blocked(y + step):
-            return y, True
-        y += step
-    return y, False
-
-
-def signed(value: int) -> str:
-    """A HUD integer with an explicit sign: "+2", "-1", "+0"."""
-    return f"{value:+d}"
 
 
 class Lane:
@@ -103,15 +76,3 @@ def runs(rng: np.random.Generator, width: int, item: str, empty: str,
         cells.extend(empty * int(rng.integers(gaps[0], gaps[1] + 1)))
         cells.extend(item * int(rng.integers(lengths[0], lengths[1] + 1)))
     return "".join(cells[:width])
-
-
-def window(rows: Sequence[str], top: int, left: int, height: int, width: int) -> list[str]:
-    """The ``height`` x ``width`` view of a course of equal-length row strings."""
-    return [row[left:left + width] for row in rows[top:top + height]]
-
-
-def overlay(rows: list[str], r: int, c: int, ch: str) -> None:
-    """Draw ``ch`` at (r, c) of a list of row strings, in place (off-view cells are skipped)."""
-    if 0 <= r < len(rows) and 0 <= c < len(rows[r]):
-        row = rows[r]
-        rows[r] = row[:c] + ch + row[c + 1:]

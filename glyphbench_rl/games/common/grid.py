@@ -1,22 +1,21 @@
-"""Grid mechanics shared by the Classics games: directions, a mutable char board, search."""
+"""Grid motion and search: compass moves, a mutable char board, walled rooms, breadth-first
+search over cells or over any hashable state, and sliding until blocked."""
 
 from __future__ import annotations
 
 from collections import deque
-from typing import Callable, Iterable
+from typing import Callable, Hashable, Iterable, TypeVar
 
 from ...core.actions import ActionSet
+
+Cell = tuple[int, int]
+S = TypeVar("S", bound=Hashable)
+Neighbours = Callable[[S], Iterable[tuple[object, S]]]
 
 # Row/column deltas of the four compass moves, in action order.
 MOVES: dict[str, tuple[int, int]] = {"UP": (-1, 0), "DOWN": (1, 0), "LEFT": (0, -1), "RIGHT": (0, 1)}
 DELTAS: tuple[tuple[int, int], ...] = tuple(MOVES.values())
 OPPOSITE = {0: 1, 1: 0, 2: 3, 3: 2}
-
-# Shared palette so the same thing looks the same in every Classics game.
-WALL = "█"
-FLOOR = "·"
-PLAYER = "@"
-GOAL = "◎"
 
 
 def move_actions(verb: str = "move", unit: str = " one cell") -> ActionSet:
@@ -104,3 +103,63 @@ def shortest_path(start: tuple[int, int], goal: tuple[int, int],
                 prev[nxt] = (cur, name)
                 queue.append(nxt)
     return None
+
+
+def slide(start: Cell, delta: Cell, blocked: Callable[[int, int], bool],
+          stops: Callable[[int, int], bool] | None = None) -> Cell:
+    """Where something moving from ``start`` by ``delta`` comes to rest: the last cell before a
+    blocked one, or the first cell where ``stops`` holds (an exit, a hole). ``blocked`` must hold
+    outside the board, so a slide always ends."""
+    r, c = start
+    dr, dc = delta
+    while not blocked(r + dr, c + dc):
+        r, c = r + dr, c + dc
+        if stops is not None and stops(r, c):
+            break
+    return r, c
+
+
+def bfs_search(start: S, neighbours: Neighbours, is_goal: Callable[[S], bool],
+               limit: int | None = None) -> list | None:
+    """The actions of one shortest path from ``start`` to a goal state, or None when no goal is
+    reachable (or more than ``limit`` states were seen). ``neighbours(state)`` yields
+    ``(action, next state)``, the action being a name or an index; states that lose simply have
+    no neighbours and are no goal."""
+    if is_goal(start):
+        return []
+    prev: dict = {start: None}
+    queue = deque([start])
+    while queue:
+        state = queue.popleft()
+        for name, nxt in neighbours(state):
+            if nxt in prev:
+                continue
+            prev[nxt] = (state, name)
+            if is_goal(nxt):
+                path = []
+                while prev[nxt] is not None:
+                    nxt, step = prev[nxt]
+                    path.append(step)
+                return path[::-1]
+            if limit is not None and len(prev) > limit:
+                return None
+            queue.append(nxt)
+    return None
+
+
+def bfs_layers(sources: Iterable[S], neighbours: Callable[[S], Iterable[S]],
+               limit: int | None = None) -> dict[S, int] | None:
+    """Distance (in steps) from the nearest source to every reachable state, or None when more
+    than ``limit`` states are reachable. ``neighbours`` yields bare states here."""
+    dist = {s: 0 for s in sources}
+    queue = deque(dist)
+    while queue:
+        state = queue.popleft()
+        d = dist[state] + 1
+        for nxt in neighbours(state):
+            if nxt not in dist:
+                dist[nxt] = d
+                queue.append(nxt)
+                if limit is not None and len(dist) > limit:
+                    return None
+    return dist

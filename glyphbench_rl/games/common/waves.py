@@ -1,6 +1,6 @@
-"""Wave and enemy mechanics shared by the Classics action games (Bomberman, Tower Defense,
-Wave Defense): enemies with hit points, spawn schedules and spawn cells drawn from the task's
-rng, walking along a fixed path, wandering a maze, and marching in a formation.
+"""Wave and enemy mechanics for action games (Bomberman, Tower Defense, Wave Defense): enemies
+with hit points, spawn schedules and spawn cells drawn from the task's rng, walking along a
+fixed path, wandering a maze, and marching in a formation.
 
 Every random choice takes the task's generator as an argument; nothing here keeps state of its
 own, so a game's episode stays reproducible from its seed.

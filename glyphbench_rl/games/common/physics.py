@@ -1,6 +1,12 @@
-"""Projectile flight over a height map, for games that lob shells (Artillery) or throw things.
+"""Falling and flying bodies.
 
-Coordinates are continuous: ``x`` grows to the right in cell widths (column ``c`` spans
+- ``fall`` / ``move_vertical``: integer gravity on a grid and a cell-by-cell vertical sweep, so
+  a body moving several cells in one tick never tunnels through a solid cell (Flappy, the
+  Platformer, Tetris).
+- ``launch_velocity`` / ``flight``: projectile flight over a height map, for games that lob
+  shells (Artillery) or throw things.
+
+Flight coordinates are continuous: ``x`` grows to the right in cell widths (column ``c`` spans
 ``[c, c + 1)``), ``y`` grows upward in cell heights from the bottom of the field (row ``r`` from
 the bottom spans ``[r, r + 1)``). Ground fills rows ``0 .. heights[c] - 1`` of column ``c``.
 """
@@ -8,11 +14,29 @@ the bottom spans ``[r, r + 1)``). Ground fills rows ``0 .. heights[c] - 1`` of c
 from __future__ import annotations
 
 import math
-from typing import Collection, Sequence
+from typing import Callable, Collection, Sequence
 
 Cell = tuple[int, int]   # (column, row from the bottom)
 
 CELL_FRACTION = 0.5      # a tick moves a shell about this many cells at its launch speed
+
+
+def fall(vy: int, gravity: int, max_fall: int) -> int:
+    """Vertical speed after one tick of gravity (rows per tick, positive = down), capped."""
+    return min(vy + gravity, max_fall)
+
+
+def move_vertical(y: int, dy: int, blocked: Callable[[int], bool]) -> tuple[int, bool]:
+    """Move ``dy`` rows one row at a time, stopping before the first blocked row.
+
+    Returns the new row and whether something stopped the move.
+    """
+    step = 1 if dy > 0 else -1
+    for _ in range(abs(dy)):
+        if blocked(y + step):
+            return y, True
+        y += step
+    return y, False
 
 
 def launch_velocity(angle_deg: float, speed: float, leftward: bool = False) -> tuple[float, float]:

@@ -1,4 +1,4 @@
-"""Board-puzzle helpers shared by the Classics games whose actions name cells.
+"""Board-puzzle helpers for games whose actions name cells.
 
 - ``cell_actions``: one action per board cell (optionally several families, e.g. fill and mark),
   described in one prompt line per family.
