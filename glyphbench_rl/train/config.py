@@ -87,6 +87,9 @@ class TrainConfig(Settings):
     seed: Annotated[int, Field(ge=0)] = 0
     checkpoint_every: Count = 10       # steps between checkpoints (the last step always saves)
     keep_checkpoints: Count = 2
+    #: AdamW state in the latest checkpoint (twice the weights' size), for an exact --resume;
+    #: false saves weights only, and a resume starts the optimizer afresh
+    save_optimizer: bool = True
     eval_every: Annotated[int, Field(ge=0)] = 0   # steps between held-out evaluations (0: never)
     eval_episodes: Count = 4           # held-out episodes per task at each evaluation
     save_rollouts: bool = True         # trajectories of every step, for replay

@@ -81,8 +81,12 @@ class Trainer:
         if ckpt is not None:
             state = json.loads((ckpt / "state.json").read_text())
             self.step = state["step"]
-            self.optimizer.load_state_dict(torch.load(ckpt / "optimizer.pt", weights_only=True))
-            log(f"resumed {self.out} from {ckpt.name} (step {self.step})")
+            if (ckpt / "optimizer.pt").exists():
+                self.optimizer.load_state_dict(torch.load(ckpt / "optimizer.pt", weights_only=True))
+                log(f"resumed {self.out} from {ckpt.name} (step {self.step})")
+            else:
+                log(f"resumed {self.out} from {ckpt.name} (step {self.step}) without optimizer "
+                    f"state (saved with save_optimizer: false): AdamW starts afresh")
         elif resume:
             log(f"{self.out} has no checkpoint yet: starting over from step 0")
         if resume:
@@ -256,12 +260,17 @@ class Trainer:
         tmp = ckpts / f".partial-{final.name}"
         shutil.rmtree(tmp, ignore_errors=True)
         self.policy.save(tmp)
-        self._torch.save(self.optimizer.state_dict(), tmp / "optimizer.pt")
+        if self.cfg.save_optimizer:
+            self._torch.save(self.optimizer.state_dict(), tmp / "optimizer.pt")
         (tmp / "state.json").write_text(json.dumps({"step": self.step}))
         shutil.rmtree(final, ignore_errors=True)
         os.replace(tmp, final)                      # complete, or absent: never half written
-        for old in sorted(p for p in ckpts.glob(f"{CKPT_PREFIX}*"))[:-self.cfg.keep_checkpoints]:
+        saved = sorted(ckpts.glob(f"{CKPT_PREFIX}*"))
+        keep = self.cfg.keep_checkpoints
+        for old in saved[:-keep]:
             shutil.rmtree(old, ignore_errors=True)
+        for old in saved[-keep:-1]:                 # a resume starts from the latest only
+            (old / "optimizer.pt").unlink(missing_ok=True)
         return final
 
     def _discard_after(self, step: int) -> None:

@@ -87,7 +87,10 @@ def test_resume_continues_and_matches_an_uninterrupted_run(tiny_model_dir, tmp_p
     assert [m["step"] for m in b] == [1, 2, 3]
     assert a[2]["train/return_mean"] == b[2]["train/return_mean"]
     assert a[2]["train/loss"] == pytest.approx(b[2]["train/loss"], rel=1e-4, abs=1e-6)
-    assert len(list((tmp_path / "b" / "checkpoints").glob("step_*"))) == 2   # keep_checkpoints
+    kept = sorted((tmp_path / "b" / "checkpoints").glob("step_*"))
+    assert len(kept) == 2                                                   # keep_checkpoints
+    # optimizer state only where a resume needs it: the latest checkpoint
+    assert [(c / "optimizer.pt").exists() for c in kept] == [False, True]
     assert not list((tmp_path / "b" / "checkpoints").glob(".partial-*"))
 
 
@@ -109,6 +112,21 @@ def test_resume_before_the_first_checkpoint_redoes_the_step_once(tiny_model_dir,
     assert steps == [1]
     records = (tmp_path / "r" / "eval" / "step_000001" / "episodes.jsonl").read_text().splitlines()
     assert len(records) == 1
+
+
+def test_checkpoints_without_optimizer_state_resume_with_a_fresh_optimizer(tiny_model_dir, tmp_path):
+    model, tok = _model(tiny_model_dir)
+    logs = []
+    Trainer(_cfg(steps=1, save_optimizer=False), tmp_path / "w", model=model, tokenizer=tok,
+            log=lambda m: None).run()
+    [ckpt] = (tmp_path / "w" / "checkpoints").glob("step_*")
+    assert not (ckpt / "optimizer.pt").exists() and (ckpt / "model.safetensors").exists()
+    m2, _ = _model(tiny_model_dir)
+    tr = Trainer(_cfg(steps=2, save_optimizer=False), tmp_path / "w", model=m2, tokenizer=tok,
+                 resume=True, log=logs.append)
+    assert tr.step == 1 and any("AdamW starts afresh" in line for line in logs)
+    tr.run()
+    assert [json.loads(x)["step"] for x in (tmp_path / "w" / "metrics.jsonl").read_text().splitlines()] == [1, 2]
 
 
 def test_existing_run_needs_resume(tiny_model_dir, tmp_path):

@@ -82,7 +82,7 @@ ONLY_AT_DEFAULT = {       # expressible only at their default value
     "format_reward": "the glyphbench-rl env rewards the episode return only",
 }
 NOT_CARRIED = ("device", "dtype", "micro_batch_tokens", "max_episodes_at_once", "save_rollouts", "seed",
-               "tensorboard")
+               "tensorboard", "save_optimizer")
 TASKSET_PROMPT_KEYS = ("history", "legend", "max_context_tokens")   # harness keys the taskset takes
 
 
