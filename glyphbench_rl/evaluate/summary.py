@@ -124,10 +124,9 @@ def format_summary(summary: dict[str, Any], title: str | None = None) -> str:
         out.append(_line(r["task_id"], width, [r["suite"], str(r["episodes"])], _cells(r)))
     out += ["", f"aggregates: {summary['weighting']}",
             _line("suite", width, ["", "tasks"], _HEAD)]
-    groups = summary["suites"] + [summary["overall"]]
-    if summary["standard"]["tasks"] != summary["overall"]["tasks"]:  # else the same numbers twice
-        groups.append(summary["standard"])
-    for g in groups:
+    # the standard-tier row always: it is the paper's headline number, even when every task is
+    # standard and it repeats the overall row
+    for g in summary["suites"] + [summary["overall"], summary["standard"]]:
         if g["tasks"]:
             out.append(_line(g["name"], width, ["", str(g["tasks"])], _cells(g)))
     return "\n".join(out) + "\n"

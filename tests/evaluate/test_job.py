@@ -61,6 +61,7 @@ def test_job_records_and_summary_match_hand_computed_values(tmp_path):
     assert result.summary["standard"]["tasks"] == 2
     text = (tmp_path / "summary.txt").read_text()
     assert SNAKE in text and "Classics" in text and "PARTIAL" not in text
+    assert "\nstandard tier " in text and "\noverall " in text    # the README's standard-tier row
     saved = json.loads((tmp_path / "summary.json").read_text())
     assert saved["overall"]["return_mean"] == pytest.approx(overall["return_mean"])
     cfg = json.loads((tmp_path / "config.json").read_text())
