@@ -103,9 +103,12 @@ def register(spec: TaskSpec) -> TaskSpec:
         raise ValueError(f"task {spec.id} is already registered")
     _REGISTRY[spec.id] = spec
     if spec.id not in gym.registry:
+        # gymnasium.make returns the task itself: GlyphTask refuses a step before reset and the
+        # contract tests run gymnasium's full checker on every task, so the order and passive
+        # checker wrappers add nothing, and check_env(gymnasium.make(id)) checks the task unwrapped
         gym.register(id=spec.id, entry_point="glyphbench_rl.core.registry:_gym_entry",
                      kwargs={"task_id": spec.id}, nondeterministic=False,
-                     disable_env_checker=False, order_enforce=True)
+                     disable_env_checker=True, order_enforce=False)
     return spec
 
 
