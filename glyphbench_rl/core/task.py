@@ -38,8 +38,8 @@ _RETURN_EPS = 1e-9
 
 OBSERVATION_CONVENTIONS = (
     "Each turn you see a status line (Step t/N and other counters), the grid (one character per "
-    "cell, north at the top), a legend of the glyphs on the grid, and a message when something "
-    "happened.")
+    "cell, north at the top), a legend of the glyphs on the grid, and a message line when something "
+    "happened or the turn paid a reward (Reward +x or Reward -x).")
 AXES_CONVENTION = "Columns are lettered from A at the left and rows numbered from 1 at the top; a cell is named like C4."
 ACTION_FORMAT = "Reply with exactly one action from the list as <action>NAME</action>."
 
@@ -269,6 +269,8 @@ class GlyphTask(gym.Env[str, int]):
                 self._clamped = True
                 reward = min(1.0, max(-1.0, total)) - self.episode_return
         self.episode_return += reward
+        if abs(reward) > _RETURN_EPS:       # every paying turn says so, once, for every game
+            self._messages.append(f"Reward {reward:+.3g}")
         if self.turn >= self.max_turns and not self._terminated:
             self._truncated = True
         self._frame = self._build_frame()

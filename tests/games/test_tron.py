@@ -49,7 +49,7 @@ def test_win_path_against_a_random_opponent():
             _, _, term, _, info = task.step(greedy(task))
         if task.won:
             wins += 1
-            assert task.episode_return == 1.0 and info["frame"].message.endswith("You win.")
+            assert task.episode_return == 1.0 and info["frame"].message.endswith("You win. Reward +1")
             assert "The opponent crashed." in info["frame"].message
     assert wins >= 8
 
