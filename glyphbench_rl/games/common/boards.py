@@ -4,7 +4,8 @@
   described in one prompt line per family.
 - ``Bits``: a board's cells as bits of a Python int (row-major), so regions, flood fills and
   neighbourhoods cost a few big-int operations instead of set walks.
-- ``runs`` / ``clue_text``: run-length clues of a line of cells (nonograms).
+- ``runs`` / ``clue_margins``: run-length clues of a line of cells and their layout around the
+  board, as a printed nonogram has them (nonograms).
 """
 
 from __future__ import annotations
@@ -110,6 +111,21 @@ def runs(line: int, length: int) -> tuple[int, ...]:
     return tuple(out)
 
 
-def clue_text(clues: Sequence[Sequence[int]]) -> str:
-    """Clues of successive lines, ``/`` between lines, spaces between runs; an empty line is 0."""
-    return "/".join(" ".join(map(str, clue)) if clue else "0" for clue in clues)
+def clue_char(n: int) -> str:
+    """One character for a clue number: its digit below 10, else its circled number (⑩ is 10,
+    up to ⑳)."""
+    return str(n) if n < 10 else chr(0x2460 + n - 1)
+
+
+def clue_margins(row_clues: Sequence[Sequence[int]],
+                 col_clues: Sequence[Sequence[int]]) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """The clues laid out as a printed nonogram has them, as ``Frame.above`` and ``Frame.beside``:
+    each column's numbers stacked over the column, one character each (``clue_char``), the last
+    run nearest the board; each row's numbers right of the row, separated by spaces. An empty
+    line's clue is 0."""
+    stacks = [[clue_char(n) for n in clue] or ["0"] for clue in col_clues]
+    depth = max(map(len, stacks), default=0)
+    stacks = [[" "] * (depth - len(stack)) + stack for stack in stacks]
+    above = tuple("".join(stack[i] for stack in stacks).rstrip() for i in range(depth))
+    beside = tuple(" ".join(map(str, clue)) if clue else "0" for clue in row_clues)
+    return above, beside
