@@ -55,23 +55,20 @@ class Bits:
         row = mask | (mask << 1 & self._no_first_col) | (mask >> 1 & self._no_last_col)
         return (row | row << self.width | row >> self.width) & self.full
 
-    def flood(self, seed: int, allowed: int) -> int:
-        """The cells of ``allowed`` 4-connected to ``seed`` (seed cells outside it are dropped)."""
+    def flood(self, seed: int, allowed: int, diagonal: bool = False) -> int:
+        """The cells of ``allowed`` 4-connected (8-connected with ``diagonal``) to ``seed``
+        (seed cells outside it are dropped)."""
+        grow = self.grow8 if diagonal else self.grow
         region = seed & allowed
         while True:
-            grown = self.grow(region) & allowed
+            grown = grow(region) & allowed
             if grown == region:
                 return region
             region = grown
 
     def flood8(self, seed: int, allowed: int) -> int:
         """The cells of ``allowed`` 8-connected (diagonals too) to ``seed``."""
-        region = seed & allowed
-        while True:
-            grown = self.grow8(region) & allowed
-            if grown == region:
-                return region
-            region = grown
+        return self.flood(seed, allowed, diagonal=True)
 
     def regions(self, mask: int) -> Iterator[int]:
         """The 4-connected components of ``mask``, lowest cell first."""
