@@ -7,7 +7,6 @@ solution and can be solved one line at a time, without guessing.
 
 from __future__ import annotations
 
-import dataclasses
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -150,7 +149,8 @@ class Nonogram(GlyphTask):
 
     def _build_frame(self) -> Frame:
         # the clues stand around the board, as printed (Frame.above / Frame.beside), not in the HUD
-        return dataclasses.replace(super()._build_frame(), above=self._above, beside=self._beside)
+        f = super()._build_frame()
+        return Frame(f.grid, f.legend, f.hud, f.message, f.axes, self._above, self._beside)
 
 
 @lru_cache(maxsize=1 << 16)
