@@ -38,8 +38,8 @@ _RETURN_EPS = 1e-9
 
 OBSERVATION_CONVENTIONS = (
     "Each turn you see a status line (Step t/N and other counters), the grid (one character per "
-    "cell, north at the top), a legend of the glyphs on the grid, and a message line when something "
-    "happened or the turn paid a reward (Reward +x or Reward -x).")
+    "cell, north at the top), a legend of the glyphs on the grid, and a message line when "
+    "something happened or the turn paid a reward (Reward +x or Reward -x).")
 AXES_CONVENTION = "Columns are lettered from A at the left and rows numbered from 1 at the top; a cell is named like C4."
 ACTION_FORMAT = "Reply with exactly one action from the list as <action>NAME</action>."
 
@@ -166,7 +166,7 @@ class GlyphTask(gym.Env[str, int]):
     # -- gymnasium API ------------------------------------------------------------------------------
     def reset(self, *, seed: int | None = None, options: dict | None = None) -> tuple[str, dict]:
         if seed is None and self._seedseq is None:
-            seed = secrets.randbelow(MAX_SEED + 1)   # gymnasium convention: seed from entropy, reported in info
+            seed = secrets.randbelow(MAX_SEED + 1)   # gymnasium convention: drawn from entropy
         if seed is None:
             # gymnasium convention: an unseeded reset continues the seeded stream, reproducibly
             self._seedseq = self._seedseq.spawn(1)[0]
