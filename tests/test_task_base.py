@@ -4,7 +4,7 @@ from dataclasses import dataclass
 
 import pytest
 
-from glyphbench_rl.core import ActionSet, GlyphTask, TaskSpec, make, register
+from glyphbench_rl.core import ActionSet, GlyphTask, TaskSpec, make, register, seeding
 from glyphbench_rl.core.registry import UnknownTaskError, get_spec
 
 
@@ -73,9 +73,36 @@ def test_turn_cap_truncates_and_standard_cap_is_enforced():
 
 def test_unseeded_reset_continues_the_seeded_stream():
     a, b = Coins(), Coins()
-    a.reset(seed=5)
+    assert a.reset(seed=5)[1]["seed"] == 5
     b.reset(seed=5)
     assert [a.reset()[0] for _ in range(5)] == [b.reset()[0] for _ in range(5)]
+    assert a.reset()[1]["seed"] is None      # reproduced by the first seed and the resets since
+
+
+def test_first_reset_without_a_seed_draws_one_and_reports_it():
+    task = Coins()
+    obs, info = task.reset()
+    seed = info["seed"]
+    assert isinstance(seed, int) and 0 <= seed <= seeding.MAX_SEED
+    assert Coins().reset(seed=seed)[0] == obs
+    assert Coins().reset()[1]["seed"] != seed     # drawn from entropy, not fixed
+    with pytest.raises(TypeError, match="int seed"):
+        Coins().reset(seed=1.5)
+
+
+def test_a_step_that_pays_says_so_in_the_message_line():
+    task = Coins(gain=0.5, cost=0.25)
+    task.reset(seed=0)
+    obs, reward, *_ , info = task.step("GRAB")
+    assert info["frame"].message == "Reward +0.25" and obs.endswith("\nReward +0.25")
+    task = Coins(gain=0.0, cost=0.125)
+    task.reset(seed=0)
+    assert task.step("GRAB")[-1]["frame"].message == "Reward -0.125"
+    task = Coins(gain=0.0, cost=0.0)
+    task.reset(seed=0)
+    assert task.step("GRAB")[-1]["frame"].message == ""     # nothing paid, nothing said
+    assert task.forfeit()[-1]["frame"].message == "No valid action: nothing happened."
+    assert "Reward +x" in task.system_prompt()
 
 
 def test_unknown_parameter_names_the_valid_ones():

@@ -1,5 +1,6 @@
 import subprocess
 import sys
+from collections import Counter
 from pathlib import Path
 
 import pytest
@@ -48,3 +49,63 @@ def test_multitask100_is_the_paper_mixture():
     assert ids == [r[2] for r in rows if r[4] == "yes"]
     assert Counter(r[0] for r in rows if r[4] == "yes") == {
         "Classics": 18, "Craftax": 18, "MiniAtari": 18, "MiniGrid": 18, "MiniHack": 19, "Procgen": 9}
+
+
+def test_missing_task_list_file_says_it_does_not_exist(tmp_path):
+    missing = tmp_path / "nope.txt"
+    with pytest.raises(ValueError, match=r"^task-list file '.*nope\.txt' does not exist$"):
+        resolve_tasks(str(missing))
+    with pytest.raises(ValueError, match=r"^task-list file '/no/such/list' does not exist$"):
+        resolve_tasks(["glyphbench/classics-snake-easy-v0", "/no/such/list"])
+    with pytest.raises(ValueError, match="is a directory"):
+        resolve_tasks(str(tmp_path))
+    with pytest.raises(UnknownTaskError, match="closest"):     # a mistyped ID is still an ID
+        resolve_tasks("glyphbench/classics-snake-eazy-v0")
+
+
+def test_binary_task_list_file_is_one_line_naming_the_file(tmp_path):
+    binary = tmp_path / "tasks.bin"
+    binary.write_bytes(b"glyphbench/classics-snake-easy-v0\n\xff\xfe\x00garbage\n")
+    with pytest.raises(ValueError) as e:
+        resolve_tasks(str(binary))
+    message = str(e.value)
+    assert str(binary) in message and "not UTF-8 text" in message and "\n" not in message
+
+
+def test_non_string_task_entries_are_one_line_errors():
+    for bad, named in (([1, 2], "got 1 (int)"), (["glyphbench/classics-snake-easy-v0", None], "got None")):
+        with pytest.raises(ValueError) as e:
+            resolve_tasks(bad)
+        assert "\n" not in str(e.value) and "task IDs" in str(e.value) and named in str(e.value)
+
+
+def test_unimplemented_catalog_tasks_are_counted_by_suite():
+    """The paper's 100-task mixture names tasks not implemented yet: one line says how many, of
+    which suites, and an example (not the first one alone, as if it were the only one)."""
+    path = ROOT / "tasks" / "multitask100.txt"
+    ids = read_task_file(path)
+    registered = set(list_tasks())
+    missing = [t for t in ids if t not in registered]
+    if not missing:
+        pytest.skip("every task of the mixture is implemented")
+    with pytest.raises(UnknownTaskError) as e:
+        resolve_tasks(str(path))
+    message = str(e.value)
+    rows = [line.split("\t") for line in (ROOT / "tasks" / "catalog.tsv").read_text().splitlines()[1:]]
+    suite_of = {r[2]: r[0] for r in rows}
+    counts = Counter(suite_of[t] for t in missing)
+    assert message.startswith(f"{len(missing)} of the {len(ids)} tasks are not implemented in this version yet (")
+    for suite, n in counts.items():
+        assert f"{suite} {n}" in message
+    assert f"e.g. {missing[0]}" in message and "glyphbench list --counts" in message and "\n" not in message
+
+
+def test_train_cli_names_the_unimplemented_count(tmp_path, capsys):
+    from glyphbench_rl.cli.train import main
+    if all(t in set(list_tasks()) for t in read_task_file(ROOT / "tasks" / "multitask100.txt")):
+        pytest.skip("every task of the mixture is implemented")
+    assert main([str(ROOT / "configs" / "multitask.yaml"), "--backend", "prime-rl",
+                 "--out", str(tmp_path / "run")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("glyphbench-train: error: ") and "of the 100 tasks are not implemented" in err
+    assert "\n" not in err

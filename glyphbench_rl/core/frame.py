@@ -10,7 +10,9 @@ A rendered observation reads, top to bottom:
     You ate food.                   <- message, only when something happened
 
 Board games whose actions name cells (``C4``) render with column letters above the grid and row
-numbers to its left (``axes=True``); those labels are not part of ``Frame.grid``.
+numbers to its left (``axes=True``); those labels are not part of ``Frame.grid``. Text that is
+about the grid but not cells (a nonogram's clues) goes in ``above`` (lines above the board, a
+character per column) and ``beside`` (text right of each row), also outside ``Frame.grid``.
 """
 
 from __future__ import annotations
@@ -27,6 +29,8 @@ class Frame:
     hud: str
     message: str = ""
     axes: bool = False
+    above: tuple[str, ...] = ()      # lines above the board, character c over column c
+    beside: tuple[str, ...] = ()     # per row, text right of it ("" for none); or () for no row
 
     def render(self) -> str:
         return render(self)
@@ -50,10 +54,15 @@ def render(frame: Frame) -> str:
     lines = [frame.hud]
     if frame.axes:
         width = len(str(len(frame.grid)))
+        lines.extend(" " * (width + 1) + line for line in frame.above)
         lines.append(" " * (width + 1) + "".join(chr(65 + c) for c in range(len(frame.grid[0]))))
-        lines.extend(f"{r + 1:>{width}} {row}" for r, row in enumerate(frame.grid))
+        rows = [f"{r + 1:>{width}} {row}" for r, row in enumerate(frame.grid)]
     else:
-        lines.extend(frame.grid)
+        lines.extend(frame.above)
+        rows = frame.grid
+    if frame.beside:
+        rows = [f"{row} {note}" if note else row for row, note in zip(rows, frame.beside)]
+    lines.extend(rows)
     lines.append("Legend: " + ", ".join(f"{g} {m}" for g, m in frame.legend))
     if frame.message:
         lines.append(frame.message)
@@ -90,4 +99,8 @@ def check_frame(frame: Frame) -> list[str]:
         problems.append("a legend meaning is empty or spans lines")
     if "\n" in frame.hud or "\n" in frame.message:
         problems.append("HUD and message must be one line each")
+    if frame.beside and len(frame.beside) != len(grid):
+        problems.append(f"{len(frame.beside)} beside notes for {len(grid)} rows")
+    if any("\n" in line for line in (*frame.above, *frame.beside)):
+        problems.append("a line above or beside the grid spans lines")
     return problems

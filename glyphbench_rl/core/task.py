@@ -21,6 +21,7 @@ seed them from ``self.seed_sequence`` (``seeding.nle_seeds``, ``seeding.jax_key_
 from __future__ import annotations
 
 import dataclasses
+import secrets
 import string
 from typing import Any, ClassVar, Mapping
 
@@ -30,15 +31,15 @@ import numpy as np
 from .actions import ActionSet
 from .frame import Frame, build_frame
 from .params import ParamError, check_params
-from .seeding import check_seed, derive
+from .seeding import MAX_SEED, check_seed, derive
 
 STANDARD_TURN_CAP = 512
 _RETURN_EPS = 1e-9
 
 OBSERVATION_CONVENTIONS = (
     "Each turn you see a status line (Step t/N and other counters), the grid (one character per "
-    "cell, north at the top), a legend of the glyphs on the grid, and a message when something "
-    "happened.")
+    "cell, north at the top), a legend of the glyphs on the grid, and a message line when "
+    "something happened or the turn paid a reward (Reward +x or Reward -x).")
 AXES_CONVENTION = "Columns are lettered from A at the left and rows numbered from 1 at the top; a cell is named like C4."
 ACTION_FORMAT = "Reply with exactly one action from the list as <action>NAME</action>."
 
@@ -164,9 +165,9 @@ class GlyphTask(gym.Env[str, int]):
 
     # -- gymnasium API ------------------------------------------------------------------------------
     def reset(self, *, seed: int | None = None, options: dict | None = None) -> tuple[str, dict]:
+        if seed is None and self._seedseq is None:
+            seed = secrets.randbelow(MAX_SEED + 1)   # gymnasium convention: drawn from entropy
         if seed is None:
-            if self._seedseq is None:
-                check_seed(seed)  # raises: the first reset must name its seed
             # gymnasium convention: an unseeded reset continues the seeded stream, reproducibly
             self._seedseq = self._seedseq.spawn(1)[0]
             self.seed_value: int | None = None
@@ -181,7 +182,7 @@ class GlyphTask(gym.Env[str, int]):
         self._setup(rng)
         self._started = True
         self._frame = self._build_frame()
-        return self._frame.render(), self._info(forfeit=False)
+        return self._frame.render(), self._info(forfeit=False) | {"seed": self.seed_value}
 
     def step(self, action: int | str) -> tuple[str, float, bool, bool, dict]:
         self._check_running()
@@ -268,6 +269,8 @@ class GlyphTask(gym.Env[str, int]):
                 self._clamped = True
                 reward = min(1.0, max(-1.0, total)) - self.episode_return
         self.episode_return += reward
+        if abs(reward) > _RETURN_EPS:       # every paying turn says so, once, for every game
+            self._messages.append(f"Reward {reward:+.3g}")
         if self.turn >= self.max_turns and not self._terminated:
             self._truncated = True
         self._frame = self._build_frame()

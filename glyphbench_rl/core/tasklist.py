@@ -5,25 +5,41 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from .registry import get_spec, list_tasks
+from .registry import UnknownTaskError, get_spec, is_registered, list_tasks, unregistered_tasks_message
 
 
 def read_task_file(path: str | os.PathLike) -> list[str]:
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+    except UnicodeDecodeError as e:
+        raise ValueError(f"task-list file {str(path)!r} is not UTF-8 text (byte 0x{e.object[e.start]:02x} "
+                         f"at offset {e.start}); a task list holds one task ID per line") from None
     ids = []
-    for n, line in enumerate(Path(path).read_text(encoding="utf-8").splitlines(), 1):
+    for line in text.splitlines():
         line = line.split("#", 1)[0].strip()
         if line:
             ids.append(line)
     return ids
 
 
+def _looks_like_a_file(item: str) -> bool:
+    """A name that cannot be a task ID (IDs are glyphbench/ plus letters, digits and hyphens)."""
+    return "." in item or item.startswith(("/", "~")) or ("/" in item and not item.startswith("glyphbench/"))
+
+
 def resolve_tasks(selection: str | list[str]) -> list[str]:
     """IDs named by ``selection``: a task-list file, a glob, comma-separated IDs, or a list.
 
-    Every ID is checked against the registry (unknown ones raise naming the closest IDs);
-    duplicates keep their first position.
+    Every ID is checked against the registry: unknown ones raise naming the closest IDs, and
+    catalog tasks not implemented yet raise once for the whole list, counted by suite; a
+    missing or unreadable file, or an entry that is not a string, is a one-line ValueError.
+    Duplicates keep their first position.
     """
     items = selection if isinstance(selection, list) else [selection]
+    for item in items:
+        if not isinstance(item, str):
+            raise ValueError(f"a task list holds task IDs, globs or task-list file names as strings; "
+                             f"got {item!r} ({type(item).__name__})")
     # a comma list may mix IDs, globs and files: split it first (file names have no commas here)
     items = [part for item in items for part in
              ([item] if os.path.isfile(item.strip()) else item.split(","))]
@@ -34,18 +50,24 @@ def resolve_tasks(selection: str | list[str]) -> list[str]:
             continue
         if os.path.isfile(item):
             ids = read_task_file(item)
+        elif os.path.isdir(item):
+            raise ValueError(f"task list {item!r} is a directory, not a task-list file")
         elif any(ch in item for ch in "*?["):
             ids = list_tasks(pattern=item)
             if not ids:
                 raise ValueError(f"no registered task matches {item!r}")
+        elif _looks_like_a_file(item):
+            raise ValueError(f"task-list file {item!r} does not exist")
         else:
             ids = [item]
         for task_id in ids:
-            get_spec(task_id)
             if task_id not in out:
                 out.append(task_id)
     if not out:
         raise ValueError(f"no tasks selected by {selection!r}")
+    missing = [task_id for task_id in out if not is_registered(task_id)]
+    if missing:
+        raise UnknownTaskError(unregistered_tasks_message(missing, len(out)))
     return out
 
 

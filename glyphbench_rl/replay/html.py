@@ -343,6 +343,7 @@ _JS = r"""
     const rows = frame.grid.map((r) => Array.from(r));
     const cols = rows.reduce((m, r) => Math.max(m, r.length), 0);
     const width = String(rows.length).length;
+    frame.above.forEach((line) => grid.appendChild(el("div", "row axis", line)));
     if (frame.axes) {
       let letters = " ".repeat(width + 1);
       for (let c = 0; c < cols; c++) letters += String.fromCharCode(65 + c);
@@ -360,12 +361,15 @@ _JS = r"""
         run += ch;
       }
       if (run) row.appendChild(el("span", runClass, run));
+      if (frame.beside[r]) row.appendChild(el("span", "axis", " " + frame.beside[r]));
       grid.appendChild(row);
     });
-    const wide = cols + (frame.axes ? width + 1 : 0);
+    const notes = frame.beside.reduce((m, n) => Math.max(m, n ? n.length + 1 : 0), 0);
+    const wide = Math.max(cols + (frame.axes ? width + 1 : 0) + notes,
+                          ...frame.above.map((line) => line.length));
     const room = $("board").clientWidth - 50;
     const byWidth = room / Math.max(1, wide) / 0.61;
-    const byHeight = (window.innerHeight * 0.62) / Math.max(1, rows.length + 1) / 1.08;
+    const byHeight = (window.innerHeight * 0.62) / Math.max(1, rows.length + 1 + frame.above.length) / 1.08;
     const size = Math.floor(Math.min(byWidth, byHeight));
     grid.style.fontSize = Math.max(10, Math.min(96, size)) + "px";   // small boards fill the panel
     const legend = $("legend");

@@ -170,8 +170,9 @@ def grid_segments(frame: FrameView) -> list[list[Segment]]:
     """The grid as drawn: per line, coloured runs; axis labels dim, each glyph in its legend
     entry's colour (a glyph the legend does not name in the plain text colour)."""
     colours = {entry[0]: class_colour(entry[2], entry[3]) for entry in frame.legend}
-    return [_runs([*((ch, DIM) for ch in label), *((ch, colours.get(ch, TEXT)) for ch in cells)])
-            for label, cells in frame.shown_rows()]
+    return [_runs([*((ch, DIM) for ch in label), *((ch, colours.get(ch, TEXT)) for ch in cells),
+                   *((ch, DIM) for ch in note)])
+            for label, cells, note in frame.shown_rows()]
 
 
 # -- fonts ---------------------------------------------------------------------------------------
@@ -298,7 +299,7 @@ def _texts(panel: _Panel, columns: int) -> dict[str, list[list[Segment]]]:
 
 def _layout(panels: Sequence[_Panel], grid_face: _Typeface, text_face: _Typeface) -> _Layout:
     shown = [p.frame.shown_rows() for p in panels]
-    cols = max(max((len(label) + len(cells) for label, cells in rows), default=0) for rows in shown)
+    cols = max(max((sum(map(len, row)) for row in rows), default=0) for rows in shown)
     rows = max(len(r) for r in shown)
     if cols > MAX_CELLS[0] or rows > MAX_CELLS[1]:
         raise ImageExportError(f"observation grid of {cols}x{rows} characters is too large to draw "

@@ -100,7 +100,7 @@ def header_line(view: EpisodeView) -> str:
 
 def frame_lines(frame: FrameView) -> list[str]:
     """The observation as text again: HUD, grid (with its axes), legend, message."""
-    lines = [safe(frame.hud), *(label + safe(cells) for label, cells in frame.shown_rows())]
+    lines = [safe(frame.hud), *(safe(label + cells + note) for label, cells, note in frame.shown_rows())]
     if frame.legend:
         label = "Legend (from an earlier step): " if frame.legend_carried else "Legend: "
         lines.append(label + safe(", ".join(f"{g} {m}" for g, m, _, _ in frame.legend)))
@@ -153,9 +153,9 @@ def grid_text(frame: FrameView) -> Any:
     styles = {g: entry_style(cls, tint) for g, _, cls, tint in frame.legend}
     text = Text(no_wrap=True, overflow="crop")
     rows = frame.shown_rows()
-    for r, (label, cells) in enumerate(rows):
+    for r, (label, cells, note) in enumerate(rows):
         if label:
-            text.append(label, style="dim")
+            text.append(safe(label), style="dim")
         run, style = "", ""
         for ch in cells:                   # one span per run of equally styled glyphs
             if styles.get(ch, "") != style and run:
@@ -163,6 +163,8 @@ def grid_text(frame: FrameView) -> Any:
                 run = ""
             run, style = run + safe(ch), styles.get(ch, "")
         text.append(run, style=style)
+        if note:
+            text.append(safe(note), style="dim")
         if r < len(rows) - 1:
             text.append("\n")
     return text

@@ -118,24 +118,31 @@ class FrameView:
     legend: tuple[LegendEntry, ...]
     legend_carried: bool       # the observation left the legend out; named from earlier legends
     message: str
+    above: tuple[str, ...] = ()     # with axes: lines above the column letters, as shown (clues)
+    beside: tuple[str, ...] = ()    # with axes: per row, the text right of it ("" for none)
 
     def to_json(self) -> dict[str, Any]:
         return {"hud": self.hud, "grid": list(self.grid), "axes": self.axes,
+                "above": list(self.above), "beside": list(self.beside),
                 "legend": [list(e) for e in self.legend], "legendCarried": self.legend_carried,
                 "message": self.message}
 
-    def shown_rows(self) -> list[tuple[str, str]]:
-        """The grid as the observation showed it, as (label, cells) lines: with axes, a line of
-        column letters (all label, no cells), then each row behind its right-aligned number."""
+    def shown_rows(self) -> list[tuple[str, str, str]]:
+        """The grid as the observation showed it, as (label, cells, note) lines: with axes, the
+        lines above the board and the column letters (all label, no cells), then each row behind
+        its right-aligned number and before its note (a nonogram's clue)."""
         if not self.axes:
-            return [("", row) for row in self.grid]
+            return [("", row, "") for row in self.grid]
         width = len(str(len(self.grid)))
         cols = max((len(r) for r in self.grid), default=0)
         header = " " * (width + 1) + "".join(chr(65 + c) for c in range(cols))
-        return [(header, "")] + [(f"{r + 1:>{width}} ", row) for r, row in enumerate(self.grid)]
+        notes = self.beside or ("",) * len(self.grid)
+        return ([(line, "", "") for line in self.above] + [(header, "", "")] +
+                [(f"{r + 1:>{width}} ", row, f" {note}" if note else "")
+                 for r, (row, note) in enumerate(zip(self.grid, notes))])
 
 
-_AXES_ROW = re.compile(r"^ *\d+ (.*)$")
+_AXES_ROW = re.compile(r"^ *(\d+) (\S+)(?: (.*))?$")    # number, cells (never spaces), note
 
 
 def _is_axes_header(line: str) -> bool:
@@ -145,20 +152,49 @@ def _is_axes_header(line: str) -> bool:
         chr(65 + c) for c in range(len(letters)))
 
 
+def _axes_header_at(body: list[str]) -> int | None:
+    """Where the column letters are: the first line, or after lines above the board (indented
+    like the letters); None for a board without axes."""
+    for i, line in enumerate(body):
+        if _is_axes_header(line):
+            return i
+        if not line.startswith(" "):
+            return None
+    return None
+
+
+def _axes_rows(lines: list[str]) -> list[re.Match[str]]:
+    """The numbered rows 1, 2, ... at the start of ``lines``, all as wide as the first."""
+    rows: list[re.Match[str]] = []
+    for line in lines:
+        m = _AXES_ROW.match(line)
+        if not m or int(m.group(1)) != len(rows) + 1 or (rows and len(m.group(2)) != len(rows[0].group(2))):
+            break
+        rows.append(m)
+    return rows
+
+
 def parse_observation(text: str, known: Mapping[str, LegendEntry] | None = None) -> FrameView:
     """Split an observation's text. Without a legend line (the ``legend="changed"`` harness left
     it out because an earlier one is still in the prompt), the glyphs on the grid are named from
     ``known``: the latest legend entry seen for each glyph."""
     lines = text.split("\n")
     hud, body = lines[0], lines[1:]
-    axes = bool(body) and _is_axes_header(body[0])
+    head = _axes_header_at(body)
+    axes = head is not None
     legend_at = next((i for i, line in enumerate(body) if line.startswith(LEGEND_PREFIX)), None)
     if legend_at is not None:
         grid_lines, rest = body[:legend_at], body[legend_at + 1:]
     else:
-        grid_lines, rest = _split_grid(body, axes)
-    if axes:
-        grid_lines = [m.group(1) for line in grid_lines[1:] if (m := _AXES_ROW.match(line))]
+        grid_lines, rest = _split_grid(body, head)
+    above: tuple[str, ...] = ()
+    beside: tuple[str, ...] = ()
+    if head is not None:
+        above = tuple(grid_lines[:head])
+        rows = _axes_rows(grid_lines[head + 1:])
+        grid_lines = [m.group(2) for m in rows]
+        if any(m.group(3) for m in rows):
+            beside = tuple(m.group(3) or "" for m in rows)
     grid = tuple(grid_lines)
     if legend_at is not None:
         pairs = parse_legend(body[legend_at][len(LEGEND_PREFIX):], set("".join(grid)) or None)
@@ -168,16 +204,17 @@ def parse_observation(text: str, known: Mapping[str, LegendEntry] | None = None)
         present = set("".join(grid))
         legend = tuple(entry for glyph, entry in (known or {}).items() if glyph in present)
         carried = bool(legend)
-    return FrameView(hud, grid, axes, legend, carried, "\n".join(rest).strip("\n"))
+    return FrameView(hud, grid, axes, legend, carried, "\n".join(rest).strip("\n"), above, beside)
 
 
-def _split_grid(body: list[str], axes: bool) -> tuple[list[str], list[str]]:
+def _split_grid(body: list[str], head: int | None) -> tuple[list[str], list[str]]:
     """Grid lines and the rest when no legend line marks the end of the grid: grid rows are
-    equally long and hold no spaces (with axes: numbered rows under the column letters)."""
-    first = 1 if axes else 0
-    n = first
-    while n < len(body) and body[n] and len(body[n]) == len(body[first]) and (
-            _AXES_ROW.match(body[n]) if axes else " " not in body[n]):
+    equally long and hold no spaces (with axes: rows numbered 1, 2, ... under the column letters)."""
+    if head is not None:
+        n = head + 1 + len(_axes_rows(body[head + 1:]))
+        return body[:n], body[n:]
+    n = 0
+    while n < len(body) and body[n] and len(body[n]) == len(body[0]) and " " not in body[n]:
         n += 1
     return body[:n], body[n:]
 

@@ -61,3 +61,20 @@ def test_reward_counts_growth_of_the_largest_tile():
 def test_bad_target():
     with pytest.raises(ValueError, match="target"):
         glyphbench_rl.make(ID, target=100)
+
+
+def test_tiles_are_letters_named_with_their_values_in_the_legend():
+    """No digit on the board stands for another number: tile 2**k is the k-th letter, and the
+    legend gives the values of the tiles on the board (only those)."""
+    task = glyphbench_rl.make(ID, target=2048)
+    task.reset(seed=0)
+    task.board = [[1, 2, 3, 0], [9, 10, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]]
+    task.largest = 10
+    obs, *_ , info = task.step("DOWN")           # a move that changes the board redraws it
+    frame = info["frame"]
+    assert not any(ch.isdigit() for row in frame.grid for ch in row)
+    legend = frame.legend_dict()
+    values = {v for row in task.board for v in row if v}
+    assert legend == {"·": "empty"} | {chr(ord("a") + v - 1): f"tile {1 << v}" for v in values}
+    assert {"a", "b", "c", "i", "j"} <= set(legend)
+    assert "a is 2, b is 4, c is 8" in task.system_prompt()

@@ -40,7 +40,7 @@ def test_win_path_with_a_solved_aim(seed):
     _, reward, term, _, info = aim_and_fire(task, angle, power)
     assert term and task.won and reward == 1.0 and task.episode_return == 1.0
     assert task.enemy_shots == 0 and not info["clamped"]
-    assert info["frame"].message == "The enemy cannon is destroyed. You win."
+    assert info["frame"].message == "The enemy cannon is destroyed. You win. Reward +1"
 
 
 @pytest.mark.parametrize("seed", [0, 1, 2])
@@ -52,7 +52,7 @@ def test_loss_path_firing_into_the_hill(seed):
     while not task.done:
         _, reward, term, trunc, info = task.step("FIRE")
     assert term and task.won is False and task.episode_return == -1.0 and task.enemy_shots >= 1
-    assert info["frame"].message.endswith("Your cannon is destroyed. You lose.")
+    assert info["frame"].message.endswith("Your cannon is destroyed. You lose. Reward -1")
 
 
 def test_shooting_yourself_loses():
@@ -64,7 +64,7 @@ def test_shooting_yourself_loses():
         task.step("LESS")
     _, reward, term, _, info = task.step("FIRE")
     assert term and reward == -1.0 and task.enemy_shots == 0
-    assert info["frame"].message == "Your cannon is destroyed. You lose."
+    assert info["frame"].message == "Your cannon is destroyed. You lose. Reward -1"
 
 
 def test_aiming_is_free_of_enemy_fire_and_bounded():

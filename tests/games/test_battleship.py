@@ -61,12 +61,12 @@ def test_hits_sinking_and_repeats():
     *first, last = ship
     for x in first:
         _, reward, *_ = task.step(cell_name(task, x))
-        assert reward == pytest.approx(0.5 / 17) and task.frame.message == "Hit."
+        assert reward == pytest.approx(0.5 / 17) and task.frame.message == f"Hit. Reward {0.5 / 17:+.3g}"
         assert task.frame.grid[x // n][x % n] == HIT
     _, reward, _, _, info = task.step(cell_name(task, first[0]))   # again: wasted
     assert reward == 0.0 and info["frame"].message.endswith("was already fired at.")
     _, reward, *_ = task.step(cell_name(task, last))
-    assert task.frame.message == f"Hit: you sank a ship of length {len(ship)}."
+    assert task.frame.message == f"Hit: you sank a ship of length {len(ship)}. Reward {reward:+.3g}"
     assert all(task.frame.grid[x // n][x % n] == SUNK for x in ship)
     afloat = sorted(task.params.fleet)
     afloat.remove(len(ship))

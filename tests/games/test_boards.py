@@ -20,6 +20,10 @@ def test_flood_and_regions():
     assert bits.flood(1, allowed) == mask(["##..", "#...", "....", "...."])
     assert bits.flood8(1, allowed) == mask(["##..", "#...", "....", "...."])
     assert bits.flood8(1 << 3, allowed) == mask(["...#", "...#", "..##", "...."])
+    # one flood for both neighbourhoods: the 8-connected fill is flood(..., diagonal=True)
+    assert bits.flood(1 << 3, allowed, diagonal=True) == bits.flood8(1 << 3, allowed)
+    assert bits.flood(1 << 3, allowed) == mask(["...#", "...#", "..##", "...."])
+    assert bits.flood(1 << 15, allowed) == 0 and bits.flood(1 << 15, allowed, diagonal=True) == 0
     parts = list(bits.regions(allowed))
     assert sum(parts) == allowed and len(parts) == 3
     assert bits.cells(mask(["#...", "...#", "....", "...."])) == [(0, 0), (1, 3)]

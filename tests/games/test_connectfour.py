@@ -44,7 +44,7 @@ def test_win_path_against_a_random_opponent(seed):
     while not task.done:
         _, reward, term, trunc, info = task.step(tactical_moves(task.bb, task.mine, task.theirs)[0])
     assert term and task.won and task.episode_return == 1.0 and not info["clamped"]
-    assert info["frame"].message.endswith("You win.")
+    assert info["frame"].message.endswith("You win. Reward +1")
 
 
 ORDER = (3, 2, 4, 1, 5, 0, 6)
@@ -97,7 +97,7 @@ def test_loss_path_always_column_a():
     while not task.done:
         _, _, term, trunc, info = task.step("A")
     assert term and task.won is False and task.episode_return == -1.0
-    assert info["frame"].message.endswith("You lose.")
+    assert info["frame"].message.endswith("You lose. Reward -1")
 
 
 def test_full_column_wastes_the_turn():

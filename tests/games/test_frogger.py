@@ -67,3 +67,24 @@ def test_rewards_add_to_one_and_penalties_fit():
         Frogger(lives=5, death_penalty=0.3)
     with pytest.raises(ValueError, match="homes"):
         glyphbench_rl.make(ID, homes=9)
+
+
+def test_right_column_shows_which_rows_move_on_the_coming_turn():
+    task = glyphbench_rl.make(ID)
+    _, info = task.reset(seed=0)
+    seen = set()
+    for _ in range(12):                        # WAIT on the start row is always safe
+        frame, before = info["frame"], {r: lane.row(task.tick) for r, lane in task.lanes.items()}
+        assert all(len(row) == task.params.width + 1 for row in frame.grid)
+        _, _, _, _, info = task.step("WAIT")
+        for r, row in enumerate(frame.grid):
+            mark = row[-1]
+            seen.add(mark)
+            if r not in task.lanes:
+                assert mark == "|"
+                continue
+            was, now = before[r], task.lanes[r].row(task.tick)
+            assert now == {"|": was, "→": was[-1] + was[:-1], "←": was[1:] + was[0]}[mark], (r, mark)
+    assert seen == {"|", "→", "←"}
+    legend = info["frame"].legend_dict()
+    assert legend["→"] == "row moves right next turn" and legend["|"] == "row still next turn"

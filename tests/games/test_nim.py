@@ -41,7 +41,7 @@ def test_win_path_by_nim_sum_against_a_perfect_opponent(variant, seed):
         h, k = winning_moves(task.heaps)[0]
         _, reward, term, trunc, info = task.step(name(h, k))
     assert term and task.won and task.episode_return == 1.0 and not info["clamped"]
-    assert not any(task.heaps) and info["frame"].message == "You win."
+    assert not any(task.heaps) and info["frame"].message == "You win. Reward +1"
 
 
 @pytest.mark.parametrize("variant", VARIANTS)
@@ -56,7 +56,7 @@ def test_loss_path_never_zeroing_the_nim_sum(variant, seed):
         h, k = (bad or [(next(h for h, n in enumerate(heaps) if n), 1)])[0]
         _, _, term, _, info = task.step(name(h, k))
     assert term and task.won is False and task.episode_return == -1.0
-    assert info["frame"].message.endswith("You lose.")
+    assert info["frame"].message.endswith("You lose. Reward -1")
 
 
 def test_taking_too_many_wastes_the_turn():

@@ -2,7 +2,8 @@ import numpy as np
 import pytest
 
 import glyphbench_rl
-from glyphbench_rl.games.common.boards import Bits, clue_text, runs
+from glyphbench_rl.core import check_frame
+from glyphbench_rl.games.common.boards import Bits, clue_char, clue_margins, runs
 from glyphbench_rl.games.classics.nonogram import arrangements, line_solve
 
 VARIANTS = ["easy", "hard"]
@@ -14,11 +15,18 @@ def clues_of(picture, n):
             tuple(runs(bits.col_bits(picture, c), n) for c in range(n)))
 
 
-def test_runs_and_clue_text():
+def test_runs():
     assert runs(0b1101101, 7) == (1, 2, 2)
     assert runs(0, 5) == ()
-    assert clue_text([(3,), (), (1, 1)]) == "3/0/1 1"
     assert len(arrangements(5)[(1, 1)]) == 6
+
+
+def test_clue_margins_stack_column_clues_one_character_each():
+    above, beside = clue_margins([(3,), (), (1, 1), (10, 1)], [(1, 2), (), (3,), (11,), (1, 1, 1)])
+    assert above == ("    1",          # the last run of a column nearest the board
+                     "1   1",
+                     "203⑪1")          # 0: no filled cell; ⑪: 11 in one character
+    assert beside == ("3", "0", "1 1", "10 1")
 
 
 def test_line_solved_pictures_are_unique_by_brute_force():
@@ -56,8 +64,7 @@ def test_win_path_fills_the_solution(variant, seed):
     obs, _ = task.reset(seed=seed)
     n = task.params.size
     assert line_solve(task.row_clues, task.col_clues) is not None
-    assert obs.splitlines()[0] == (f"Step 0/{task.max_turns} | Rows {clue_text(task.row_clues)} | "
-                                   f"Cols {clue_text(task.col_clues)}")
+    assert obs.splitlines()[0] == f"Step 0/{task.max_turns}"
     cells = Bits(n, n).cells(task.solution)
     task.step("X" + "ABCDEFGH"[cells[0][1]] + str(cells[0][0] + 1))   # a wrong mark, then fill over it
     for r, c in cells:
@@ -117,3 +124,25 @@ def test_bad_params():
         glyphbench_rl.make("glyphbench/classics-nonogram-easy-v0", density=0.1)
     with pytest.raises(ValueError, match="time_weight"):
         glyphbench_rl.make("glyphbench/classics-nonogram-easy-v0", time_weight=-0.1)
+
+
+def test_clues_stand_beside_the_rows_and_above_the_columns():
+    task = glyphbench_rl.make("glyphbench/classics-nonogram-hard-v0", size=12, density=0.85)
+    obs, info = task.reset(seed=1)
+    assert max(max(c, default=0) for c in task.row_clues + task.col_clues) >= 10
+    frame = info["frame"]
+    assert check_frame(frame) == [] and obs in task.observation_space
+    lines = obs.splitlines()
+    assert lines[0] == f"Step 0/{task.max_turns}"                 # no clues in the HUD
+    depth = max(len(c) or 1 for c in task.col_clues)
+    header = lines[1 + depth]
+    assert header == "   ABCDEFGHIJKL"
+    for c, clue in enumerate(task.col_clues):                      # read each column top-down
+        stack = "".join(line[3 + c] for line in lines[1:1 + depth] if len(line) > 3 + c).strip()
+        assert stack == ("".join(clue_char(n) for n in clue) or "0")
+    for r, clue in enumerate(task.row_clues):
+        number, cells, *numbers = lines[2 + depth + r].split()
+        assert int(number) == r + 1 and cells == frame.grid[r]
+        assert [int(n) for n in numbers] == (list(clue) or [0])
+    assert "⑩ is 10" in task.system_prompt()
+    assert "⑩" not in glyphbench_rl.make("glyphbench/classics-nonogram-hard-v0").system_prompt()

@@ -121,3 +121,15 @@ def test_actions_and_prompt():
 def test_bad_params(bad, field):
     with pytest.raises(ValueError, match=field):
         make("easy", **bad)
+
+
+def test_legend_says_which_way_each_vehicle_moves():
+    task = glyphbench_rl.make("glyphbench/classics-rushhour-hard-v0")
+    _, info = task.reset(seed=1)
+    legend = info["frame"].legend_dict()
+    p = task.params
+    assert legend["X"] == "red car left-right"
+    for i, name in enumerate(task.names[1:]):
+        if name in legend:
+            way = "left-right" if i < p.horizontal else "up-down"
+            assert legend[name] == f"vehicle {way}", name

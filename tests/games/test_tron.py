@@ -49,7 +49,7 @@ def test_win_path_against_a_random_opponent():
             _, _, term, _, info = task.step(greedy(task))
         if task.won:
             wins += 1
-            assert task.episode_return == 1.0 and info["frame"].message.endswith("You win.")
+            assert task.episode_return == 1.0 and info["frame"].message.endswith("You win. Reward +1")
             assert "The opponent crashed." in info["frame"].message
     assert wins >= 8
 
@@ -119,3 +119,13 @@ def test_bad_params():
         glyphbench_rl.make(ID, walls=100)
     with pytest.raises(ValueError, match="strength"):
         glyphbench_rl.make(ID, strength=2)
+
+
+def test_reversing_into_your_trail_crashes_and_the_prompt_says_so():
+    task = glyphbench_rl.make(ID, walls=0)
+    task.reset(seed=0)
+    assert "(reversing) enters your own trail: a crash" in task.system_prompt()
+    task.step("RIGHT")
+    _, reward, term, _, info = task.step("LEFT")
+    assert term and task.won is False and reward == -1.0
+    assert "You crashed." in info["frame"].message

@@ -50,7 +50,8 @@ def test_loss_path_standing_still():
     while not task.done:
         _, reward, term, trunc, info = task.step("WAIT")
     assert term and task.won is False and task.episode_return == -task.params.death_penalty
-    assert info["frame"].message in ("A bomb hit you.", "An invader reached the bottom row.")
+    assert info["frame"].message in (f"{m} Reward {-task.params.death_penalty:+.3g}"
+                                      for m in ("A bomb hit you.", "An invader reached the bottom row."))
 
 
 def test_bomb_landing_on_you_loses():

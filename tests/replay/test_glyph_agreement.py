@@ -35,23 +35,23 @@ def episodes(tmp_path_factory):
 def terminal_styles(frame) -> dict[str, str]:
     """glyph -> the style the terminal grid gives its cells (one style per glyph, checked)."""
     text, rows = grid_text(frame), frame.shown_rows()
-    assert text.plain == "\n".join(label + cells for label, cells in rows)
+    assert text.plain == "\n".join("".join(row) for row in rows)
     style_at = [""] * len(text.plain)
     for span in text.spans:
         style_at[span.start:span.end] = [str(span.style)] * (span.end - span.start)
     out: dict[str, str] = {}
     offset = 0
-    for label, cells in rows:
+    for label, cells, note in rows:
         for i, ch in enumerate(cells, offset + len(label)):
             assert out.setdefault(ch, style_at[i]) == style_at[i], ch
-        offset += len(label) + len(cells) + 1
+        offset += len(label) + len(cells) + len(note) + 1
     return out
 
 
 def image_colours(frame) -> dict[str, tuple[int, int, int]]:
     """glyph -> the colour the image export draws its cells in (label columns skipped)."""
     out: dict[str, tuple[int, int, int]] = {}
-    for (label, cells), runs in zip(frame.shown_rows(), grid_segments(frame)):
+    for (label, cells, _), runs in zip(frame.shown_rows(), grid_segments(frame)):
         drawn = [colour for text, colour in runs for _ in text][len(label):]
         for ch, colour in zip(cells, drawn):
             assert out.setdefault(ch, colour) == colour, ch

@@ -28,8 +28,24 @@ def test_parse_observation_strips_board_axes_and_shows_them_again():
     assert frame.axes and frame.grid == task.frame.grid
     assert [(g, m) for g, m, _, _ in frame.legend] == list(task.frame.legend)
     shown = frame.shown_rows()
-    assert [label + cells for label, cells in shown] == text.split("\n")[1:len(shown) + 1]
-    assert shown[0][1] == "" and shown[1] == (" 1 ", frame.grid[0])
+    assert ["".join(row) for row in shown] == text.split("\n")[1:len(shown) + 1]
+    assert shown[0][1] == "" and shown[1] == (" 1 ", frame.grid[0], "")
+
+
+def test_parse_observation_keeps_the_clues_around_a_nonogram():
+    task = make("glyphbench/classics-nonogram-easy-v0")
+    task.reset(seed=0)
+    task.step("B2")
+    text = task.frame.render()
+    frame = parse_observation(text)
+    assert frame.axes and frame.grid == task.frame.grid and frame.hud == task.frame.hud
+    assert frame.above == tuple("  " + line for line in task.frame.above)
+    assert frame.beside == task.frame.beside and frame.to_json()["beside"] == list(frame.beside)
+    assert [(g, m) for g, m, _, _ in frame.legend] == list(task.frame.legend)
+    shown = frame.shown_rows()
+    assert ["".join(row) for row in shown] == text.split("\n")[1:len(shown) + 1]
+    no_legend = "\n".join(line for line in text.split("\n") if not line.startswith("Legend: "))
+    assert parse_observation(no_legend).grid == frame.grid
 
 
 def test_parse_observation_of_hand_written_text():
@@ -41,7 +57,7 @@ def test_parse_observation_of_hand_written_text():
     assert frame.message == "You bumped.\nTwice."
     board = parse_observation("Step 0/60\n  ABC\n1 ■■■\n2 ■1■\nLegend: ■ hidden, 1 1 mine around")
     assert board.axes and board.grid == ("■■■", "■1■")
-    assert board.shown_rows() == [("  ABC", ""), ("1 ", "■■■"), ("2 ", "■1■")]
+    assert board.shown_rows() == [("  ABC", "", ""), ("1 ", "■■■", ""), ("2 ", "■1■", "")]
     # spaces then letters that are not A, B, C... in order are no column header
     assert not parse_observation("Step 0/9\n  AC\n1 ··\nLegend: · empty").axes
 

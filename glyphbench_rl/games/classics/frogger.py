@@ -16,6 +16,8 @@ from ..common.view import overlay
 WATER, FILLED = "~", "●"
 CARS = {-1: "<", 1: ">"}
 LOGS = {-1: "«", 1: "»"}
+# the column right of the board: whether each row moves on the coming turn, and which way
+MOVES_NEXT = {-1: "←", 0: "|", 1: "→"}
 CAR_LENGTHS, CAR_GAPS = (1, 2), (2, 4)
 LOG_LENGTHS, LOG_GAPS = (2, 4), (1, 3)
 
@@ -35,7 +37,9 @@ class Frogger(GlyphTask):
     title = "Frogger"
     rules = ("Cross {road} lanes of traffic and {river} lanes of river to fill the {homes} homes in "
              "the hedge at the top. Every lane slides sideways one cell every 1 to {max_period} "
-             "turns, wrapping around the edges; cars and logs show their direction. You hop one "
+             "turns, wrapping around the edges; cars and logs show their direction, and the "
+             "column right of the board shows each row's move on the coming turn ({right} right, "
+             "{left} left, {still} none). You hop one "
              "cell per turn, then the lanes move. On the river you must stand on a log, which "
              "carries you along. A car, the water or being carried off the edge costs a life. "
              "Hopping up into an empty home fills it and a new frog starts at the bottom; the "
@@ -49,7 +53,8 @@ class Frogger(GlyphTask):
     glyphs = {FLOOR: "ground", WATER: "water", LOGS[-1]: "log drifting left",
               LOGS[1]: "log drifting right", CARS[-1]: "car driving left",
               CARS[1]: "car driving right", WALL: "hedge", GOAL: "empty home",
-              FILLED: "filled home", PLAYER: "frog"}
+              FILLED: "filled home", PLAYER: "frog", MOVES_NEXT[1]: "row moves right next turn",
+              MOVES_NEXT[-1]: "row moves left next turn", MOVES_NEXT[0]: "row still next turn"}
     default_max_turns = 200
 
     def _init(self) -> None:
@@ -60,7 +65,8 @@ class Frogger(GlyphTask):
         self.home_reward = 0.5 / p.homes
 
     def prompt_fields(self) -> dict:
-        return super().prompt_fields() | {"step_reward": self.step_reward, "home_reward": self.home_reward}
+        return super().prompt_fields() | {"step_reward": self.step_reward, "home_reward": self.home_reward,
+                                          "right": MOVES_NEXT[1], "left": MOVES_NEXT[-1], "still": MOVES_NEXT[0]}
 
     def _setup(self, rng: np.random.Generator) -> None:
         p = self.params
@@ -157,7 +163,9 @@ class Frogger(GlyphTask):
         rows += [self.lanes[r].row(t) if r in self.lanes else FLOOR * p.width for r in range(1, self.height)]
         if self.frog is not None:
             overlay(rows, *self.frog, PLAYER)
-        return rows
+        still = MOVES_NEXT[0]
+        return [row + (MOVES_NEXT[self.lanes[r].moves_at(t + 1)] if r in self.lanes else still)
+                for r, row in enumerate(rows)]
 
     def _hud(self) -> str:
         return f"Homes {len(self.filled)}/{self.params.homes} | Lives {self.lives}"

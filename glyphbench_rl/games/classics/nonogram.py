@@ -12,18 +12,19 @@ from functools import lru_cache
 
 import numpy as np
 
-from ...core import GlyphTask, register_variants
+from ...core import Frame, GlyphTask, register_variants
 from ...core.params import param
-from ..common.boards import Bits, cell_actions, cell_of, clue_text, runs
+from ..common.boards import Bits, cell_actions, cell_of, clue_char, clue_margins, runs
 from ..common.palette import FLOOR
 
 FILLED, MARK = "■", "x"
+MAX_SIZE = 12
 _TRIES = 2000
 
 
 @dataclass(frozen=True)
 class NonogramParams:
-    size: int = param(5, 2, 12)
+    size: int = param(5, 2, MAX_SIZE)
     density: float = param(0.6, 0.2, 0.9)    # chance that a cell of the hidden picture is filled
     time_weight: float = param(0.5, 0, 1, open_hi=True)   # share of the win reward lost by using every turn
 
@@ -79,22 +80,30 @@ def line_solve(row_clues: list[tuple[int, ...]], col_clues: list[tuple[int, ...]
 
 class Nonogram(GlyphTask):
     title = "Nonogram"
-    rules = ("Fill cells of the {size}x{size} grid to reveal a hidden picture. The status line "
-             "gives the clues: Rows from top to bottom, then Cols from left to right, lines "
-             "separated by /. A clue lists the lengths of the runs of filled cells in that line, "
-             "in order, with at least one blank cell between runs; 0 means no filled cell. The "
-             "clues have exactly one solution. Marks (x) are notes for cells you know are blank.")
+    rules = ("Fill cells of the {size}x{size} grid to reveal a hidden picture. Each row's clue "
+             "stands right of the row; each column's clue stands above its letter, one number per "
+             "line, read top to bottom.{big} A clue lists the lengths of the runs of filled cells "
+             "in that line, in order, with at least one blank cell between runs; 0 means no "
+             "filled cell. The clues have exactly one solution. Marks ({mark}) are notes for "
+             "cells you know are blank.")
     rewards = ("solving gives 1 minus {time_weight:g} x (turns used / {max_turns}); running out of "
                "turns gives nothing.")
     ends = "when the filled cells match the solution"
     Params = NonogramParams
     glyphs = {FLOOR: "blank", FILLED: "filled", MARK: "marked blank"}
     axes = True
+    extra_chars = "".join(clue_char(n) for n in range(10, MAX_SIZE + 1))
     default_max_turns = 50
 
     def _init(self) -> None:
         n = self.params.size
         self.bits = Bits(n, n)
+
+    def prompt_fields(self) -> dict:
+        n = self.params.size
+        big = (f" Above a column, a number of 10 or more is one character: {clue_char(10)} is 10, "
+               f"{clue_char(11)} is 11 and so on." if n >= 10 else "")
+        return super().prompt_fields() | {"big": big, "mark": MARK}
 
     def _make_actions(self):
         n = self.params.size
@@ -116,7 +125,7 @@ class Nonogram(GlyphTask):
         self.solution, self.row_clues, self.col_clues = picture, rows, cols
         self.filled = self.marked = 0
         self._lines = [FLOOR * n] * n
-        self._clues = f"Rows {clue_text(rows)} | Cols {clue_text(cols)}"
+        self._above, self._beside = clue_margins(rows, cols)
 
     def _act(self, action: int) -> None:
         n = self.params.size
@@ -138,8 +147,10 @@ class Nonogram(GlyphTask):
     def _grid(self) -> list[str]:
         return self._lines
 
-    def _hud(self) -> str:
-        return self._clues
+    def _build_frame(self) -> Frame:
+        # the clues stand around the board, as printed (Frame.above / Frame.beside), not in the HUD
+        f = super()._build_frame()
+        return Frame(f.grid, f.legend, f.hud, f.message, f.axes, self._above, self._beside)
 
 
 @lru_cache(maxsize=1 << 16)

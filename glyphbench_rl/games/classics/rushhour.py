@@ -153,8 +153,9 @@ class RushHour(GlyphTask):
         p = self.params
         self.names = [RED] + [chr(65 + i) for i in range(p.horizontal + p.vertical)]
         self.horiz = [True] * (1 + p.horizontal) + [False] * p.vertical
-        self._vocab = {FLOOR: "empty", WALL: "wall", GOAL: "exit", RED: "red car",
-                       **{name: "vehicle" for name in self.names[1:]}}
+        ways = ["left-right" if h else "up-down" for h in self.horiz]
+        self._vocab = {FLOOR: "empty", WALL: "wall", GOAL: "exit", RED: f"red car {ways[0]}",
+                       **{name: f"vehicle {way}" for name, way in zip(self.names[1:], ways[1:])}}
 
     def _make_actions(self) -> ActionSet:
         names = [f"{name}_{d}" for name, h in zip(self.names, self.horiz)

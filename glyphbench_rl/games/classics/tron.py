@@ -45,7 +45,7 @@ class Tron(VersusTask):
              "Each turn both bikes move one cell at once, you in the direction you choose, and "
              "every cell a bike leaves becomes a wall of its trail. A bike crashes when it leaves "
              "the arena or enters a wall, a trail or a bike; two bikes entering the same cell both "
-             "crash. With probability {strength:g} the opponent moves towards the most open "
+             "crash. Turning back the way you came (reversing) enters your own trail: a crash. With probability {strength:g} the opponent moves towards the most open "
              "space it can reach (flood fill), otherwise in a random safe direction.")
     rewards = OUTCOME_REWARDS + " Both crashing at once is a draw."
     ends = "when a bike crashes"

@@ -10,9 +10,11 @@ from ...core import GlyphTask, register_variants
 from ...core.params import param, require
 from ..common.grid import move_actions
 
-# A tile 2**k is drawn as the k-th character here: "1" is 2, "9" is 512, "A" is 1024, ...
 from ..common.palette import FLOOR
-TILE_GLYPHS = "123456789ABCDEFGH"
+
+# A tile 2**k is drawn as the k-th letter: "a" is 2, "b" is 4, ..., "j" is 1024. Letters, not
+# digits: a digit drawn for another number ("1" for 2) misleads a reader of the grid.
+TILE_GLYPHS = "abcdefghijklmnopq"
 
 
 @dataclass(frozen=True)
@@ -59,13 +61,14 @@ def slide(board: list[list[int]], action: str) -> list[list[int]]:
 
 class Twenty48(GlyphTask):
     title = "2048"
-    rules = ("Tiles on a {size}x{size} board hold powers of two. A move slides every tile as "
-             "far as it goes in that direction; two equal tiles that meet merge into their sum "
-             "(once per move). After every move that changes the board a new tile appears on a "
-             "random empty cell: a 4 with probability {four_chance:g}, else a 2. A move that "
-             "changes nothing wastes the turn.")
-    rewards = ("whenever your largest tile grows from a to b you gain (b - max(a, 4)) / {span}, "
-               "so reaching {target} totals 1; having no possible move costs {loss_penalty:g}.")
+    rules = ("Tiles on a {size}x{size} board hold powers of two, drawn as letters: {letters} and "
+             "so on, each letter double the one before (the legend gives the value of every tile "
+             "on the board). A move slides every tile as far as it goes in that direction; two "
+             "equal tiles that meet merge into their sum (once per move). After every move that "
+             "changes the board a new tile appears on a random empty cell: {four} with probability "
+             "{four_chance:g}, else {two}. A move that changes nothing wastes the turn.")
+    rewards = ("whenever your largest tile grows from value x to value y you gain (y - max(x, 4)) "
+               "/ {span}, so reaching {target} totals 1; having no possible move costs {loss_penalty:g}.")
     ends = "when you make the {target} tile or no move is possible"
     Params = Twenty48Params
     ACTIONS = move_actions("slide all tiles", unit="")
@@ -79,7 +82,10 @@ class Twenty48(GlyphTask):
         return self._vocab
 
     def prompt_fields(self) -> dict:
-        return super().prompt_fields() | {"span": self.params.target - 4}
+        letters = ", ".join(f"{g} is {1 << k}" for k, g in enumerate(TILE_GLYPHS[:3], 1))
+        two, four = (f"{1 << k} ({TILE_GLYPHS[k - 1]})" for k in (1, 2))
+        return super().prompt_fields() | {"span": self.params.target - 4, "letters": letters,
+                                          "two": two, "four": four}
 
     def _setup(self, rng: np.random.Generator) -> None:
         n = self.params.size

@@ -4,7 +4,8 @@
   described in one prompt line per family.
 - ``Bits``: a board's cells as bits of a Python int (row-major), so regions, flood fills and
   neighbourhoods cost a few big-int operations instead of set walks.
-- ``runs`` / ``clue_text``: run-length clues of a line of cells (nonograms).
+- ``runs`` / ``clue_margins``: run-length clues of a line of cells and their layout around the
+  board, as a printed nonogram has them (nonograms).
 """
 
 from __future__ import annotations
@@ -54,23 +55,20 @@ class Bits:
         row = mask | (mask << 1 & self._no_first_col) | (mask >> 1 & self._no_last_col)
         return (row | row << self.width | row >> self.width) & self.full
 
-    def flood(self, seed: int, allowed: int) -> int:
-        """The cells of ``allowed`` 4-connected to ``seed`` (seed cells outside it are dropped)."""
+    def flood(self, seed: int, allowed: int, diagonal: bool = False) -> int:
+        """The cells of ``allowed`` 4-connected (8-connected with ``diagonal``) to ``seed``
+        (seed cells outside it are dropped)."""
+        grow = self.grow8 if diagonal else self.grow
         region = seed & allowed
         while True:
-            grown = self.grow(region) & allowed
+            grown = grow(region) & allowed
             if grown == region:
                 return region
             region = grown
 
     def flood8(self, seed: int, allowed: int) -> int:
         """The cells of ``allowed`` 8-connected (diagonals too) to ``seed``."""
-        region = seed & allowed
-        while True:
-            grown = self.grow8(region) & allowed
-            if grown == region:
-                return region
-            region = grown
+        return self.flood(seed, allowed, diagonal=True)
 
     def regions(self, mask: int) -> Iterator[int]:
         """The 4-connected components of ``mask``, lowest cell first."""
@@ -110,6 +108,21 @@ def runs(line: int, length: int) -> tuple[int, ...]:
     return tuple(out)
 
 
-def clue_text(clues: Sequence[Sequence[int]]) -> str:
-    """Clues of successive lines, ``/`` between lines, spaces between runs; an empty line is 0."""
-    return "/".join(" ".join(map(str, clue)) if clue else "0" for clue in clues)
+def clue_char(n: int) -> str:
+    """One character for a clue number: its digit below 10, else its circled number (⑩ is 10,
+    up to ⑳)."""
+    return str(n) if n < 10 else chr(0x2460 + n - 1)
+
+
+def clue_margins(row_clues: Sequence[Sequence[int]],
+                 col_clues: Sequence[Sequence[int]]) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """The clues laid out as a printed nonogram has them, as ``Frame.above`` and ``Frame.beside``:
+    each column's numbers stacked over the column, one character each (``clue_char``), the last
+    run nearest the board; each row's numbers right of the row, separated by spaces. An empty
+    line's clue is 0."""
+    stacks = [[clue_char(n) for n in clue] or ["0"] for clue in col_clues]
+    depth = max(map(len, stacks), default=0)
+    stacks = [[" "] * (depth - len(stack)) + stack for stack in stacks]
+    above = tuple("".join(stack[i] for stack in stacks).rstrip() for i in range(depth))
+    beside = tuple(" ".join(map(str, clue)) if clue else "0" for clue in row_clues)
+    return above, beside
