@@ -64,13 +64,16 @@ def validate(path: Path) -> str:
         return f"FAILED {type(e).__name__}: {e}"
     orch, trainer = cfg.orchestrator, cfg.trainer
     src = orch.train.source[0]
+    # the rows Prime-RL's orchestrator would sample: the taskset plugin, built from the parsed config
+    from verifiers.v1.utils.loaders import taskset_class
+    rows = sum(1 for _ in taskset_class(src.env.taskset.id)(src.env.taskset))
     ac = trainer.model.ac
     return (f"ok  run_dir={cfg.run_dir} steps={cfg.max_steps} model={trainer.model.name} "
             f"loss={trainer.loss.type} lr={trainer.optim.lr} batch={orch.batch_size}x{orch.group_size} "
             f"algo={src.algo.type} filter_zero_advantages={orch.train.filter_zero_advantages} "
             f"ac={'off' if ac is None else f'{ac.mode}/{ac.freq}'} resume={cfg.resume is not None} "
             f"env={type(src.env).__name__}({type(src.env.taskset).__name__}: "
-            f"{len(src.env.taskset.tasks or [])} tasks, split {src.env.taskset.split}) "
+            f"{len(src.env.taskset.tasks or [])} tasks, split {src.env.taskset.split}, {rows} rows) "
             f"eval={'off' if orch.eval is None else orch.eval.interval} "
             f"wandb={None if cfg.monitors.wandb is None else cfg.monitors.wandb.project}")
 
