@@ -13,14 +13,17 @@ import sys
 from pathlib import Path
 from typing import Sequence
 
-from ..integrations.prime_rl import PrimeRLConfigError, write_toml
+from ..integrations.prime_rl import PrimeRLConfigError, started, write_toml
 from ..train.config import ConfigError, config_from_dict, read_yaml
 from ..train.sweep import expand, run_local, slurm_script, table, write_conditions
 
 
 def write_prime_rl(out: Path, rows) -> list[Path]:
-    """Each condition as a Prime-RL config, ``runs/<name>/prime_rl.toml``."""
-    return [write_toml(config_from_dict(cfg), out / "runs" / name) for name, cfg, _ in rows]
+    """Each condition as a Prime-RL config, ``runs/<name>/prime_rl.toml``; a condition Prime-RL
+    already started is rendered with ``[resume]``, so a rerun continues it (from its latest
+    checkpoint, or from scratch when it saved none) instead of refusing its directory."""
+    return [write_toml(config_from_dict(cfg), out / "runs" / name, resume=started(out / "runs" / name))
+            for name, cfg, _ in rows]
 
 
 def main(argv: Sequence[str] | None = None) -> int:

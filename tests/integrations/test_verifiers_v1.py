@@ -2,7 +2,9 @@
 
 The stub plays a scripted policy (with a decoy action in its reasoning and some replies without
 an action); the same policy through the built-in RolloutEngine gives the expected returns, and
-the prompts the stub received from both must be identical.
+the prompts the stub received from both must be identical (a past reply goes back as the model
+returned it: reasoning in its own field, where the engine's OpenAI backend inlines it in <think>).
+The trace must branch exactly where the engine's packing starts a new training sequence.
 """
 
 import asyncio
@@ -85,9 +87,71 @@ def test_vf_eval_streaming_matches_engine(tmp_path):
         assert (m["terminated"], m["truncated"]) == (float(t.terminated), float(t.truncated))
         assert "won" in m
     assert any(t.forfeits for t in want) and len({t.episode_return for t in want}) > 1
-    # every prompt was the engine's prompt, message for message (history window included)
-    prompts = Counter(json.dumps(b["messages"], sort_keys=True) for b in bodies)
+    # every prompt was the engine's prompt, message for message (history window included); past
+    # replies went back as returned, their reasoning in its own field
+    replies = [m for b in bodies for m in b["messages"] if m["role"] == "assistant"]
+    assert replies and all(m["reasoning_content"] == "or <action>RIGHT</action>?" for m in replies)
+    prompts = Counter(json.dumps(engine_form(b["messages"]), sort_keys=True) for b in bodies)
     assert prompts == Counter(json.dumps(b["messages"], sort_keys=True) for b in engine_bodies)
+
+
+def engine_form(messages: list[dict]) -> list[dict]:
+    """Messages as the engine's OpenAI backend sends them: a reply's reasoning inlined in <think>."""
+    return [{"role": "assistant", "content": reply_text(m)} if m["role"] == "assistant" else m
+            for m in messages]
+
+
+def engine_packing(bodies: list[dict], reply) -> tuple[int, int]:
+    """(training sequences, distinct messages) of the engine's packing of these prompts: a turn
+    joins the last sequence while its prompt extends that sequence (prompt + reply); the
+    sequences' messages counted once per distinct prefix, as a trace graph stores them."""
+    sequences, current, prefixes = 0, None, set()
+    for body in bodies:
+        prompt = engine_form(body["messages"])
+        if current is None or prompt[:len(current)] != current:
+            sequences += 1
+        current = prompt + [{"role": "assistant", "content": reply_text(reply(body))}]
+        prefixes.update(json.dumps(current[:i]) for i in range(1, len(current) + 1))
+    return sequences, len(prefixes)
+
+
+def reasoning_policy(body: dict) -> dict:
+    step = int(re.search(r"Step (\d+)/", body["messages"][-1]["content"]).group(1))
+    return {"content": f"<action>{['UP', 'LEFT', 'DOWN', 'RIGHT'][step % 4]}</action>",
+            "reasoning_content": f"step {step}: try {'ULDR'[step % 4]}"}
+
+
+@pytest.mark.parametrize("turns, harness, nodes, branches", [
+    (60, {"history": 8}, 937, 52),          # the window slides from turn 9 on: one sequence each
+    (40, {"history": 40}, 81, 1),           # it never slides: one sequence (60 branches before)
+    (30, {"history": 30, "max_context_tokens": 1200}, None, None),   # the budget drops turns
+])
+def test_trace_branches_only_where_the_engine_packing_does(plugin, tmp_path, turns, harness, nodes,
+                                                           branches):
+    """A 60-turn 2048 episode with reasoning replies stored 945 nodes in 60 branches (one per
+    turn) when past replies went back as the engine's text; as returned, 937 in 52, the engine's
+    52 sequences. Plain replies gave 937 in 52 either way."""
+    from verifiers.v1 import graph
+    from verifiers.v1.cli.eval.runner import run_eval
+    from verifiers.v1.configs.cli.eval import EvalConfig
+
+    with StubOpenAI(reasoning_policy) as stub:
+        config = EvalConfig.model_validate({
+            "env": {"taskset": {"id": "glyphbench-rl", "tasks": ["glyphbench/classics-2048-v0"],
+                                "harness": harness},
+                    "agent": {"max_turns": turns, "harness": {"id": "glyphbench-rl"}}},
+            "model": "stub-model", "client": {"base_url": stub.base_url, "api_key_var": "GB_VF_KEY"},
+            "push": False, "rich": None, "output_dir": str(tmp_path), "run": {"name": "t"}})
+        [episode] = asyncio.run(run_eval(config))
+        bodies = stub.chat_bodies()
+    [trace] = episode.traces
+    assert episode.ok and trace.num_turns == len(bodies) == turns
+    sequences, messages = engine_packing(bodies, reasoning_policy)
+    assert (len(graph.leaves(trace)), len(trace.nodes)) == (sequences, messages)
+    if nodes is not None:
+        assert (len(trace.nodes), sequences) == (nodes, branches)
+    else:
+        assert trace.metrics["episode_length"] == turns and 1 < sequences < turns
 
 
 @pytest.fixture

@@ -118,7 +118,7 @@ def test_train_cli_with_an_empty_config_runs_from_another_directory(tmp_path):
     assert done.returncode == 0, done.stderr
     taskset = tomllib.loads((tmp_path / "run" / "prime_rl.toml").read_text())["orchestrator"]["train"]
     project_list = str(Path(glyphbench_rl.__file__).resolve().parents[1] / "tasks" / "standard.txt")
-    assert taskset["env"][0]["taskset"]["tasks"] == resolve_tasks(project_list)
+    assert taskset["source"][0]["env"]["taskset"]["tasks"] == resolve_tasks(project_list)
 
 
 def test_to_dict_round_trips_and_assignment_is_checked():

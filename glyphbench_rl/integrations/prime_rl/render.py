@@ -1,19 +1,21 @@
 """A training config rendered as the equivalent Prime-RL ``rl`` TOML.
 
-Target schema: PrimeIntellect-ai/prime-rl at commit 004274ec964f016ec9b17b5ae990a4b535314ff1, a
-snapshot whose config package (configs moved there from src/prime_rl/configs) runs verifiers v1
-environments, as glyphbench's adapter is, and holds both losses the paper uses: ``ipo`` with
-``kl_tau`` and ``default`` with DPPO masks. Other stored versions rename ``ipo_threshold`` to
-``eps``, drop ``kl_tau`` from ``ipo``, or replace the loss union with per-algorithm configs; the
-store gives no commit dates, so which of them is newest is unknown. Files read, all under
-packages/prime-rl-configs/src/prime_rl/configs/ unless a path says otherwise:
+Target schema: PrimeIntellect-ai/prime-rl at ``schema.PRIME_RL_COMMIT`` (the one place naming the
+commit; the newest stored one), whose pinned verifiers (``schema.VERIFIERS_PIN``) loads the
+glyphbench-rl plugin, as verifiers 0.4.0 from PyPI does. ``schema.py`` transcribes the keys;
+``scripts/validate_prime_rl.py`` parses rendered files with a checkout's own RLConfig.
+Files read, all under packages/prime-rl-configs/src/prime_rl/configs/:
 
   ours -> Prime-RL key                                            [file: class]
   model (hub ID or folder) -> [model] name                        [rl.py: SharedModelConfig]
   steps -> max_steps; seq_len -> seq_len (fills trainer.model.seq_len and orchestrator.seq_len)
                                                                   [rl.py: RLConfig; utils/validation.py]
-  checkpoint_every, keep_checkpoints -> [ckpt] interval, keep_last; --resume -> resume_step = -1
-                                                                  [rl.py: SharedCheckpointConfig]
+  (run directory) -> output_dir = RUN_DIR, [run] name = the run directory's name, dir = "outputs":
+      Prime-RL writes to RUN_DIR/outputs, the same directory on every render, so a resumed run
+      finds it (without a name Prime-RL makes a fresh output_dir/<env>--<model>--<random>); the
+      name is also the W&B run name unless wandb_name is set  [shared.py: RunConfig]
+  checkpoint_every, keep_checkpoints -> [ckpt] interval, keep_last  [rl.py: SharedCheckpointConfig]
+  --resume -> [resume] (empty: the latest checkpoint)             [shared.py: ResumeConfig]
   loss ipo -> [trainer.loss] type="ipo", ipo_threshold, adv_tau, kl_tau
                                                                   [trainer.py: IPOLossConfig]
   loss default -> [trainer.loss] type="default", dppo_mask_low, dppo_mask_high, adv_tau, kl_tau
@@ -23,20 +25,24 @@ packages/prime-rl-configs/src/prime_rl/configs/ unless a path says otherwise:
       weight_decay, max_norm (Prime-RL's own defaults differ: betas2 0.999, weight decay 0.01)
                                                                   [trainer.py: AdamWConfig]
   (constant lr) -> [trainer.scheduler] type="constant"            [trainer.py: ConstantSchedulerConfig]
-  gradient_checkpointing -> [trainer.model.ac] (full, every layer) [trainer.py: ModelConfig.ac]
+  gradient_checkpointing -> stated either way, since Prime-RL checkpoints by default:
+      true -> [trainer.model.ac] mode="full", freq=1 (every layer);
+      false -> trainer.model ac = "None" and ac_offloading = "None" (offloading, on by default,
+      would switch checkpointing back on)                         [trainer.py: ModelConfig.ac]
   logprob_chunk -> trainer.model.fused_lm_head_token_chunk_size  [trainer.py: ModelConfig]
-  group_size -> orchestrator.group_size (alias rollouts_per_example);
-      group_size x groups_per_update -> orchestrator.batch_size (rollouts per step)
-                                                                  [orchestrator.py: OrchestratorConfig]
-  (mean-centred advantages) -> orchestrator.algorithms = ["grpo"] [orchestrator.py; orchestrator/algo/grpo.py]
+  group_size -> orchestrator.group_size; group_size x groups_per_update -> orchestrator.batch_size
+      (rollouts per step)                                         [orchestrator.py: OrchestratorConfig]
+  (mean-centred advantages) -> [orchestrator.algo] type="grpo"   [algorithm.py: GRPOAlgoConfig]
+  (zero-advantage groups kept) -> [orchestrator.train] filter_zero_advantages=false (its default
+      drops their tokens)                                          [orchestrator.py: TrainConfig]
   temperature, max_new_tokens -> [orchestrator.train.sampling] temperature, max_completion_tokens
                                                                   [orchestrator.py: TrainSamplingConfig]
-  (zero-advantage groups kept) -> [[orchestrator.post_batch_filters]] type="zero_advantage",
-      enforce=false (its default drops them)                      [orchestrator.py: ZeroAdvantageFilterConfig]
-  tasks, harness.* -> [[orchestrator.train.env]] taskset = glyphbench-rl, split "train"
-                                                                  [orchestrator.py: TrainEnvConfig]
-  eval_every, eval_episodes -> [orchestrator.eval] interval + a held-out env  [orchestrator.py: EvalConfig]
-  wandb_project, wandb_entity, wandb_name -> [wandb] project, entity, name  [rl.py: SharedWandbConfig]
+  tasks, harness.* -> [[orchestrator.train.source]] name, [....env.taskset] id = glyphbench-rl,
+      split "train"                                               [orchestrator.py: TrainSourceConfig]
+  eval_every, eval_episodes -> [orchestrator.eval] interval + a held-out source
+                                                                  [orchestrator.py: EvalConfig]
+  wandb_project, wandb_entity, wandb_name -> [monitors.wandb] project, entity, name
+                                                                  [rl.py: SharedWandbConfig]
   (chat template) -> [orchestrator.renderer] name="default" for local folders and SmolLM2, which
       renderers.base.MODEL_RENDERER_MAP lacks (renderers 0.1.12: DefaultRendererConfig)
 
@@ -44,9 +50,9 @@ Values with no Prime-RL equivalent are refused with a one-line error (``ONLY_AT_
 harness keys the taskset does not take); local knobs that Prime-RL sizes itself are not carried
 (``NOT_CARRIED``). A test checks that every TrainConfig field is classified.
 
-Differences that remain: Prime-RL draws its examples (one task and one training seed per row) at
-random from the taskset instead of cycling through the tasks, and all ``group_size`` rollouts of
-a group play that one row's seed, where the built-in trainer gives each member its own seed.
+Differences that remain: Prime-RL draws its examples (one task and one training seed per row)
+from the taskset instead of cycling through the tasks, and all ``group_size`` rollouts of a group
+play that one row's seed, where the built-in trainer gives each member its own seed.
 """
 
 from __future__ import annotations
@@ -61,10 +67,11 @@ from typing import Any
 from ...agent.harness import HarnessConfig
 from ...core import resolve_tasks
 from ...train.config import TrainConfig
+from .schema import PRIME_RL_COMMIT
 
-PRIME_RL_COMMIT = "004274ec964f016ec9b17b5ae990a4b535314ff1"
 TASKSET_ID = "glyphbench-rl"
 TOML_NAME = "prime_rl.toml"
+RUN_SUBDIR = "outputs"           # Prime-RL writes to RUN_DIR/outputs
 SMOLLM2_HUB_ID = "HuggingFaceTB/SmolLM2-135M-Instruct"
 _CHECKSUM = "# glyphbench-train checksum: "
 
@@ -95,66 +102,75 @@ def render_toml(cfg: TrainConfig, *, run_dir: str | Path, resume: bool = False) 
     _refuse_inexpressible(cfg)
     tasks = resolve_tasks(cfg.tasks)
     model, renderer = _policy_model(cfg.model)
+    run_dir = Path(run_dir).resolve()
     harness = cfg.harness_config()
     prompt = {k: getattr(harness, k) for k in TASKSET_PROMPT_KEYS if getattr(harness, k) is not None}
     # one training row per group the built-in trainer would play of each task
     rows_per_task = math.ceil(cfg.steps * cfg.groups_per_update / len(tasks))
     train_taskset = {"id": TASKSET_ID, "tasks": tasks, "split": "train", "episodes": rows_per_task,
                      "seed_start": 0, **({"harness": prompt} if prompt else {})}
-    ckpt: dict[str, Any] = {"interval": cfg.checkpoint_every, "keep_last": cfg.keep_checkpoints}
-    if resume:
-        ckpt["resume_step"] = -1          # Prime-RL: -1 resumes from the latest checkpoint
-    trainer_model: dict[str, Any] = {"fused_lm_head_token_chunk_size": cfg.logprob_chunk}
-    if cfg.gradient_checkpointing:
-        trainer_model["ac"] = {}
+    sampling = {"temperature": cfg.temperature, "max_completion_tokens": cfg.max_new_tokens}
     orchestrator: dict[str, Any] = {
         "batch_size": cfg.group_size * cfg.groups_per_update,
         "group_size": cfg.group_size,
-        "algorithms": ["grpo"],
+        "algo": {"type": "grpo"},
     }
     if renderer:
         orchestrator["renderer"] = {"name": renderer}
-    orchestrator["train"] = {
-        "sampling": {"temperature": cfg.temperature, "max_completion_tokens": cfg.max_new_tokens},
-        "env": [{"name": TASKSET_ID, "taskset": train_taskset}],
-    }
     # Zero-advantage groups still add KL-penalty tokens and count in the loss's token total
-    # (paper eq. 3), so they are kept; the other filters stay in their default monitor mode.
-    orchestrator["post_batch_filters"] = [{"type": kind, "enforce": False}
-                                          for kind in ("gibberish", "repetition", "zero_advantage")]
+    # (paper eq. 3), so they are kept.
+    orchestrator["train"] = {
+        "filter_zero_advantages": False,
+        "sampling": sampling,
+        "source": [{"name": TASKSET_ID, "env": {"taskset": train_taskset}}],
+    }
     if cfg.eval_every:
         heldout = {**train_taskset, "split": "heldout", "episodes": cfg.eval_episodes}
         orchestrator["eval"] = {
             "interval": cfg.eval_every, "skip_first_step": True, "group_size": 1, "num_examples": -1,
-            "sampling": {"temperature": cfg.temperature, "max_completion_tokens": cfg.max_new_tokens},
-            "env": [{"name": f"{TASKSET_ID}-heldout", "taskset": heldout}],
+            "sampling": dict(sampling),
+            "source": [{"name": f"{TASKSET_ID}-heldout", "env": {"taskset": heldout}}],
         }
-    doc = {
-        "output_dir": str(Path(run_dir).resolve() / "outputs"),
+    doc: dict[str, Any] = {
+        "output_dir": str(run_dir),
         "max_steps": cfg.steps,
         "seq_len": cfg.seq_len,
+        # a fixed name: Prime-RL writes to output_dir/outputs on every launch (an unnamed run
+        # gets a fresh random directory, which --resume would not find)
+        "run": {"name": run_dir.name or "run", "dir": RUN_SUBDIR},
         "model": {"name": model},
-        "ckpt": ckpt,
-        "inference": {},                  # present: the rl launcher starts the vLLM server
-        "trainer": {
-            "model": trainer_model,
-            "loss": _loss(cfg),
-            "optim": {"type": "adamw", "lr": cfg.lr, "betas1": float(cfg.betas[0]),
-                      "betas2": float(cfg.betas[1]), "weight_decay": cfg.weight_decay,
-                      "max_norm": cfg.grad_clip},
-            "scheduler": {"type": "constant"},
-        },
-        "orchestrator": orchestrator,
+        "ckpt": {"interval": cfg.checkpoint_every, "keep_last": cfg.keep_checkpoints},
     }
+    if resume:
+        doc["resume"] = {}                # Prime-RL: an empty [resume] takes the latest checkpoint
     if cfg.wandb_project:
-        doc["wandb"] = {k: v for k, v in (("project", cfg.wandb_project), ("entity", cfg.wandb_entity),
-                                          ("name", cfg.wandb_name)) if v}
+        doc["monitors"] = {"wandb": {k: v for k, v in (
+            ("project", cfg.wandb_project), ("entity", cfg.wandb_entity), ("name", cfg.wandb_name)) if v}}
+    doc["inference"] = {}                 # present: the rl launcher starts the vLLM server
+    doc["trainer"] = {
+        "model": {"fused_lm_head_token_chunk_size": cfg.logprob_chunk, **_activation_checkpointing(cfg)},
+        "loss": _loss(cfg),
+        "optim": {"type": "adamw", "lr": cfg.lr, "betas1": float(cfg.betas[0]),
+                  "betas2": float(cfg.betas[1]), "weight_decay": cfg.weight_decay,
+                  "max_norm": cfg.grad_clip},
+        "scheduler": {"type": "constant"},
+    }
+    doc["orchestrator"] = orchestrator
     body = dumps(doc)
     header = (f"# Prime-RL config rendered by glyphbench-train --backend prime-rl from the resolved\n"
               f"# config.yaml beside it (keys: PrimeIntellect-ai/prime-rl@{PRIME_RL_COMMIT[:12]}).\n"
               f"# Launch with `rl @ {TOML_NAME}` where prime-rl and glyphbench_rl are installed.\n"
               f"# Edit the YAML and render again: a hand-edited file is never overwritten.\n")
     return f"{header}{_CHECKSUM}{_digest(header + body)}\n{body}"
+
+
+def _activation_checkpointing(cfg: TrainConfig) -> dict[str, Any]:
+    """Stated either way: Prime-RL checkpoints every layer unless told not to."""
+    if cfg.gradient_checkpointing:
+        return {"ac": {"mode": "full", "freq": 1}}
+    # "None" is pydantic-config's null; activation offloading (on by default) needs checkpointing
+    # and would switch it back on
+    return {"ac": "None", "ac_offloading": "None"}
 
 
 def write_toml(cfg: TrainConfig, run_dir: str | Path, *, resume: bool = False) -> Path:
@@ -173,6 +189,13 @@ def write_toml(cfg: TrainConfig, run_dir: str | Path, *, resume: bool = False) -
     _write_atomic(run_dir / "config.yaml", yaml.safe_dump(cfg.to_dict(), sort_keys=False))
     _write_atomic(path, text)
     return path
+
+
+def started(run_dir: str | Path) -> bool:
+    """Whether Prime-RL has written to ``run_dir``'s output directory (a launch that ran at all):
+    rendering it again without ``resume`` would make Prime-RL refuse the directory."""
+    out = Path(run_dir) / RUN_SUBDIR
+    return out.is_dir() and any(out.iterdir())
 
 
 def _refuse_inexpressible(cfg: TrainConfig) -> None:

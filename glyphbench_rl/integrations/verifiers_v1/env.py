@@ -4,6 +4,14 @@ The turn is the rollout engine's own ``EpisodeDriver``: the harness composes eve
 messages (system prompt, history window, legend mode, context budget), the agent protocol parses
 the reply, and a reply without a valid action is a forfeit turn. The reward is the episode
 return; the metrics are the episode length, forfeit rate, terminated, truncated and won.
+
+Each past reply in a prompt goes back as the model returned it (the trace's own sampled message,
+reasoning in the field the server put it in), not as the engine's text of it (reasoning inlined
+in ``<think>``): verifiers' trace graph matches a prompt against the recorded messages, so a prompt
+that extends the last one continues its branch, and in training (Prime-RL's renderer client)
+the turn bridges onto the sampled token ids. The trace then branches only where the engine's
+own packing starts a new training sequence: where the history window slid or the context budget
+dropped a turn.
 """
 
 from __future__ import annotations
@@ -42,12 +50,15 @@ class GlyphbenchEnv(vf.Env[GlyphbenchEnvConfig]):
         driver = EpisodeDriver(get_spec(row.task_id).make(), row.seed, self.taskset.config.harness,
                                system_prompt=row.system_prompt or None)
         async with agents.agent.interaction(task) as interaction:
+            replies: list[vf.AssistantMessage | None] = []     # each turn's, as the model returned it
             while not driver.done:
                 prompt = driver.prompt()
-                segment = await interaction.turn(prompt.messages)
+                segment = await interaction.turn(as_returned(prompt.messages, replies))
                 if segment.terminated:   # the run ended (a model error, a turn or token limit)
                     break
-                driver.apply(prompt, Generation(_reply(segment)))
+                reply = _sampled(segment)
+                replies.append(reply)
+                driver.apply(prompt, Generation(_text(reply)))
             # recorded before the context closes, so the rollout's own summary line shows them
             traj = driver.traj
             forfeits = Counter(s.forfeit_reason for s in traj.steps if s.action is None)
@@ -65,9 +76,38 @@ class GlyphbenchEnv(vf.Env[GlyphbenchEnvConfig]):
                                         "context_drops": traj.context_drops}
 
 
-def _reply(segment: vf.Segment) -> str:
-    """The sampled reply as the engine sees it: separate reasoning wrapped in <think>."""
+def _sampled(segment: vf.Segment) -> vf.AssistantMessage | None:
+    """The reply this segment sampled (the trace's message), None if it holds none."""
     for message in reversed(segment.messages):
         if isinstance(message, vf.AssistantMessage):
-            return reply_text({"content": message.content, "reasoning_content": message.reasoning_content})
-    return ""
+            return message
+    return None
+
+
+def _text(message: vf.AssistantMessage | None) -> str:
+    """The reply as the engine reads it: separate reasoning wrapped in <think>."""
+    if message is None:
+        return ""
+    return reply_text({"content": message.content, "reasoning_content": message.reasoning_content})
+
+
+def as_returned(messages: list[dict], replies: list[vf.AssistantMessage | None]) -> list:
+    """``messages`` (the engine's prompt) with each past reply as the model returned it.
+
+    A prompt's assistant messages are the replies of the turns its window keeps, which are the
+    latest ones, in order; each is swapped for its sampled message when that reads as the same
+    text (``_text``), so a reply whose reasoning the server split off goes back the same way.
+    """
+    n = sum(1 for m in messages if m["role"] == "assistant")
+    if n > len(replies):
+        raise RuntimeError(f"the prompt holds {n} replies but only {len(replies)} were sampled")
+    kept = iter(replies[len(replies) - n:])
+    out: list = []
+    for message in messages:
+        if message["role"] == "assistant":
+            reply = next(kept)
+            if reply is not None and _text(reply) == message["content"]:
+                out.append(reply)
+                continue
+        out.append(message)
+    return out

@@ -3,7 +3,8 @@
 verifiers' chat harnesses keep the whole conversation and run as a uv script in a runtime.
 Games need the engine's prompt instead (system prompt + a sliding history window + the
 current observation), and nothing to execute, so this harness runs in-process: each segment
-posts the messages the env handed to ``turn()`` to the rollout's interception endpoint, which
+posts the messages the env handed to ``turn()`` (the engine's prompt, past replies as the model
+returned them: see ``env``) to the rollout's interception endpoint, which
 records the call on the trace and relays it to the real model (v1's documented in-process
 harness contract: every model call goes through ``endpoint`` + ``secret``).
 """
@@ -50,7 +51,10 @@ class GlyphbenchHarness(vf.Harness[GlyphbenchHarnessConfig]):
 
     async def resume(self, ctx, trace, runtime, endpoint, secret, mcp_urls, data, messages,
                      tool_interception_url=None) -> ProgramResult:
-        # The env hands over the complete prompt of this turn, not a continuation: send it as is.
+        # The env hands over the complete prompt of this turn, its past replies the trace's own
+        # sampled messages: send it as is. The interception matches it against the trace by
+        # prefix, so a prompt that extends the last one continues that branch (in training: its
+        # token ids), and only a prompt that does not (the window slid) starts a new one.
         return await self._call(ctx, trace, endpoint, secret, messages)
 
     async def _call(self, ctx, trace, endpoint, secret, messages) -> ProgramResult:

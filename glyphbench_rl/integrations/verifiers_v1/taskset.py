@@ -26,8 +26,8 @@ class GlyphbenchTasksetConfig(vf.TasksetConfig):
     """Task IDs, globs, comma lists or task-list files, as glyphbench_rl.resolve_tasks reads
     them; None: every standard-tier task."""
     split: Literal["heldout", "train"] = "heldout"
-    """Which seed range the rows use: heldout [1,000,000, 2,000,000) for evaluation, or train
-    [0, 1,000,000) for training."""
+    """Which seed range the rows use: heldout [1,000,000, 2,000,000) for evaluation (rows task by
+    task), or train [0, 1,000,000) for training (rows round-robin over the tasks)."""
     episodes: int = Field(1, ge=1)
     """Episodes per task, each on its own seed of the split (the same seeds for every model)."""
     seed_start: int = Field(0, ge=0)
@@ -98,9 +98,14 @@ class GlyphbenchTask(vf.Task[GlyphbenchData, vf.State, vf.TaskConfig]):
 
 class GlyphbenchTaskset(vf.Taskset[GlyphbenchTask, GlyphbenchTasksetConfig]):
     def load(self) -> Iterator[GlyphbenchTask]:
-        seeds = self.config.seeds()
-        for task_id in self.config.task_ids():
-            for seed in seeds:
-                # prompt=None: the env opens each conversation with the first observation
-                yield GlyphbenchTask(GlyphbenchData(id=f"{task_id}@{seed}", name=task_id,
-                                                    task_id=task_id, seed=seed), self.config.task)
+        seeds, task_ids = self.config.seeds(), self.config.task_ids()
+        if self.config.split == "train":
+            # round-robin over the tasks (row r plays task r mod n), the order the built-in
+            # trainer cycles through them; Prime-RL's default sampler takes rows in source order
+            rows = ((task_id, seed) for seed in seeds for task_id in task_ids)
+        else:
+            rows = ((task_id, seed) for task_id in task_ids for seed in seeds)
+        for task_id, seed in rows:
+            # prompt=None: the env opens each conversation with the first observation
+            yield GlyphbenchTask(GlyphbenchData(id=f"{task_id}@{seed}", name=task_id,
+                                                task_id=task_id, seed=seed), self.config.task)
