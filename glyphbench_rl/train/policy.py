@@ -74,8 +74,15 @@ class HFPolicy:
         self.model.train(on)
 
     def save(self, path: Path) -> None:
-        self.model.save_pretrained(path)
-        self.tokenizer.save_pretrained(path)
+        from transformers.utils import logging as hf_logging
+        bars = hf_logging.is_progress_bar_enabled()
+        hf_logging.disable_progress_bar()          # no "Writing model shards" bar in a run's log
+        try:
+            self.model.save_pretrained(path)
+            self.tokenizer.save_pretrained(path)
+        finally:
+            if bars:
+                hf_logging.enable_progress_bar()
 
     def load_weights(self, path: Path) -> None:
         from safetensors.torch import load_file

@@ -108,10 +108,10 @@ class Trainer:
                     fh.write(json.dumps(metrics) + "\n")
                 for sink in self.sinks:
                     sink.log(metrics, self.step)
-                self.display.step_done(metrics)
                 if self.step % self.cfg.checkpoint_every == 0 or self.step == self.cfg.steps:
                     self.display.phase("checkpoint")
                     self.save_checkpoint()
+                self.display.step_done(metrics)     # after the checkpoint: the step is complete
         finally:
             for sink in self.sinks:
                 sink.close()

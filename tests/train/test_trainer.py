@@ -157,6 +157,7 @@ def test_cli_runs_a_tiny_model(tiny_model_dir, tmp_path, capsys):
     assert job["backend_options"] == {} and job["context"]["train_step"] == 1   # bookkeeping apart
     out = capsys.readouterr().out
     assert "step 1/1" in out and "step 1/1: rollouts 0/2" in out and "step 1/1: update" in out
+    assert "step 1/1: checkpoint" in out and "step 2/1" not in out
 
 
 def _traj(reasons, ret=0.0, group=0):
