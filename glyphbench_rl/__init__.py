@@ -21,6 +21,14 @@ if _find_spec("verifiers") is not None:
 
 def __getattr__(name: str):
     if name in _VERIFIERS_V1:
-        from .integrations import verifiers_v1
+        try:
+            from .integrations import verifiers_v1
+        except AttributeError as e:
+            # verifiers' loader reads an AttributeError here as "no such export" and reports
+            # that the module exports no Taskset; say what is really wrong instead
+            from importlib.metadata import version
+            raise ImportError(f"glyphbench_rl's verifiers adapter needs the verifiers v1 API of "
+                              f"verifiers 0.4.0; this verifiers ({version('verifiers')}) lacks "
+                              f"it: {e}") from e
         return getattr(verifiers_v1, name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -256,3 +256,17 @@ def test_import_glyphbench_rl_stays_light():
     code = "import sys, glyphbench_rl; print(sorted(m for m in sys.modules if m.split('.')[0] in ('verifiers', 'httpx', 'torch')))"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "[]"
+
+
+def test_an_incompatible_verifiers_is_an_import_error_naming_it(monkeypatch):
+    """verifiers' loader swallows AttributeError ("exports no Taskset"): a verifiers without the
+    v1 names the adapter uses must surface as an ImportError that says so."""
+    import sys
+    import verifiers.v1 as vf
+    monkeypatch.delattr(vf, "TaskData")
+    import glyphbench_rl.integrations as integrations
+    for mod in [m for m in sys.modules if m.startswith("glyphbench_rl.integrations.verifiers_v1")]:
+        monkeypatch.delitem(sys.modules, mod)
+    monkeypatch.delattr(integrations, "verifiers_v1", raising=False)
+    with pytest.raises(ImportError, match="verifiers v1 API"):
+        glyphbench_rl.GlyphbenchTaskset
