@@ -109,3 +109,14 @@ def test_train_cli_names_the_unimplemented_count(tmp_path, capsys):
     err = capsys.readouterr().err.strip()
     assert err.startswith("glyphbench-train: error: ") and "of the 100 tasks are not implemented" in err
     assert "\n" not in err
+
+
+def test_shipped_task_lists_resolve_from_any_directory(tmp_path, monkeypatch):
+    """`tasks/standard.txt` names the shipped list wherever the command runs (vf-eval,
+    glyphbench-eval and configs alike); a file of that name here still wins."""
+    from glyphbench_rl.core import resolve_tasks
+    monkeypatch.chdir(tmp_path)
+    assert resolve_tasks(["tasks/standard.txt"]) == list_tasks(tier="standard")
+    (tmp_path / "tasks").mkdir()
+    (tmp_path / "tasks" / "standard.txt").write_text("glyphbench/classics-snake-easy-v0\n")
+    assert resolve_tasks("tasks/standard.txt") == ["glyphbench/classics-snake-easy-v0"]

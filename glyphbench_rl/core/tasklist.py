@@ -8,6 +8,19 @@ from pathlib import Path
 from .registry import UnknownTaskError, get_spec, is_registered, list_tasks, unregistered_tasks_message
 
 
+#: the checkout holding glyphbench_rl/ and the shipped task lists in tasks/
+PROJECT_ROOT = Path(__file__).resolve().parents[2]
+
+
+def locate(item: str) -> str:
+    """A task-list path as given when it exists here; else the shipped file of that relative
+    path (``tasks/standard.txt`` from any directory); else unchanged."""
+    if os.path.isabs(item) or os.path.exists(item):
+        return item
+    shipped = PROJECT_ROOT / item
+    return str(shipped) if shipped.is_file() else item
+
+
 def read_task_file(path: str | os.PathLike) -> list[str]:
     try:
         text = Path(path).read_text(encoding="utf-8")
@@ -29,6 +42,7 @@ def _looks_like_a_file(item: str) -> bool:
 
 def resolve_tasks(selection: str | list[str]) -> list[str]:
     """IDs named by ``selection``: a task-list file, a glob, comma-separated IDs, or a list.
+    A relative file name missing here is looked up among the shipped lists (``locate``).
 
     Every ID is checked against the registry: unknown ones raise naming the closest IDs, and
     catalog tasks not implemented yet raise once for the whole list, counted by suite; a
@@ -42,10 +56,10 @@ def resolve_tasks(selection: str | list[str]) -> list[str]:
                              f"got {item!r} ({type(item).__name__})")
     # a comma list may mix IDs, globs and files: split it first (file names have no commas here)
     items = [part for item in items for part in
-             ([item] if os.path.isfile(item.strip()) else item.split(","))]
+             ([item] if os.path.isfile(locate(item.strip())) else item.split(","))]
     out: list[str] = []
     for item in items:
-        item = item.strip()
+        item = locate(item.strip())
         if not item:
             continue
         if os.path.isfile(item):

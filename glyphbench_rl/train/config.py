@@ -9,12 +9,11 @@ config is what a run saves beside its outputs.
 from __future__ import annotations
 
 import functools
-import os
 import re
 from pathlib import Path
 from typing import Annotated, Any, ClassVar, Literal, Mapping, get_args
 
-from pydantic import Field, field_validator
+from pydantic import Field
 
 from ..agent.harness import HarnessConfig
 from ..settings import Settings, unknown_key
@@ -26,8 +25,6 @@ class ConfigError(ValueError):
 
 Loss = Literal["ipo", "default"]
 LOSSES = get_args(Loss)
-#: the checkout holding glyphbench_rl/ and tasks/ (as the registry finds tasks/catalog.tsv)
-PROJECT_ROOT = Path(__file__).resolve().parents[2]
 
 # value shapes, each named by the one-line error a bad value gets
 Count = Annotated[int, Field(ge=1)]                       # an int >= 1
@@ -49,7 +46,7 @@ class TrainConfig(Settings):
     device: Name | None = None         # default: cuda when available, else cpu
     dtype: Literal["float32", "bfloat16", "float16"] | None = None   # default: bf16 GPU, fp32 CPU
     gradient_checkpointing: bool = False
-    # tasks and rollouts; a relative task-list path missing here is read from the project's tasks/
+    # tasks and rollouts (a relative task-list path missing here is read from the shipped tasks/)
     tasks: Tasks = Field("tasks/standard.txt", validate_default=True)
     steps: Count = 100                 # optimizer steps
     # rollouts per group: one task, different training seeds (a group of one has no advantage)
@@ -97,17 +94,6 @@ class TrainConfig(Settings):
     wandb_project: Name | None = None  # mirror metrics to this W&B project (needs wandb)
     wandb_entity: Name | None = None
     wandb_name: Name | None = None     # default: the run directory's name
-
-    @field_validator("tasks")
-    @classmethod
-    def _project_task_lists(cls, tasks: str | list[str]) -> str | list[str]:
-        """``tasks/standard.txt`` (the default) works from any directory: a relative path that
-        is not a file here but is one in the project is read from the project."""
-        def found(item: str) -> str:
-            if os.path.isabs(item) or os.path.exists(item) or not (PROJECT_ROOT / item).is_file():
-                return item
-            return str(PROJECT_ROOT / item)
-        return found(tasks) if isinstance(tasks, str) else [found(t) for t in tasks]
 
     def check(self) -> None:
         self.harness_config()
