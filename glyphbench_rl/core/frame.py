@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import unicodedata
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Mapping, Sequence
 
 
@@ -97,7 +98,24 @@ def legend_of(text: str, vocab: Mapping[str, str],
 
 
 def legend_line(legend: Sequence[tuple[str, str]]) -> str:
+    """``Legend: g meaning, ...``; remembered per legend (a game shows few distinct ones)."""
+    try:
+        return _legend_line(legend)
+    except TypeError:   # a legend built of lists by hand
+        return _legend_line.__wrapped__(legend)
+
+
+@lru_cache(maxsize=4096)
+def _legend_line(legend: tuple[tuple[str, str], ...]) -> str:
     return "Legend: " + ", ".join([f"{g} {m}" for g, m in legend])
+
+
+@lru_cache(maxsize=256)
+def _axes(height: int, width: int) -> tuple[str, tuple[str, ...]]:
+    """The column-letter line and the row-number prefixes of a ``height`` x ``width`` grid."""
+    digits = len(str(height))
+    return (" " * (digits + 1) + "".join(chr(65 + c) for c in range(width)),
+            tuple(f"{r + 1:>{digits}} " for r in range(height)))
 
 
 def render(frame: Frame, legend_text: str | None = None) -> str:
@@ -106,9 +124,9 @@ def render(frame: Frame, legend_text: str | None = None) -> str:
     if legend_text is None:
         legend_text = legend_line(frame.legend)
     if frame.axes:
-        width = len(str(len(frame.grid)))
-        lines = [frame.hud, " " * (width + 1) + "".join(chr(65 + c) for c in range(len(frame.grid[0])))]
-        lines.extend(f"{r + 1:>{width}} {row}" for r, row in enumerate(frame.grid))
+        header, labels = _axes(len(frame.grid), len(frame.grid[0]))
+        lines = [frame.hud, header]
+        lines.extend([label + row for label, row in zip(labels, frame.grid)])
     else:
         lines = [frame.hud, *frame.grid]
     lines.append(legend_text)

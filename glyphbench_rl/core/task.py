@@ -91,7 +91,8 @@ class GlyphTask(gym.Env[str, int]):
         self._seedseq: np.random.SeedSequence | None = None
         self._streams: dict[tuple, np.random.Generator] = {}
         self._started = False
-        # the last frame's vocabulary, legend and legend line: the next frame's first guess
+        # the last frame's grid, vocabulary, legend and legend line: the next frame's first guess
+        self._legend_grid: tuple[str, ...] = ()
         self._legend_vocab: Mapping[str, str] | None = None
         self._legend: tuple[tuple[str, str], ...] = ()
         self._legend_text = legend_line(())
@@ -288,7 +289,13 @@ class GlyphTask(gym.Env[str, int]):
         hud = f"Step {self.turn}/{self.max_turns} | {hud}" if hud else f"Step {self.turn}/{self.max_turns}"
         grid = tuple(self._grid())
         vocab = self.vocab()
-        legend = legend_of("".join(grid), vocab, self._legend if vocab is self._legend_vocab else ())
+        if vocab is self._legend_vocab:
+            # an unchanged grid (a bump, a no-op; rows a game kept are the same objects, which
+            # compare at once) keeps its legend; else the last legend is tried first
+            legend = self._legend if grid == self._legend_grid else legend_of("".join(grid), vocab, self._legend)
+        else:
+            legend = legend_of("".join(grid), vocab)
+        self._legend_grid = grid
         if legend is not self._legend:
             self._legend_vocab, self._legend, self._legend_text = vocab, legend, legend_line(legend)
         return new_frame(grid, legend, hud, " ".join(self._messages), self.axes)
