@@ -228,13 +228,18 @@ class MiniGridTask(GlyphTask):
         """Put ``obj`` on a random empty cell of the rectangle (rejection sampling as MiniGrid:
         never on an object or the agent); RecursionError after ``max_tries`` failed draws."""
         grid = self.grid
-        top = (0, 0) if top is None else (max(top[0], 0), max(top[1], 0))
-        if size is None:
-            size = (grid.width, grid.height)
-        x_hi, y_hi = min(top[0] + size[0], grid.width), min(top[1] + size[1], grid.height)
-        x_lo, y_lo = top
-        # every turn for moving obstacles, often many tries: the cell is read by its index
-        draw, cells, origin, stride = self.int_sampler(), grid.cells, grid.index(0, 0), grid.stride
+        width, height = grid.width, grid.height
+        if top is None:
+            x_lo = y_lo = 0
+        else:
+            x_lo, y_lo = max(top[0], 0), max(top[1], 0)
+        x_hi = width if size is None else min(x_lo + size[0], width)
+        y_hi = height if size is None else min(y_lo + size[1], height)
+        # every turn for moving obstacles, often many tries: cells are read by their index
+        draw = self._int_sampler
+        if draw is None or draw.rng is not self.rng:
+            draw = self.int_sampler()
+        cells, origin, stride = grid.cells, grid.index(0, 0), grid.stride
         tries = 0
         while True:
             if tries > max_tries:
@@ -242,14 +247,14 @@ class MiniGridTask(GlyphTask):
             tries += 1
             x = draw(x_lo, x_hi)
             y = draw(y_lo, y_hi)
-            pos = (x, y)
-            if cells[origin + y * stride + x] is not None or pos == self.agent_pos:
+            if cells[origin + y * stride + x] is not None:
                 continue
-            if reject_fn is not None and reject_fn(self, pos):
+            pos = (x, y)
+            if pos == self.agent_pos or (reject_fn is not None and reject_fn(self, pos)):
                 continue
             break
         if obj is not None:
-            grid.set(*pos, obj)
+            grid.set(x, y, obj)
         return pos
 
     def place_agent(self, top: tuple[int, int] | None = None, size: tuple[int, int] | None = None,
