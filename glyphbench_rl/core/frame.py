@@ -63,13 +63,18 @@ def build_frame(grid: Sequence[str], vocab: Mapping[str, str], hud: str, message
     glyphs (the usual case from one turn to the next) it is the legend, found by a count per
     glyph on the grid instead of a test per vocabulary entry."""
     grid = tuple(grid)
-    return Frame(grid, legend_of("".join(grid), vocab, hint), hud, message, axes)
+    return Frame(grid, legend_of("".join(grid), vocab_entries(vocab), hint), hud, message, axes)
 
 
-def legend_of(text: str, vocab: Mapping[str, str],
+def vocab_entries(vocab: Mapping[str, str]) -> tuple[tuple[str, str], ...]:
+    """The ``(glyph, meaning)`` pairs of ``vocab`` that can be on a grid (one character each)."""
+    return tuple((g, m) for g, m in vocab.items() if len(g) == 1)
+
+
+def legend_of(text: str, entries: Sequence[tuple[str, str]],
               hint: tuple[tuple[str, str], ...] = ()) -> tuple[tuple[str, str], ...]:
-    """The ``(glyph, meaning)`` pairs of ``vocab`` whose glyph occurs in ``text``, in ``vocab``
-    order; RuntimeError when ``text`` holds a character ``vocab`` has no entry for.
+    """The ``(glyph, meaning)`` pairs of ``entries`` (``vocab_entries(vocab)``) whose glyph occurs
+    in ``text``, in their order; RuntimeError when ``text`` holds a character none names.
 
     Counting each glyph with ``str.count`` is a C scan; a set of the text's characters would make
     a string object per cell (characters beyond Latin-1 are not cached), which was the largest
@@ -87,12 +92,12 @@ def legend_of(text: str, vocab: Mapping[str, str],
                 return hint
     legend = []
     counted = 0
-    for g, m in vocab.items():
-        if len(g) == 1 and g in text:
+    for g, m in entries:
+        if g in text:
             legend.append((g, m))
             counted += text.count(g)
     if counted != len(text):
-        missing = "".join(sorted(set(text).difference(vocab)))
+        missing = "".join(sorted(set(text).difference(g for g, _ in entries)))
         raise RuntimeError(f"glyphs {missing!r} are on the grid but have no legend entry")
     return tuple(legend)
 

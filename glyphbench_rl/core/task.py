@@ -28,11 +28,12 @@ import gymnasium as gym
 import numpy as np
 
 from .actions import ActionSet
-from .frame import Frame, legend_line, legend_of, new_frame, render
+from .frame import Frame, legend_line, legend_of, new_frame, render, vocab_entries
 from .params import ParamError, check_params
 from .seeding import check_seed, derive
 
 STANDARD_TURN_CAP = 512
+_LEGEND_MEMO = 512   # grids whose legend a task remembers
 _RETURN_EPS = 1e-9
 
 OBSERVATION_CONVENTIONS = (
@@ -91,7 +92,10 @@ class GlyphTask(gym.Env[str, int]):
         self._seedseq: np.random.SeedSequence | None = None
         self._streams: dict[tuple, np.random.Generator] = {}
         self._started = False
-        # the last frame's grid, vocabulary, legend and legend line: the next frame's first guess
+        # the last frame's grid, vocabulary, legend and legend line: the next frame's first guess;
+        # and the legends of recent grids (their text) under that vocabulary
+        self._legends: dict[str, tuple[tuple[str, str], ...]] = {}
+        self._vocab_entries: tuple[tuple[str, str], ...] = ()
         self._legend_grid: tuple[str, ...] = ()
         self._legend_vocab: Mapping[str, str] | None = None
         self._legend: tuple[tuple[str, str], ...] = ()
@@ -289,12 +293,22 @@ class GlyphTask(gym.Env[str, int]):
         hud = f"Step {self.turn}/{self.max_turns} | {hud}" if hud else f"Step {self.turn}/{self.max_turns}"
         grid = tuple(self._grid())
         vocab = self.vocab()
-        if vocab is self._legend_vocab:
-            # an unchanged grid (a bump, a no-op; rows a game kept are the same objects, which
-            # compare at once) keeps its legend; else the last legend is tried first
-            legend = self._legend if grid == self._legend_grid else legend_of("".join(grid), vocab, self._legend)
+        if vocab is not self._legend_vocab:
+            self._legends = {}
+            self._vocab_entries = vocab_entries(vocab)
+            legend = legend_of("".join(grid), self._vocab_entries)
+        elif grid == self._legend_grid:   # a bump, a no-op: rows a game kept compare at once
+            legend = self._legend
         else:
-            legend = legend_of("".join(grid), vocab)
+            # a grid seen before (boards repeat: a player walking a maze) has its legend
+            # remembered; else the last legend is tried first
+            text = "".join(grid)
+            legend = self._legends.get(text)
+            if legend is None:
+                legend = legend_of(text, self._vocab_entries, self._legend)
+                if len(self._legends) >= _LEGEND_MEMO:
+                    self._legends.clear()
+                self._legends[text] = legend
         self._legend_grid = grid
         if legend is not self._legend:
             self._legend_vocab, self._legend, self._legend_text = vocab, legend, legend_line(legend)
