@@ -130,11 +130,9 @@ def render(frame: Frame, legend_text: str | None = None) -> str:
         legend_text = legend_line(frame.legend)
     if frame.axes:
         header, labels = _axes(len(frame.grid), len(frame.grid[0]))
-        lines = [frame.hud, header]
-        lines.extend([label + row for label, row in zip(labels, frame.grid)])
+        lines = [frame.hud, header, *map(str.__add__, labels, frame.grid), legend_text]
     else:
-        lines = [frame.hud, *frame.grid]
-    lines.append(legend_text)
+        lines = [frame.hud, *frame.grid, legend_text]
     if frame.message:
         lines.append(frame.message)
     return "\n".join(lines)
