@@ -94,7 +94,8 @@ class GlyphTask(gym.Env[str, int]):
         self._started = False
         # the last frame's grid, vocabulary, legend and legend line: the next frame's first guess;
         # and the legends of recent grids (their text) under that vocabulary
-        self._legends: dict[str, tuple[tuple[str, str], ...]] = {}
+        self._legends: dict[str, tuple[tuple[tuple[str, str], ...], str]] = {}
+        self._hint_holds = True
         self._vocab_entries: tuple[tuple[str, str], ...] = ()
         self._legend_grid: tuple[str, ...] = ()
         self._legend_vocab: Mapping[str, str] | None = None
@@ -297,22 +298,24 @@ class GlyphTask(gym.Env[str, int]):
             self._legends = {}
             self._vocab_entries = vocab_entries(vocab)
             legend = legend_of("".join(grid), self._vocab_entries)
-        elif grid == self._legend_grid:   # a bump, a no-op: rows a game kept compare at once
-            legend = self._legend
-        else:
+            self._legend_vocab, self._legend, self._legend_text = vocab, legend, legend_line(legend)
+        elif grid != self._legend_grid:   # (an unchanged grid, a bump or a no-op, keeps all)
             # a grid seen before (boards repeat: a player walking a maze) has its legend
-            # remembered; else the last legend is tried first
+            # remembered; else the last legend is tried first while that keeps paying off
             text = "".join(grid)
-            legend = self._legends.get(text)
-            if legend is None:
-                legend = legend_of(text, self._vocab_entries, self._legend)
+            seen = self._legends.get(text)
+            if seen is None:
+                legend = legend_of(text, self._vocab_entries, self._legend if self._hint_holds else ())
+                self._hint_holds = legend == self._legend
+                if self._hint_holds:
+                    legend = self._legend
+                seen = (legend, self._legend_text if self._hint_holds else legend_line(legend))
                 if len(self._legends) >= _LEGEND_MEMO:
                     self._legends.clear()
-                self._legends[text] = legend
+                self._legends[text] = seen
+            self._legend, self._legend_text = seen
         self._legend_grid = grid
-        if legend is not self._legend:
-            self._legend_vocab, self._legend, self._legend_text = vocab, legend, legend_line(legend)
-        return new_frame(grid, legend, hud, " ".join(self._messages), self.axes)
+        return new_frame(grid, self._legend, hud, " ".join(self._messages), self.axes)
 
     def _observation(self) -> str:
         """The current frame's text (its legend line kept from the frame before when unchanged)."""
