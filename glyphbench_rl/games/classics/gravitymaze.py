@@ -15,7 +15,7 @@ from ...core import ActionSet, GlyphTask, register_variants
 from ...core.params import param
 from ..common.grid import DELTAS, Board, bfs_search, interior_cells, random_room
 from ..common.palette import FLOOR, GOAL, WALL
-from ..common.view import overlay
+from ..common.view import stamped
 
 BALL, SPIKES = "●", "▲"
 # Gravity directions as DELTAS indices, in clockwise order as seen on screen: down, left, up, right.
@@ -120,9 +120,7 @@ class GravityMaze(GlyphTask):
             self.finish(won=False)
 
     def _grid(self) -> list[str]:
-        rows = self._still.copy()
-        overlay(rows, *self.ball, BALL)
-        return rows
+        return stamped(self._still, *self.ball, BALL)
 
     def _hud(self) -> str:
         return f"Gravity {DIRECTION_NAMES[self.gravity]}"

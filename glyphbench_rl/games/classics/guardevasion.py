@@ -18,7 +18,7 @@ from ...core.params import param
 from ..common.grid import DELTAS, MOVES, bfs_distances, bfs_search, interior_cells, random_room
 from ..common.palette import FLOOR, GOAL, PLAYER, WALL
 from ..common.sight import view_cone
-from ..common.view import overlay
+from ..common.view import stamped
 
 ARROWS = "▲▼◀▶"     # a guard facing up, down, left, right (DELTAS order)
 SENTRIES = "△▽◁▷"   # a sentry, likewise
@@ -221,9 +221,7 @@ class GuardEvasion(GlyphTask):
         return ["".join(row) for row in rows]
 
     def _grid(self) -> list[str]:
-        rows = self._scenes[self.phase].copy()
-        overlay(rows, *self.pos, PLAYER)
-        return rows
+        return stamped(self._scenes[self.phase], *self.pos, PLAYER)
 
 
 register_variants(GuardEvasion, "Classics", {

@@ -16,7 +16,7 @@ from ...core import GlyphTask, register_variants
 from ...core.params import param
 from ..common.grid import DELTAS, MOVES, Board, bfs_layers, move_actions, random_room, slide
 from ..common.palette import FLOOR, GOAL, PLAYER, WALL
-from ..common.view import overlay
+from ..common.view import overlay, stamped
 
 Cell = tuple[int, int]
 _TRIES = 500   # rock layouts tried per reset before the parameters are declared impossible
@@ -106,9 +106,7 @@ class IceSliding(GlyphTask):
             self.finish(won=True)
 
     def _grid(self) -> list[str]:
-        rows = self._still.copy()
-        overlay(rows, *self.pos, PLAYER)
-        return rows
+        return stamped(self._still, *self.pos, PLAYER)
 
 
 register_variants(IceSliding, "Classics", {

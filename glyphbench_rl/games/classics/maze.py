@@ -10,7 +10,7 @@ from ...core import GlyphTask, register_variants
 from ...core.params import param
 from ..common.grid import DELTAS, Board, bfs_distances, move_actions
 from ..common.palette import FLOOR, GOAL, PLAYER, WALL
-from ..common.view import overlay
+from ..common.view import overlay, stamped
 
 
 @dataclass(frozen=True)
@@ -66,6 +66,9 @@ class Maze(GlyphTask):
         self._still = self.board.lines()   # the maze never changes: drawn once
         overlay(self._still, *self.exit, GOAL)
 
+    def _grid(self) -> list[str]:
+        return stamped(self._still, *self.pos, PLAYER)
+
     def _act(self, action: int) -> None:
         dr, dc = DELTAS[action]
         r, c = self.pos[0] + dr, self.pos[1] + dc
@@ -77,11 +80,6 @@ class Maze(GlyphTask):
             self.reward(self.time_bonus(self.params.time_weight))
             self.say("Reached the exit.")
             self.finish(won=True)
-
-    def _grid(self) -> list[str]:
-        rows = self._still.copy()
-        overlay(rows, *self.pos, PLAYER)
-        return rows
 
 
 register_variants(Maze, "Classics", {
