@@ -101,6 +101,8 @@ class ActionSet:
 
     def index(self, action: int | str) -> int:
         """Resolve an index or a name; ValueError listing the valid actions otherwise."""
+        if type(action) is int and 0 <= action < len(self._actions):   # the common case, first
+            return action
         if isinstance(action, str):
             i = self.lookup(action)
             if i is None:

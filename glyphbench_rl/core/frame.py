@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import unicodedata
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Mapping, Sequence
 
 
@@ -39,31 +40,128 @@ class Frame:
         return dict(self.legend)
 
 
+def new_frame(grid: tuple[str, ...], legend: tuple[tuple[str, str], ...], hud: str, message: str,
+              axes: bool) -> Frame:
+    """``Frame(grid, legend, hud, message, axes)`` without the frozen dataclass's ``__init__``
+    (which sets each field through ``object.__setattr__``): a third of the cost, for the one
+    Frame every step makes. The fields are set through their slots, so the object is the same."""
+    frame = _new(Frame)
+    _set_grid(frame, grid)
+    _set_legend(frame, legend)
+    _set_hud(frame, hud)
+    _set_message(frame, message)
+    _set_axes(frame, axes)
+    _set_above(frame, ())
+    _set_beside(frame, ())
+    return frame
+
+
+_new = object.__new__
+_set_grid, _set_legend, _set_hud, _set_message, _set_axes, _set_above, _set_beside = (
+    Frame.__dict__[f].__set__ for f in ("grid", "legend", "hud", "message", "axes", "above", "beside"))
+
+
 def build_frame(grid: Sequence[str], vocab: Mapping[str, str], hud: str, message: str = "",
-                axes: bool = False) -> Frame:
-    """Make a Frame whose legend lists exactly the glyphs present, in ``vocab`` order."""
-    present = set("".join(grid))
-    legend = tuple((g, m) for g, m in vocab.items() if g in present)
-    if len(legend) != len(present):
-        missing = "".join(sorted(present.difference(vocab)))
+                axes: bool = False, *, hint: tuple[tuple[str, str], ...] = ()) -> Frame:
+    """Make a Frame whose legend lists exactly the glyphs present, in ``vocab`` order.
+
+    ``hint`` is an earlier legend drawn from the same ``vocab``: when the grid holds exactly its
+    glyphs (the usual case from one turn to the next) it is the legend, found by a count per
+    glyph on the grid instead of a test per vocabulary entry."""
+    grid = tuple(grid)
+    return Frame(grid, legend_of("".join(grid), vocab_entries(vocab), hint), hud, message, axes)
+
+
+def vocab_entries(vocab: Mapping[str, str]) -> tuple[tuple[str, str], ...]:
+    """The ``(glyph, meaning)`` pairs of ``vocab`` that can be on a grid (one character each)."""
+    return tuple((g, m) for g, m in vocab.items() if len(g) == 1)
+
+
+def legend_of(text: str, entries: Sequence[tuple[str, str]],
+              hint: tuple[tuple[str, str], ...] = ()) -> tuple[tuple[str, str], ...]:
+    """The ``(glyph, meaning)`` pairs of ``entries`` (``vocab_entries(vocab)``) whose glyph occurs
+    in ``text``, in their order; RuntimeError when ``text`` holds a character none names.
+
+    Counting each glyph with ``str.count`` is a C scan; a set of the text's characters would make
+    a string object per cell (characters beyond Latin-1 are not cached), which was the largest
+    cost of a step on a large board. The counts of the legend's glyphs add up to the length of
+    the text exactly when every character is one of them."""
+    if hint:
+        counted = 0
+        for g, _ in hint:
+            n = text.count(g)
+            if not n:
+                break
+            counted += n
+        else:
+            if counted == len(text):
+                return hint
+    legend = []
+    counted = 0
+    for g, m in entries:
+        if g in text:
+            legend.append((g, m))
+            counted += text.count(g)
+    if counted != len(text):
+        missing = "".join(sorted(set(text).difference(g for g, _ in entries)))
         raise RuntimeError(f"glyphs {missing!r} are on the grid but have no legend entry")
-    return Frame(tuple(grid), legend, hud, message, axes)
+    return tuple(legend)
 
 
-def render(frame: Frame) -> str:
+def legend_line(legend: Sequence[tuple[str, str]]) -> str:
+    """``Legend: g meaning, ...``; remembered per legend (a game shows few distinct ones)."""
+    try:
+        return _legend_line(legend)
+    except TypeError:   # a legend built of lists by hand
+        return _legend_line.__wrapped__(legend)
+
+
+@lru_cache(maxsize=4096)
+def _legend_line(legend: tuple[tuple[str, str], ...]) -> str:
+    return "Legend: " + ", ".join([f"{g} {m}" for g, m in legend])
+
+
+@lru_cache(maxsize=256)
+def _axes(height: int, width: int) -> tuple[str, tuple[str, ...]]:
+    """The column-letter line and the row-number prefixes of a ``height`` x ``width`` grid."""
+    digits = len(str(height))
+    return (" " * (digits + 1) + "".join(chr(65 + c) for c in range(width)),
+            tuple(f"{r + 1:>{digits}} " for r in range(height)))
+
+
+def _render_around(frame: Frame, legend_text: str) -> str:
+    """``render`` for a board with text above or beside it (a nonogram's clues)."""
     lines = [frame.hud]
     if frame.axes:
-        width = len(str(len(frame.grid)))
-        lines.extend(" " * (width + 1) + line for line in frame.above)
-        lines.append(" " * (width + 1) + "".join(chr(65 + c) for c in range(len(frame.grid[0]))))
-        rows = [f"{r + 1:>{width}} {row}" for r, row in enumerate(frame.grid)]
+        header, labels = _axes(len(frame.grid), len(frame.grid[0]))
+        pad = " " * (len(labels[0]) if labels else 0)
+        lines.extend(pad + line for line in frame.above)
+        lines.append(header)
+        rows = [label + row for label, row in zip(labels, frame.grid)]
     else:
         lines.extend(frame.above)
-        rows = frame.grid
+        rows = list(frame.grid)
     if frame.beside:
         rows = [f"{row} {note}" if note else row for row, note in zip(rows, frame.beside)]
     lines.extend(rows)
-    lines.append("Legend: " + ", ".join(f"{g} {m}" for g, m in frame.legend))
+    lines.append(legend_text)
+    if frame.message:
+        lines.append(frame.message)
+    return "\n".join(lines)
+
+
+def render(frame: Frame, legend_text: str | None = None) -> str:
+    """The observation text of ``frame``; ``legend_text`` is ``legend_line(frame.legend)`` when the
+    caller already has it."""
+    if legend_text is None:
+        legend_text = legend_line(frame.legend)
+    if frame.above or frame.beside:
+        return _render_around(frame, legend_text)
+    if frame.axes:
+        header, labels = _axes(len(frame.grid), len(frame.grid[0]))
+        lines = [frame.hud, header, *map(str.__add__, labels, frame.grid), legend_text]
+    else:
+        lines = [frame.hud, *frame.grid, legend_text]
     if frame.message:
         lines.append(frame.message)
     return "\n".join(lines)

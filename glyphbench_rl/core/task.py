@@ -29,11 +29,12 @@ import gymnasium as gym
 import numpy as np
 
 from .actions import ActionSet
-from .frame import Frame, build_frame
+from .frame import Frame, legend_line, legend_of, new_frame, render, vocab_entries
 from .params import ParamError, check_params
 from .seeding import MAX_SEED, check_seed, derive
 
 STANDARD_TURN_CAP = 512
+_LEGEND_MEMO = 512   # grids whose legend a task remembers
 _RETURN_EPS = 1e-9
 
 OBSERVATION_CONVENTIONS = (
@@ -92,6 +93,15 @@ class GlyphTask(gym.Env[str, int]):
         self._seedseq: np.random.SeedSequence | None = None
         self._streams: dict[tuple, np.random.Generator] = {}
         self._started = False
+        # the last frame's grid, vocabulary, legend and legend line: the next frame's first guess;
+        # and the legends of recent grids (their text) under that vocabulary
+        self._legends: dict[str, tuple[tuple[tuple[str, str], ...], str]] = {}
+        self._hint_holds = True
+        self._vocab_entries: tuple[tuple[str, str], ...] = ()
+        self._legend_grid: tuple[str, ...] = ()
+        self._legend_vocab: Mapping[str, str] | None = None
+        self._legend: tuple[tuple[str, str], ...] = ()
+        self._legend_text = legend_line(())
         self._reset_counters()
 
     # -- hooks for games -------------------------------------------------------------------------
@@ -104,7 +114,9 @@ class GlyphTask(gym.Env[str, int]):
         return self.ACTIONS
 
     def vocab(self) -> Mapping[str, str]:
-        """Glyph -> meaning for every glyph this instance can draw, in legend order."""
+        """Glyph -> meaning for every glyph this instance can draw, in legend order. Return the
+        same mapping while it holds (the legend of the last frame is reused while the grid
+        shows the same glyphs) and a new one to change it, never the old one changed in place."""
         return self.glyphs
 
     def prompt_fields(self) -> dict[str, Any]:
@@ -182,10 +194,11 @@ class GlyphTask(gym.Env[str, int]):
         self._setup(rng)
         self._started = True
         self._frame = self._build_frame()
-        return self._frame.render(), self._info(forfeit=False) | {"seed": self.seed_value}
+        return self._observation(), self._info(forfeit=False) | {"seed": self.seed_value}
 
     def step(self, action: int | str) -> tuple[str, float, bool, bool, dict]:
-        self._check_running()
+        if self._terminated or self._truncated or not self._started:
+            self._check_running()
         index = self.actions.index(action)
         self.turn += 1
         self._step_reward = 0.0
@@ -277,12 +290,40 @@ class GlyphTask(gym.Env[str, int]):
         info = self._info(forfeit=forfeit)
         if forfeit:
             info["forfeit_reason"] = reason
-        return self._frame.render(), float(reward), self._terminated, self._truncated, info
+        return self._observation(), float(reward), self._terminated, self._truncated, info
 
     def _build_frame(self) -> Frame:
         hud = self._hud()
         hud = f"Step {self.turn}/{self.max_turns} | {hud}" if hud else f"Step {self.turn}/{self.max_turns}"
-        return build_frame(self._grid(), self.vocab(), hud, " ".join(self._messages), self.axes)
+        grid = tuple(self._grid())
+        vocab = self.vocab()
+        if vocab is not self._legend_vocab:
+            self._legends = {}
+            self._vocab_entries = vocab_entries(vocab)
+            legend = legend_of("".join(grid), self._vocab_entries)
+            self._legend_vocab, self._legend, self._legend_text = vocab, legend, legend_line(legend)
+        elif grid != self._legend_grid:   # (an unchanged grid, a bump or a no-op, keeps all)
+            # a grid seen before (boards repeat: a player walking a maze) has its legend
+            # remembered; else the last legend is tried first while that keeps paying off
+            text = "".join(grid)
+            seen = self._legends.get(text)
+            if seen is None:
+                legend = legend_of(text, self._vocab_entries, self._legend if self._hint_holds else ())
+                self._hint_holds = legend == self._legend
+                if self._hint_holds:
+                    legend = self._legend
+                seen = (legend, self._legend_text if self._hint_holds else legend_line(legend))
+                if len(self._legends) >= _LEGEND_MEMO:
+                    self._legends.clear()
+                self._legends[text] = seen
+            self._legend, self._legend_text = seen
+        self._legend_grid = grid
+        return new_frame(grid, self._legend, hud, " ".join(self._messages), self.axes)
+
+    def _observation(self) -> str:
+        """The current frame's text (its legend line kept from the frame before when unchanged)."""
+        frame = self._frame
+        return render(frame, self._legend_text if frame.legend is self._legend else None)
 
     def _info(self, *, forfeit: bool) -> dict[str, Any]:
         return {"frame": self._frame, "turn": self.turn, "return": self.episode_return,

@@ -13,8 +13,9 @@ import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
 from ...core.params import param
-from ..common.grid import DELTAS, Board, bfs_search, interior_cells, walled_room
+from ..common.grid import DELTAS, Board, bfs_search, interior_cells, random_room
 from ..common.palette import FLOOR, GOAL, WALL
+from ..common.view import stamped
 
 BALL, SPIKES = "●", "▲"
 # Gravity directions as DELTAS indices, in clockwise order as seen on screen: down, left, up, right.
@@ -85,10 +86,8 @@ class GravityMaze(GlyphTask):
         n = p.size
         interior = interior_cells(n)
         for _ in range(_TRIES):
-            picks = rng.choice(len(interior), size=p.walls + p.spikes + 1, replace=False).tolist()
-            board = walled_room(n, WALL, FLOOR, {interior[i] for i in picks[:p.walls]})
-            spikes = {interior[i] for i in picks[p.walls:-1]}
-            goal = interior[picks[-1]]
+            board, picks = random_room(n, p.walls, p.spikes + 1, rng, WALL, FLOOR)
+            spikes, goal = set(picks[:-1]), picks[-1]
             # the ball starts at rest: on a free cell with a wall below it
             rests = [cell for cell in interior if board[cell] == FLOOR and cell not in spikes
                      and cell != goal and board[cell[0] + 1, cell[1]] == WALL]
@@ -121,10 +120,7 @@ class GravityMaze(GlyphTask):
             self.finish(won=False)
 
     def _grid(self) -> list[str]:
-        rows = self._still.copy()
-        r, c = self.ball
-        rows[r] = rows[r][:c] + BALL + rows[r][c + 1:]
-        return rows
+        return stamped(self._still, *self.ball, BALL)
 
     def _hud(self) -> str:
         return f"Gravity {DIRECTION_NAMES[self.gravity]}"

@@ -15,9 +15,10 @@ import numpy as np
 
 from ...core import ActionSet, GlyphTask, register_variants
 from ...core.params import param
-from ..common.grid import DELTAS, MOVES, bfs_distances, bfs_search, interior_cells, walled_room
+from ..common.grid import DELTAS, MOVES, bfs_distances, bfs_search, interior_cells, random_room
 from ..common.palette import FLOOR, GOAL, PLAYER, WALL
 from ..common.sight import view_cone
+from ..common.view import stamped
 
 ARROWS = "▲▼◀▶"     # a guard facing up, down, left, right (DELTAS order)
 SENTRIES = "△▽◁▷"   # a sentry, likewise
@@ -92,10 +93,8 @@ class GuardEvasion(GlyphTask):
     def _layout(self, rng: np.random.Generator):
         p = self.params
         n = p.size
-        interior = interior_cells(n)
-        pillars = {interior[i] for i in rng.choice(len(interior), size=p.pillars, replace=False).tolist()}
-        board = walled_room(n, WALL, FLOOR, pillars)
-        floor = [cell for cell in interior if cell not in pillars]
+        board, _ = random_room(n, p.pillars, 0, rng, WALL, FLOOR)
+        floor = [cell for cell in interior_cells(n) if board[cell] == FLOOR]
         start = floor[int(rng.integers(len(floor)))]
         walk = bfs_distances(start, lambda r, c: board.rows[r][c] != WALL)
         far = sorted(cell for cell, d in walk.items() if d >= n)
@@ -222,10 +221,7 @@ class GuardEvasion(GlyphTask):
         return ["".join(row) for row in rows]
 
     def _grid(self) -> list[str]:
-        rows = self._scenes[self.phase].copy()
-        r, c = self.pos
-        rows[r] = rows[r][:c] + PLAYER + rows[r][c + 1:]
-        return rows
+        return stamped(self._scenes[self.phase], *self.pos, PLAYER)
 
 
 register_variants(GuardEvasion, "Classics", {

@@ -14,8 +14,9 @@ import numpy as np
 
 from ...core import GlyphTask, register_variants
 from ...core.params import param
-from ..common.grid import DELTAS, MOVES, Board, bfs_layers, interior_cells, move_actions, slide, walled_room
+from ..common.grid import DELTAS, MOVES, Board, bfs_layers, move_actions, random_room, slide
 from ..common.palette import FLOOR, GOAL, PLAYER, WALL
+from ..common.view import overlay, stamped
 
 Cell = tuple[int, int]
 _TRIES = 500   # rock layouts tried per reset before the parameters are declared impossible
@@ -77,18 +78,16 @@ class IceSliding(GlyphTask):
 
     def _setup(self, rng: np.random.Generator) -> None:
         p = self.params
-        n = p.size
-        interior = interior_cells(n)
         for _ in range(_TRIES):
-            picks = rng.choice(len(interior), size=p.rocks + 1, replace=False).tolist()
-            board = walled_room(n, WALL, FLOOR, {interior[i] for i in picks[:-1]})
-            exit_ = interior[picks[-1]]
+            board, (exit_,) = random_room(p.size, p.rocks, 1, rng, WALL, FLOOR)
             dist = moves_to_exit(board, exit_)
             starts = sorted(cell for cell, d in dist.items() if d >= p.min_moves)
             if starts:
                 self.board, self.exit = board, exit_
                 self.pos = starts[int(rng.integers(len(starts)))]
                 self.optimal = dist[self.pos]   # fewest moves, for tests and baselines
+                self._still = board.lines()    # what never moves, drawn once
+                overlay(self._still, *exit_, GOAL)
                 return
         raise RuntimeError(f"{self.task_id}: no level needing {p.min_moves} moves found in {_TRIES} "
                            "layouts; lower min_moves or change rocks")
@@ -107,11 +106,7 @@ class IceSliding(GlyphTask):
             self.finish(won=True)
 
     def _grid(self) -> list[str]:
-        rows = [row.copy() if r in (self.pos[0], self.exit[0]) else row
-                for r, row in enumerate(self.board.rows)]
-        rows[self.exit[0]][self.exit[1]] = GOAL
-        rows[self.pos[0]][self.pos[1]] = PLAYER
-        return ["".join(row) for row in rows]
+        return stamped(self._still, *self.pos, PLAYER)
 
 
 register_variants(IceSliding, "Classics", {

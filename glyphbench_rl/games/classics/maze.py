@@ -10,6 +10,7 @@ from ...core import GlyphTask, register_variants
 from ...core.params import param
 from ..common.grid import DELTAS, Board, bfs_distances, move_actions
 from ..common.palette import FLOOR, GOAL, PLAYER, WALL
+from ..common.view import overlay, stamped
 
 
 @dataclass(frozen=True)
@@ -62,6 +63,11 @@ class Maze(GlyphTask):
         ends = sorted(cell for cell, d in dist.items() if d == far)
         self.exit = ends[int(rng.integers(len(ends)))]
         self.optimal = far   # shortest path length, for tests and baselines
+        self._still = self.board.lines()   # the maze never changes: drawn once
+        overlay(self._still, *self.exit, GOAL)
+
+    def _grid(self) -> list[str]:
+        return stamped(self._still, *self.pos, PLAYER)
 
     def _act(self, action: int) -> None:
         dr, dc = DELTAS[action]
@@ -74,21 +80,6 @@ class Maze(GlyphTask):
             self.reward(self.time_bonus(self.params.time_weight))
             self.say("Reached the exit.")
             self.finish(won=True)
-
-    def _grid(self) -> list[str]:
-        rows = self.board.rows
-        er, ec = self.exit
-        pr, pc = self.pos
-        out = []
-        for r, row in enumerate(rows):
-            if r == er or r == pr:
-                row = row.copy()
-                if r == er:
-                    row[ec] = GOAL
-                if r == pr:
-                    row[pc] = PLAYER
-            out.append("".join(row))
-        return out
 
 
 register_variants(Maze, "Classics", {

@@ -90,13 +90,19 @@ class MemoryMatch(GlyphTask):
         self._draw(turned + [action])
 
     def _draw(self, cells=None) -> None:
-        """Redraw the rows holding ``cells`` (every row when None)."""
+        """Redraw ``cells`` and the rows holding them (every cell when None)."""
         cols, faces, up = self.params.cols, self.faces, self.up
-        rows = range(self.params.rows) if cells is None else {i // cols for i in cells}
         if cells is None:
+            self._glyphs = [[DOWN] * cols for _ in range(self.params.rows)]   # each row's glyphs
             self._lines = [""] * self.params.rows
+            cells = range(len(faces))
+        rows = set()
+        for i in cells:
+            r = i // cols
+            self._glyphs[r][i - r * cols] = FACES[faces[i]] if up[i] else DOWN
+            rows.add(r)
         for r in rows:
-            self._lines[r] = "".join(FACES[faces[i]] if up[i] else DOWN for i in range(r * cols, r * cols + cols))
+            self._lines[r] = "".join(self._glyphs[r])
 
     def _grid(self) -> list[str]:
         return self._lines

@@ -96,16 +96,29 @@ class Snake(GlyphTask):
 
     def _grid(self) -> list[str]:
         size = self.params.size
-        rows = [[FLOOR] * size for _ in range(size)]
+        blank = FLOOR * size
+        rows = [blank] * size
+        drawn: dict[int, list[str]] = {}   # the rows with something on them, as lists of glyphs
         for r, c in self.body:
-            rows[r][c] = "●"
+            row = drawn.get(r)
+            if row is None:
+                row = drawn[r] = list(blank)
+            row[c] = "●"
         if self.food is not None:
-            fr, fc = self.food
-            rows[fr][fc] = "*"
+            r, c = self.food
+            row = drawn.get(r)
+            if row is None:
+                row = drawn[r] = list(blank)
+            row[c] = "*"
         hr, hc = self.body[0]
         if 0 <= hr < size and 0 <= hc < size:
-            rows[hr][hc] = HEADS[self.heading]
-        return ["".join(row) for row in rows]
+            row = drawn.get(hr)
+            if row is None:
+                row = drawn[hr] = list(blank)
+            row[hc] = HEADS[self.heading]
+        for r, row in drawn.items():
+            rows[r] = "".join(row)
+        return rows
 
     def _hud(self) -> str:
         return f"Food {self.eaten}/{self.params.target} | Length {len(self.body)}"

@@ -33,7 +33,9 @@ def flood(start: int, free: int, width: int) -> int:
     """The cells (bits) of ``free`` 4-connected to ``start`` (which must be in ``free``)."""
     f = start
     while True:
-        g = (f | f << 1 | f >> 1 | f << width | f >> width) & free
+        # a step sideways then a step up or down: a region fills in about half the rounds
+        g = (f | f << 1 | f >> 1) & free
+        g = (g | g << width | g >> width) & free
         if g == f:
             return f
         f = g

@@ -6,6 +6,8 @@ from __future__ import annotations
 from collections import deque
 from typing import Callable, Hashable, Iterable, TypeVar
 
+import numpy as np
+
 from ...core.actions import ActionSet
 
 Cell = tuple[int, int]
@@ -67,6 +69,17 @@ def walled_room(n: int, wall: str, floor: str, blocked: set[tuple[int, int]] = f
         if cell not in blocked:
             board[cell] = floor
     return board
+
+
+def random_room(n: int, blocks: int, picks: int, rng: np.random.Generator, wall: str,
+                floor: str) -> tuple[Board, list[Cell]]:
+    """A walled n x n room with ``blocks`` random interior cells walled up, and ``picks`` more
+    random interior cells (a start, an exit, hazards): all distinct, drawn in one
+    ``rng.choice`` without replacement."""
+    interior = interior_cells(n)
+    drawn = rng.choice(len(interior), size=blocks + picks, replace=False).tolist()
+    board = walled_room(n, wall, floor, {interior[i] for i in drawn[:blocks]})
+    return board, [interior[i] for i in drawn[blocks:]]
 
 
 def bfs_distances(start: tuple[int, int], passable: Callable[[int, int], bool]) -> dict[tuple[int, int], int]:

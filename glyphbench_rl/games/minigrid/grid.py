@@ -54,12 +54,12 @@ class Grid:
 
     def get(self, x: int, y: int) -> WorldObj | None:
         """The object at (x, y), None for empty floor; beyond the edge everything is wall."""
-        return self.cells[self.index(x, y)]
+        return self.cells[(y + VIEW_PAD) * self.stride + x + VIEW_PAD]   # self.index, inlined
 
     def set(self, x: int, y: int, obj: WorldObj | None) -> None:
-        if not self.inside(x, y):
+        if not (0 <= x < self.width and 0 <= y < self.height):
             raise IndexError(f"cell ({x}, {y}) is outside the {self.width}x{self.height} grid")
-        i = self.index(x, y)
+        i = (y + VIEW_PAD) * self.stride + x + VIEW_PAD
         old = self.cells[i]
         self.cells[i] = obj
         self.glyphs[i] = FLOOR if obj is None else obj.glyph

@@ -1,0 +1,87 @@
+"""The shortcuts of the step path give what the plain computations give: numpy's integers,
+a legend computed from scratch every frame, the Frame's own constructor."""
+
+import dataclasses
+import random
+
+import numpy as np
+import pytest
+
+from glyphbench_rl.core import ActionSet, Frame, GlyphTask, seeding
+from glyphbench_rl.core.frame import new_frame, render
+
+
+def test_int_sampler_is_numpy_integers_call_for_call():
+    pick = random.Random(7)
+    for seed in range(300):
+        ours, theirs = (np.random.Generator(np.random.PCG64(seed)) for _ in range(2))
+        draw = seeding.int_sampler(ours)
+        for _ in range(40):
+            low = pick.randrange(-40, 40)
+            span = pick.choice([1, 2, 3, 7, 100, pick.randrange(1, 2**32), 2**31 + pick.randrange(2**31),
+                                2**32, 2**40])
+            if pick.random() < 0.2:           # other draws in between share the buffered half-word
+                assert ours.random() == theirs.random()
+            if pick.random() < 0.1:
+                low, high = np.int64(low), np.int64(low + span)
+            else:
+                high = low + span
+            got = draw(low, high)
+            assert got == int(theirs.integers(low, high)) and type(got) is int
+        assert ours.bit_generator.state == theirs.bit_generator.state
+    with pytest.raises(ValueError, match="low >= high"):
+        draw(3, 3)
+
+
+class Scripted(GlyphTask):
+    """Shows a scripted grid each turn, from a vocabulary that can change mid-episode."""
+    title = "scripted"
+    ACTIONS = ActionSet([(str(i), "show that grid") for i in range(6)])
+    GRIDS = (["ab", "ba"], ["ab", "bc"], ["aa", "aa"], ["ab", "ba"], ["cc", "ac"], ["ab", "bc"])
+    default_max_turns = 200
+
+    def _init(self):
+        self.words = {"c": "cee", "a": "ay", "b": "bee", "xy": "never on a grid"}
+
+    def vocab(self):
+        return self.words
+
+    def _setup(self, rng):
+        self.shown = 0
+
+    def _act(self, action):
+        self.shown = action
+        if action == 5:
+            self.words = {"a": "AY", "b": "BEE", "c": "CEE"}   # a new vocabulary object
+
+    def _grid(self):
+        return self.GRIDS[self.shown]
+
+
+def test_legend_shortcuts_match_a_plain_legend():
+    task = Scripted()
+    task.reset(seed=0)
+    for action in [0, 1, 1, 2, 3, 0, 4, 5, 1, 0, 2, 5, 3, 4, 4, 1] * 3:
+        obs, *_ , info = task.step(action)
+        frame, grid = info["frame"], task.GRIDS[action]
+        present = set("".join(grid))
+        assert frame.legend == tuple((g, m) for g, m in task.words.items() if g in present)
+        assert obs == render(Frame(tuple(grid), frame.legend, frame.hud, frame.message))
+
+
+def test_a_glyph_without_legend_entry_still_fails_after_shortcuts():
+    task = Scripted()
+    task.reset(seed=0)
+    task.step(0)
+    task.GRIDS = (["ab", "bz"],) * 6
+    with pytest.raises(RuntimeError, match="'z' are on the grid but have no legend entry"):
+        task.step(0)
+
+
+def test_new_frame_is_the_frozen_dataclass():
+    args = (("ab",), (("a", "x"), ("b", "y")), "Step 1/2", "hi", True)
+    fast, plain = new_frame(*args), Frame(*args)
+    assert fast == plain and hash(fast) == hash(plain) and repr(fast) == repr(plain)
+    assert dataclasses.asdict(fast) == dataclasses.asdict(plain)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        fast.hud = "x"
