@@ -15,6 +15,7 @@ numbers to its left (``axes=True``); those labels are not part of ``Frame.grid``
 
 from __future__ import annotations
 
+import dataclasses
 import unicodedata
 from dataclasses import dataclass
 from functools import lru_cache
@@ -40,19 +41,26 @@ def new_frame(grid: tuple[str, ...], legend: tuple[tuple[str, str], ...], hud: s
               axes: bool) -> Frame:
     """``Frame(grid, legend, hud, message, axes)`` without the frozen dataclass's ``__init__``
     (which sets each field through ``object.__setattr__``): a third of the cost, for the one
-    Frame every step makes. The fields are set through their slots, so the object is the same."""
+    Frame every step makes. The fields are set through their slots, so the object is the same;
+    any further field takes its default."""
     frame = _new(Frame)
     _set_grid(frame, grid)
     _set_legend(frame, legend)
     _set_hud(frame, hud)
     _set_message(frame, message)
     _set_axes(frame, axes)
+    for set_field, default in _OTHER_FIELDS:
+        set_field(frame, default)
     return frame
 
 
 _new = object.__new__
-_set_grid, _set_legend, _set_hud, _set_message, _set_axes = (
-    Frame.__dict__[f].__set__ for f in ("grid", "legend", "hud", "message", "axes"))
+_NAMED = ("grid", "legend", "hud", "message", "axes")
+_set_grid, _set_legend, _set_hud, _set_message, _set_axes = (Frame.__dict__[f].__set__ for f in _NAMED)
+_OTHER_FIELDS = tuple((Frame.__dict__[f.name].__set__, f.default)
+                      for f in dataclasses.fields(Frame) if f.name not in _NAMED)
+assert all(default is not dataclasses.MISSING for _, default in _OTHER_FIELDS), \
+    "new_frame gives every Frame field past the first five a plain default"
 
 
 def build_frame(grid: Sequence[str], vocab: Mapping[str, str], hud: str, message: str = "",

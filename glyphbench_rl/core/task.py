@@ -193,7 +193,7 @@ class GlyphTask(gym.Env[str, int]):
         self._setup(rng)
         self._started = True
         self._frame = self._build_frame()
-        return self._observation(), self._info(forfeit=False)
+        return self._frame.render(), self._info(forfeit=False)
 
     def step(self, action: int | str) -> tuple[str, float, bool, bool, dict]:
         if self._terminated or self._truncated or not self._started:
