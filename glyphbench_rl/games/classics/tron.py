@@ -29,15 +29,16 @@ class TronParams:
     strength: float = param(0.9, 0, 1)
 
 
-def flood(start: int, free: int, width: int) -> int:
-    """The cells (bits) of ``free`` 4-connected to ``start`` (which must be in ``free``)."""
+def flood(start: int, free: int, width: int, until: int = 0) -> int:
+    """The cells (bits) of ``free`` 4-connected to ``start`` (which must be in ``free``); with
+    ``until``, possibly only part of them once that part holds every cell of ``until``."""
     f = start
     while True:
         # a step sideways then a step up or down: a region fills in about half the rounds
         g = (f | f << 1 | f >> 1) & free
         g = (g | g << width | g >> width) & free
-        if g == f:
-            return f
+        if g == f or until and g & until == until:
+            return g
         f = g
 
 
@@ -96,22 +97,33 @@ class Tron(VersusTask):
 
     def opponent_safe(self) -> list[int]:
         """The directions in which the opponent does not crash at once (ignoring your move)."""
-        o, free = self.index(*self.pos[1]), ~self.blocked
-        return [d for d, s in enumerate(self.steps) if free >> (o + s) & 1]
+        o, blocked = self.index(*self.pos[1]), self.blocked
+        return [d for d, s in enumerate(self.steps) if not blocked >> (o + s) & 1]
 
     def opponent_best(self, safe: list[int]) -> list[int]:
         """The safe directions into the largest open region, keeping out of reach of your head
         when regions tie (flood fill)."""
         if len(safe) < 2:
             return safe
-        o, you, free = self.index(*self.pos[1]), self.index(*self.pos[0]), ~self.blocked
-        best, best_score, filled, area = [], -1, 0, 0
+        o, you, free, width = self.index(*self.pos[1]), self.index(*self.pos[0]), ~self.blocked, self.W
+        targets, near, every = [], [], 0
         for d in safe:
             target = o + self.steps[d]
+            targets.append(target)
+            near.append(abs(target - you) in (1, width))
+            every |= 1 << target
+        filled = flood(1 << targets[0], free, width, until=every)
+        if filled & every == every:
+            # every move leads into one region (the fill stopped once it held them all): the
+            # sizes tie, so keeping out of reach of your head decides
+            least = min(near)
+            return [d for d, n in zip(safe, near) if n == least]
+        best, best_score, area = [], -1, filled.bit_count()   # (that fill ran to the end)
+        for d, target, n in zip(safe, targets, near):
             if not filled >> target & 1:   # moves into one region share its size: fill it once
                 filled = flood(1 << target, free, self.W)
                 area = filled.bit_count()
-            score = 2 * area - (abs(target - you) in (1, self.W))
+            score = 2 * area - n
             if score > best_score:
                 best, best_score = [d], score
             elif score == best_score:
@@ -149,7 +161,7 @@ class Tron(VersusTask):
         return self.outcome
 
     def _grid(self) -> list[str]:
-        return ["".join(row) for row in self.cells]
+        return list(map("".join, self.cells))
 
 
 register_variants(Tron, "Classics", {
