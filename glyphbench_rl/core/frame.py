@@ -110,16 +110,14 @@ def legend_of(text: str, entries: Sequence[tuple[str, str]],
     return tuple(legend)
 
 
-def legend_line(legend: Sequence[tuple[str, str]]) -> str:
-    """``Legend: g meaning, ...``; remembered per legend (a game shows few distinct ones)."""
-    try:
-        return _legend_line(legend)
-    except TypeError:   # a legend built of lists by hand
-        return _legend_line.__wrapped__(legend)
-
-
 @lru_cache(maxsize=4096)
-def _legend_line(legend: tuple[tuple[str, str], ...]) -> str:
+def legend_line(legend: tuple[tuple[str, str], ...]) -> str:
+    """``Legend: g meaning, ...`` of a legend (a tuple of pairs), remembered per legend (a game
+    shows few distinct ones)."""
+    return _legend_text(legend)
+
+
+def _legend_text(legend: Sequence[Sequence[str]]) -> str:
     return "Legend: " + ", ".join([f"{g} {m}" for g, m in legend])
 
 
@@ -135,7 +133,10 @@ def render(frame: Frame, legend_text: str | None = None) -> str:
     """The observation text of ``frame``; ``legend_text`` is ``legend_line(frame.legend)`` when the
     caller already has it."""
     if legend_text is None:
-        legend_text = legend_line(frame.legend)
+        try:
+            legend_text = legend_line(frame.legend)
+        except TypeError:   # a legend built of lists by hand
+            legend_text = _legend_text(frame.legend)
     if frame.axes:
         header, labels = _axes(len(frame.grid), len(frame.grid[0]))
         lines = [frame.hud, header, *map(str.__add__, labels, frame.grid), legend_text]
