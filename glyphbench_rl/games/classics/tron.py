@@ -142,16 +142,17 @@ class Tron(VersusTask):
         for (r, c), d in zip(self.pos, (self.planned, heading)):
             dr, dc = DELTAS[d]
             targets.append((r + dr, c + dc))
-        crashed = [self.blocked >> self.index(*t) & 1 or targets[0] == targets[1] for t in targets]
+        width, blocked, cells, same = self.W, self.blocked, self.cells, targets[0] == targets[1]
+        crashed = [blocked >> (r + 1) * width + c + 1 & 1 or same for r, c in targets]   # (self.index)
         for i, (glyph, trail) in enumerate(((PLAYER, TRAIL), (RIVAL, RIVAL_TRAIL))):
             r, c = self.pos[i]
             if crashed[i]:
-                self.cells[r][c] = CRASH
+                cells[r][c] = CRASH
                 continue
-            self.cells[r][c] = trail
+            cells[r][c] = trail
             r, c = self.pos[i] = targets[i]
-            self.cells[r][c] = glyph
-            self.blocked |= 1 << self.index(r, c)
+            cells[r][c] = glyph
+            self.blocked |= 1 << (r + 1) * width + c + 1
         if crashed[0] or crashed[1]:
             self.say("Both bikes crashed." if crashed[0] and crashed[1] else
                      "You crashed." if crashed[0] else "The opponent crashed.")
