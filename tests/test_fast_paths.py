@@ -9,6 +9,7 @@ import pytest
 
 from glyphbench_rl.core import ActionSet, Frame, GlyphTask, seeding
 from glyphbench_rl.core.frame import new_frame, render
+from glyphbench_rl.core.task import _LEGEND_MEMO
 
 
 def test_int_sampler_is_numpy_integers_call_for_call():
@@ -85,3 +86,30 @@ def test_new_frame_is_the_frozen_dataclass():
     assert dataclasses.asdict(fast) == dataclasses.asdict(plain)
     with pytest.raises(dataclasses.FrozenInstanceError):
         fast.hud = "x"
+
+
+class Counter(GlyphTask):
+    """Never shows the same grid twice: the remembered legends never pay, so they are dropped."""
+    title = "counter"
+    ACTIONS = ActionSet([("TICK", "count on")])
+    glyphs = {str(d): f"digit {d}" for d in range(10)}
+    default_max_turns = 2000
+
+    def _setup(self, rng):
+        self.n = 0
+
+    def _act(self, action):
+        self.n += 1
+
+    def _grid(self):
+        return [f"{self.n:04d}"]
+
+
+def test_legends_stay_right_when_the_memo_gives_up():
+    task = Counter(tier="extended")
+    task.reset(seed=0)
+    for _ in range(2 * _LEGEND_MEMO + 10):
+        _, _, _, _, info = task.step(0)
+        digits = sorted(set(f"{task.n:04d}"), key=int)
+        assert [g for g, _ in info["frame"].legend] == digits
+    assert task._legends is None

@@ -17,6 +17,7 @@ character per column) and ``beside`` (text right of each row), also outside ``Fr
 
 from __future__ import annotations
 
+import dataclasses
 import unicodedata
 from dataclasses import dataclass
 from functools import lru_cache
@@ -44,21 +45,26 @@ def new_frame(grid: tuple[str, ...], legend: tuple[tuple[str, str], ...], hud: s
               axes: bool) -> Frame:
     """``Frame(grid, legend, hud, message, axes)`` without the frozen dataclass's ``__init__``
     (which sets each field through ``object.__setattr__``): a third of the cost, for the one
-    Frame every step makes. The fields are set through their slots, so the object is the same."""
+    Frame every step makes. The fields are set through their slots, so the object is the same;
+    any further field takes its default."""
     frame = _new(Frame)
     _set_grid(frame, grid)
     _set_legend(frame, legend)
     _set_hud(frame, hud)
     _set_message(frame, message)
     _set_axes(frame, axes)
-    _set_above(frame, ())
-    _set_beside(frame, ())
+    for set_field, default in _OTHER_FIELDS:
+        set_field(frame, default)
     return frame
 
 
 _new = object.__new__
-_set_grid, _set_legend, _set_hud, _set_message, _set_axes, _set_above, _set_beside = (
-    Frame.__dict__[f].__set__ for f in ("grid", "legend", "hud", "message", "axes", "above", "beside"))
+_NAMED = ("grid", "legend", "hud", "message", "axes")
+_set_grid, _set_legend, _set_hud, _set_message, _set_axes = (Frame.__dict__[f].__set__ for f in _NAMED)
+_OTHER_FIELDS = tuple((Frame.__dict__[f.name].__set__, f.default)
+                      for f in dataclasses.fields(Frame) if f.name not in _NAMED)
+assert all(default is not dataclasses.MISSING for _, default in _OTHER_FIELDS), \
+    "new_frame gives every Frame field past the first five a plain default"
 
 
 def build_frame(grid: Sequence[str], vocab: Mapping[str, str], hud: str, message: str = "",
@@ -108,16 +114,14 @@ def legend_of(text: str, entries: Sequence[tuple[str, str]],
     return tuple(legend)
 
 
-def legend_line(legend: Sequence[tuple[str, str]]) -> str:
-    """``Legend: g meaning, ...``; remembered per legend (a game shows few distinct ones)."""
-    try:
-        return _legend_line(legend)
-    except TypeError:   # a legend built of lists by hand
-        return _legend_line.__wrapped__(legend)
-
-
 @lru_cache(maxsize=4096)
-def _legend_line(legend: tuple[tuple[str, str], ...]) -> str:
+def legend_line(legend: tuple[tuple[str, str], ...]) -> str:
+    """``Legend: g meaning, ...`` of a legend (a tuple of pairs), remembered per legend (a game
+    shows few distinct ones)."""
+    return _legend_text(legend)
+
+
+def _legend_text(legend: Sequence[Sequence[str]]) -> str:
     return "Legend: " + ", ".join([f"{g} {m}" for g, m in legend])
 
 
@@ -154,7 +158,10 @@ def render(frame: Frame, legend_text: str | None = None) -> str:
     """The observation text of ``frame``; ``legend_text`` is ``legend_line(frame.legend)`` when the
     caller already has it."""
     if legend_text is None:
-        legend_text = legend_line(frame.legend)
+        try:
+            legend_text = legend_line(frame.legend)
+        except TypeError:   # a legend built of lists by hand
+            legend_text = _legend_text(frame.legend)
     if frame.above or frame.beside:
         return _render_around(frame, legend_text)
     if frame.axes:

@@ -95,7 +95,8 @@ class GlyphTask(gym.Env[str, int]):
         self._started = False
         # the last frame's grid, vocabulary, legend and legend line: the next frame's first guess;
         # and the legends of recent grids (their text) under that vocabulary
-        self._legends: dict[str, tuple[tuple[tuple[str, str], ...], str]] = {}
+        self._legends: dict[str, tuple[tuple[tuple[str, str], ...], str]] | None = {}
+        self._legend_reused = False   # a remembered legend served since the memo last filled
         self._hint_holds = True
         self._vocab_entries: tuple[tuple[str, str], ...] = ()
         self._legend_grid: tuple[str, ...] = ()
@@ -194,7 +195,7 @@ class GlyphTask(gym.Env[str, int]):
         self._setup(rng)
         self._started = True
         self._frame = self._build_frame()
-        return self._observation(), self._info(forfeit=False) | {"seed": self.seed_value}
+        return self._frame.render(), self._info(forfeit=False) | {"seed": self.seed_value}
 
     def step(self, action: int | str) -> tuple[str, float, bool, bool, dict]:
         if self._terminated or self._truncated or not self._started:
@@ -306,16 +307,23 @@ class GlyphTask(gym.Env[str, int]):
             # a grid seen before (boards repeat: a player walking a maze) has its legend
             # remembered; else the last legend is tried first while that keeps paying off
             text = "".join(grid)
-            seen = self._legends.get(text)
+            legends = self._legends
+            seen = None if legends is None else legends.get(text)
             if seen is None:
                 legend = legend_of(text, self._vocab_entries, self._legend if self._hint_holds else ())
                 self._hint_holds = legend == self._legend
                 if self._hint_holds:
                     legend = self._legend
                 seen = (legend, self._legend_text if self._hint_holds else legend_line(legend))
-                if len(self._legends) >= _LEGEND_MEMO:
-                    self._legends.clear()
-                self._legends[text] = seen
+                if legends is not None:
+                    if len(legends) >= _LEGEND_MEMO:   # full: start again, or stop if it never paid
+                        legends.clear()
+                        if not self._legend_reused:
+                            self._legends = None
+                        self._legend_reused = False
+                    legends[text] = seen
+            else:
+                self._legend_reused = True
             self._legend, self._legend_text = seen
         self._legend_grid = grid
         return new_frame(grid, self._legend, hud, " ".join(self._messages), self.axes)

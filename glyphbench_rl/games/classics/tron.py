@@ -29,15 +29,16 @@ class TronParams:
     strength: float = param(0.9, 0, 1)
 
 
-def flood(start: int, free: int, width: int) -> int:
-    """The cells (bits) of ``free`` 4-connected to ``start`` (which must be in ``free``)."""
+def flood(start: int, free: int, width: int, until: int = 0) -> int:
+    """The cells (bits) of ``free`` 4-connected to ``start`` (which must be in ``free``); with
+    ``until``, possibly only part of them once that part holds every cell of ``until``."""
     f = start
     while True:
         # a step sideways then a step up or down: a region fills in about half the rounds
         g = (f | f << 1 | f >> 1) & free
         g = (g | g << width | g >> width) & free
-        if g == f:
-            return f
+        if g == f or until and g & until == until:
+            return g
         f = g
 
 
@@ -96,22 +97,33 @@ class Tron(VersusTask):
 
     def opponent_safe(self) -> list[int]:
         """The directions in which the opponent does not crash at once (ignoring your move)."""
-        o, free = self.index(*self.pos[1]), ~self.blocked
-        return [d for d, s in enumerate(self.steps) if free >> (o + s) & 1]
+        o, blocked = self.index(*self.pos[1]), self.blocked
+        return [d for d, s in enumerate(self.steps) if not blocked >> (o + s) & 1]
 
     def opponent_best(self, safe: list[int]) -> list[int]:
         """The safe directions into the largest open region, keeping out of reach of your head
         when regions tie (flood fill)."""
         if len(safe) < 2:
             return safe
-        o, you, free = self.index(*self.pos[1]), self.index(*self.pos[0]), ~self.blocked
-        best, best_score, filled, area = [], -1, 0, 0
+        o, you, free, width = self.index(*self.pos[1]), self.index(*self.pos[0]), ~self.blocked, self.W
+        targets, near, every = [], [], 0
         for d in safe:
             target = o + self.steps[d]
+            targets.append(target)
+            near.append(abs(target - you) in (1, width))
+            every |= 1 << target
+        filled = flood(1 << targets[0], free, width, until=every)
+        if filled & every == every:
+            # every move leads into one region (the fill stopped once it held them all): the
+            # sizes tie, so keeping out of reach of your head decides
+            least = min(near)
+            return [d for d, n in zip(safe, near) if n == least]
+        best, best_score, area = [], -1, filled.bit_count()   # (that fill ran to the end)
+        for d, target, n in zip(safe, targets, near):
             if not filled >> target & 1:   # moves into one region share its size: fill it once
                 filled = flood(1 << target, free, self.W)
                 area = filled.bit_count()
-            score = 2 * area - (abs(target - you) in (1, self.W))
+            score = 2 * area - n
             if score > best_score:
                 best, best_score = [d], score
             elif score == best_score:
@@ -130,16 +142,17 @@ class Tron(VersusTask):
         for (r, c), d in zip(self.pos, (self.planned, heading)):
             dr, dc = DELTAS[d]
             targets.append((r + dr, c + dc))
-        crashed = [self.blocked >> self.index(*t) & 1 or targets[0] == targets[1] for t in targets]
+        width, blocked, cells, same = self.W, self.blocked, self.cells, targets[0] == targets[1]
+        crashed = [blocked >> (r + 1) * width + c + 1 & 1 or same for r, c in targets]   # (self.index)
         for i, (glyph, trail) in enumerate(((PLAYER, TRAIL), (RIVAL, RIVAL_TRAIL))):
             r, c = self.pos[i]
             if crashed[i]:
-                self.cells[r][c] = CRASH
+                cells[r][c] = CRASH
                 continue
-            self.cells[r][c] = trail
+            cells[r][c] = trail
             r, c = self.pos[i] = targets[i]
-            self.cells[r][c] = glyph
-            self.blocked |= 1 << self.index(r, c)
+            cells[r][c] = glyph
+            self.blocked |= 1 << (r + 1) * width + c + 1
         if crashed[0] or crashed[1]:
             self.say("Both bikes crashed." if crashed[0] and crashed[1] else
                      "You crashed." if crashed[0] else "The opponent crashed.")
@@ -149,7 +162,7 @@ class Tron(VersusTask):
         return self.outcome
 
     def _grid(self) -> list[str]:
-        return ["".join(row) for row in self.cells]
+        return list(map("".join, self.cells))
 
 
 register_variants(Tron, "Classics", {
