@@ -122,11 +122,12 @@ def _legend_text(legend: Sequence[Sequence[str]]) -> str:
 
 
 @lru_cache(maxsize=256)
-def _axes(height: int, width: int) -> tuple[str, tuple[str, ...]]:
-    """The column-letter line and the row-number prefixes of a ``height`` x ``width`` grid."""
+def _axes(height: int, width: int) -> str:
+    """A ``height`` x ``width`` board with its column letters above and row numbers left, as a
+    ``%`` template taking the rows (one formatting call draws the labelled board)."""
     digits = len(str(height))
-    return (" " * (digits + 1) + "".join(chr(65 + c) for c in range(width)),
-            tuple(f"{r + 1:>{digits}} " for r in range(height)))
+    header = " " * (digits + 1) + "".join(chr(65 + c) for c in range(width))
+    return "\n".join([header, *(f"{r + 1:>{digits}} %s" for r in range(height))])
 
 
 def render(frame: Frame, legend_text: str | None = None) -> str:
@@ -138,8 +139,7 @@ def render(frame: Frame, legend_text: str | None = None) -> str:
         except TypeError:   # a legend built of lists by hand
             legend_text = _legend_text(frame.legend)
     if frame.axes:
-        header, labels = _axes(len(frame.grid), len(frame.grid[0]))
-        lines = [frame.hud, header, *map(str.__add__, labels, frame.grid), legend_text]
+        lines = [frame.hud, _axes(len(frame.grid), len(frame.grid[0])) % tuple(frame.grid), legend_text]
     else:
         lines = [frame.hud, *frame.grid, legend_text]
     if frame.message:
