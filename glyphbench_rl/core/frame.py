@@ -100,9 +100,10 @@ def legend_of(text: str, entries: Sequence[tuple[str, str]],
                 return hint
     legend = []
     counted = 0
-    for g, m in entries:
+    for entry in entries:   # (the legend holds the entries themselves: equal legends compare fast)
+        g = entry[0]
         if g in text:
-            legend.append((g, m))
+            legend.append(entry)
             counted += text.count(g)
     if counted != len(text):
         missing = "".join(sorted(set(text).difference(g for g, _ in entries)))
