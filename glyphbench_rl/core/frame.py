@@ -104,9 +104,10 @@ def legend_of(text: str, entries: Sequence[tuple[str, str]],
                 return hint
     legend = []
     counted = 0
-    for g, m in entries:
+    for entry in entries:   # (the legend holds the entries themselves: equal legends compare fast)
+        g = entry[0]
         if g in text:
-            legend.append((g, m))
+            legend.append(entry)
             counted += text.count(g)
     if counted != len(text):
         missing = "".join(sorted(set(text).difference(g for g, _ in entries)))
@@ -126,11 +127,12 @@ def _legend_text(legend: Sequence[Sequence[str]]) -> str:
 
 
 @lru_cache(maxsize=256)
-def _axes(height: int, width: int) -> tuple[str, tuple[str, ...]]:
-    """The column-letter line and the row-number prefixes of a ``height`` x ``width`` grid."""
+def _axes(height: int, width: int) -> str:
+    """A ``height`` x ``width`` board with its column letters above and row numbers left, as a
+    ``%`` template taking the rows (one formatting call draws the labelled board)."""
     digits = len(str(height))
-    return (" " * (digits + 1) + "".join(chr(65 + c) for c in range(width)),
-            tuple(f"{r + 1:>{digits}} " for r in range(height)))
+    header = " " * (digits + 1) + "".join(chr(65 + c) for c in range(width))
+    return "\n".join([header, *(f"{r + 1:>{digits}} %s" for r in range(height))])
 
 
 def _render_around(frame: Frame, legend_text: str) -> str:
@@ -165,8 +167,7 @@ def render(frame: Frame, legend_text: str | None = None) -> str:
     if frame.above or frame.beside:
         return _render_around(frame, legend_text)
     if frame.axes:
-        header, labels = _axes(len(frame.grid), len(frame.grid[0]))
-        lines = [frame.hud, header, *map(str.__add__, labels, frame.grid), legend_text]
+        lines = [frame.hud, _axes(len(frame.grid), len(frame.grid[0])) % tuple(frame.grid), legend_text]
     else:
         lines = [frame.hud, *frame.grid, legend_text]
     if frame.message:
