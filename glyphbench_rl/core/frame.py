@@ -139,11 +139,11 @@ def _render_around(frame: Frame, legend_text: str) -> str:
     """``render`` for a board with text above or beside it (a nonogram's clues)."""
     lines = [frame.hud]
     if frame.axes:
-        header, labels = _axes(len(frame.grid), len(frame.grid[0]))
-        pad = " " * (len(labels[0]) if labels else 0)
+        header, *rows = _axes(len(frame.grid), len(frame.grid[0])).split("\n")
+        pad = " " * (len(str(len(frame.grid))) + 1)
         lines.extend(pad + line for line in frame.above)
         lines.append(header)
-        rows = [label + row for label, row in zip(labels, frame.grid)]
+        rows = [label % row for label, row in zip(rows, frame.grid)]
     else:
         lines.extend(frame.above)
         rows = list(frame.grid)
