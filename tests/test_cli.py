@@ -15,6 +15,7 @@ def test_list_prints_ids_only_and_counts_on_request(capsys):
     assert main(["list", "--counts"]) == 0
     out, err = capsys.readouterr()
     assert "Classics" in out and "total" in out and "glyphbench/" not in out and err == ""
+    assert out.splitlines()[-1].split()[-1] == "362"       # the catalog total beside ours
 
 
 def test_show_prints_prompt_and_observation(capsys):

@@ -15,7 +15,7 @@ from ..core import list_tasks, make, resolve_tasks, seeding
 from ..core.registry import SUITES, UnknownTaskError, get_spec
 from .replay import register as _register_replay
 
-CATALOG = Path(__file__).resolve().parents[1] / "tasks" / "catalog.tsv"
+CATALOG = Path(__file__).resolve().parents[2] / "tasks" / "catalog.tsv"
 
 
 def _catalog_counts() -> Counter:
