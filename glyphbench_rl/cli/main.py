@@ -131,13 +131,9 @@ def cmd_bench(args) -> int:
     from ..evaluate import bench
     task_ids = resolve_tasks(args.tasks) if args.tasks else list_tasks()
     counter = bench.load_token_counter(args.tokenizer) if args.tokenizer else None
-    reference = bench.load_reference()
-    results = []
-    for task_id in task_ids:
-        results.append(bench.bench_task(task_id, runs=args.runs, steps=args.steps, rounds=args.rounds,
-                                        count_tokens=counter, reference=reference))
-        if args.progress:
-            print(f"  {task_id}: {results[-1].step_us:.1f} us", file=sys.stderr)
+    progress = (lambda line: print(f"  {line}", file=sys.stderr)) if args.progress else None
+    results = bench.bench(task_ids, runs=args.runs, steps=args.steps, rounds=args.rounds,
+                          count_tokens=counter, progress=progress)
     print(bench.format_table(results))
     if args.json:
         Path(args.json).write_text(json.dumps(bench.to_json(results), indent=1))

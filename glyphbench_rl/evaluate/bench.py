@@ -99,41 +99,53 @@ def _run(task, seed: int, steps: int) -> tuple[list[float], list[float], list[st
     return times, resets, observations
 
 
-def bench_task(task_id: str, *, runs: int = 3, steps: int = 400, rounds: int = 3,
-               count_tokens: Callable[[str], int] | None = None, token_samples: int = 40,
-               reference: dict[str, Reference] | None = None) -> TaskBench:
-    """Time ``runs`` streams of ``steps`` random actions (seeds 0 .. runs-1), ``rounds`` times
-    over; the round with the lowest median is kept (other processes on the machine only ever
-    add time). Tokens are counted on every 7th observation, ``token_samples`` at most."""
-    task = make(task_id)
-    best = None
-    for _ in range(rounds):
-        times, resets, observations = [], [], []
-        for seed in range(runs):
-            t, r, o = _run(task, seed, steps)
-            times += t
-            resets += r
-            observations += o
-        if best is None or statistics.median(times) < statistics.median(best[0]):
-            best = times, resets
-    times, resets = best
-    prompt = task.system_prompt()
-    ref = (reference if reference is not None else load_reference()).get(task_id)
-    result = TaskBench(task_id, get_spec(task_id).suite, statistics.median(times) * 1e6,
-                       statistics.fmean(times) * 1e6, statistics.median(resets) * 1e3,
-                       statistics.median(len(o) for o in observations), len(prompt))
-    if ref is not None:
-        result.ref_step_us, result.ref_obs_tokens, result.ref_prompt_tokens = (
-            ref.step_us, ref.obs_tokens, ref.prompt_tokens)
-    if count_tokens is not None:
-        result.obs_tokens = statistics.median(count_tokens(o) for o in observations[1::7][:token_samples])
-        result.prompt_tokens = count_tokens(prompt)
-    return result
+def bench(task_ids: Sequence[str], *, runs: int = 3, steps: int = 400, rounds: int = 3,
+          count_tokens: Callable[[str], int] | None = None, token_samples: int = 40,
+          reference: dict[str, Reference] | None = None,
+          progress: Callable[[str], None] | None = None) -> list[TaskBench]:
+    """Time ``runs`` streams of ``steps`` random actions (seeds 0 .. runs-1) per task, ``rounds``
+    times over, the rounds going through every task in turn; per task the round with the lowest
+    median is kept (other processes on the machine only ever add time, and a busy spell then
+    rarely covers every round of one task). Tokens are counted on every 7th observation,
+    ``token_samples`` at most. ``progress`` gets a line per task and round."""
+    reference = load_reference() if reference is None else reference
+    tasks = {task_id: make(task_id) for task_id in task_ids}
+    best: dict[str, tuple[list[float], list[float]]] = {}
+    observations: dict[str, list[str]] = {}
+    for round_ in range(rounds):
+        for task_id, task in tasks.items():
+            times, resets, seen = [], [], []
+            for seed in range(runs):
+                t, r, o = _run(task, seed, steps)
+                times += t
+                resets += r
+                seen += o
+            observations.setdefault(task_id, seen)   # the same every round
+            if task_id not in best or statistics.median(times) < statistics.median(best[task_id][0]):
+                best[task_id] = times, resets
+            if progress is not None:
+                progress(f"round {round_ + 1}/{rounds} {task_id}: {statistics.median(times) * 1e6:.1f} us")
+    results = []
+    for task_id, task in tasks.items():
+        times, resets = best[task_id]
+        obs, prompt = observations[task_id], task.system_prompt()
+        result = TaskBench(task_id, get_spec(task_id).suite, statistics.median(times) * 1e6,
+                           statistics.fmean(times) * 1e6, statistics.median(resets) * 1e3,
+                           statistics.median(len(o) for o in obs), len(prompt))
+        ref = reference.get(task_id)
+        if ref is not None:
+            result.ref_step_us, result.ref_obs_tokens, result.ref_prompt_tokens = (
+                ref.step_us, ref.obs_tokens, ref.prompt_tokens)
+        if count_tokens is not None:
+            result.obs_tokens = statistics.median(count_tokens(o) for o in obs[1::7][:token_samples])
+            result.prompt_tokens = count_tokens(prompt)
+        results.append(result)
+    return results
 
 
-def bench(task_ids: Sequence[str], **kwargs) -> list[TaskBench]:
-    kwargs.setdefault("reference", load_reference())
-    return [bench_task(t, **kwargs) for t in task_ids]
+def bench_task(task_id: str, **kwargs) -> TaskBench:
+    """``bench`` of one task."""
+    return bench([task_id], **kwargs)[0]
 
 
 def _num(x: float | None, spec: str, width: int) -> str:
