@@ -6,7 +6,7 @@ import pytest
 import glyphbench_rl
 from glyphbench_rl.core import check_frame
 from glyphbench_rl.games.common.grid import MOVES
-from glyphbench_rl.games.classics.sokoban import solve
+from glyphbench_rl.games.common.pushing import solve
 
 VARIANTS = ["easy", "medium", "hard"]
 

@@ -2,28 +2,23 @@
 
 Levels come from reverse play (the player walks backwards from a solved room, pulling boxes
 off their goals) and are then proven solvable by a push-optimal search, which also gives the
-optimal push count. The search works on padded cell indices with Python ints as bitmasks, so
-flood fills and state keys cost a handful of big-int operations instead of set walks.
+optimal push count; both live in ``common.pushing``, shared with MiniHack's Boxoban levels.
 """
 
 from __future__ import annotations
 
-from collections import deque
 from dataclasses import dataclass
-from heapq import heappop, heappush
-from typing import Iterable
 
 import numpy as np
 
 from ...core import GlyphTask, register_variants
 from ...core.params import param
-from ..common.grid import DELTAS, MOVES, move_actions, shortest_path
+from ..common.grid import DELTAS, move_actions
 from ..common.palette import FLOOR, GOAL, PLAYER, WALL
+from ..common.pushing import PushRoom, pull_back, search
 
 BOX, BOX_ON_GOAL, PLAYER_ON_GOAL = "$", "*", "+"   # the classic Sokoban text notation
 Cell = tuple[int, int]
-_NAMES = tuple(MOVES)
-_FAR = 10**6              # lone-box push distance of a dead square (no goal reachable)
 _SEARCH_LIMIT = 4000      # states the generator lets the solver close before giving a level up
 _PULL_RUNS = 8            # straight pulling runs per box in reverse play
 _TRIES = 1000             # rooms tried per reset before the parameters are declared impossible
@@ -39,150 +34,6 @@ class SokobanParams:
     min_pushes: int = param(3, 1, lambda p: 6 * p.size)
     # ... and a push-optimal solution of at most this many moves
     max_moves: int = param(30, lambda p: p.min_pushes, 512)
-
-
-class _Room:
-    """Walls and goals in padded index space: cell (r, c) is index (r + 1) * W + c + 1.
-
-    The extra ring of wall around the given cells means a shifted bitmask never wraps onto a
-    floor cell, and every neighbour index of a floor cell is valid.
-    """
-
-    def __init__(self, walls: Iterable[Cell], height: int, width: int, goals: Iterable[Cell]):
-        self.W = W = width + 2
-        walls = set(walls)
-        self.free = sum(1 << self.index(r, c) for r in range(height) for c in range(width)
-                        if (r, c) not in walls)
-        self.wallmask = ((1 << (height + 2) * W) - 1) & ~self.free
-        self.goals = sum(1 << self.index(*g) for g in set(goals))
-        self.steps = (-W, W, -1, 1)   # in action order: UP, DOWN, LEFT, RIGHT
-        # Fewest pushes taking a lone box to its nearest goal, searched backwards from every
-        # goal: a box reaches x from x - d when the player can stand at x - 2d. It is a lower
-        # bound that changes by at most one per push, so A* with it is push-optimal.
-        self.dist = dist = [_FAR] * ((height + 2) * W)
-        queue = deque(_bits(self.goals))
-        for g in queue:
-            dist[g] = 0
-        while queue:
-            x = queue.popleft()
-            for d in self.steps:
-                prev, stand = x - d, x - 2 * d
-                if dist[prev] == _FAR and self.is_free(prev) and self.is_free(stand):
-                    dist[prev] = dist[x] + 1
-                    queue.append(prev)
-
-    def index(self, r: int, c: int) -> int:
-        return (r + 1) * self.W + c + 1
-
-    def cell(self, i: int) -> Cell:
-        return i // self.W - 1, i % self.W - 1
-
-    def is_free(self, i: int) -> bool:
-        return i >= 0 and (self.free >> i) & 1 == 1
-
-    def flood(self, start: int, boxes: int) -> int:
-        """Bitmask of the cells the player can walk to from ``start`` without pushing."""
-        open_, W = self.free & ~boxes, self.W
-        reach = 1 << start
-        while True:
-            grown = (reach | reach << 1 | reach >> 1 | reach << W | reach >> W) & open_
-            if grown == reach:
-                return reach
-            reach = grown
-
-    def frozen(self, cell: int, boxes: int) -> bool:
-        """A 2x2 square of walls and boxes around ``cell`` holding a box off goal: no box in it
-        can ever move again, so the level is lost."""
-        block, W = boxes | self.wallmask, self.W
-        for a in (-1, 1):
-            if block >> cell + a & 1:   # most pushes end in the open: no blocked side, no square
-                for b in (-W, W):
-                    square = 1 << cell | 1 << cell + a | 1 << cell + b | 1 << cell + a + b
-                    if block & square == square and boxes & square & ~self.goals:
-                        return True
-        return False
-
-    def walk(self, src: int, dst: int, boxes: int) -> list[str]:
-        """Action names of a shortest walk from ``src`` to ``dst`` that pushes nothing."""
-        open_ = self.free & ~boxes
-        return shortest_path(self.cell(src), self.cell(dst), lambda r, c: open_ >> self.index(r, c) & 1)
-
-
-def _bits(mask: int) -> list[int]:
-    out = []
-    while mask:
-        low = mask & -mask
-        out.append(low.bit_length() - 1)
-        mask ^= low
-    return out
-
-
-def _search(room: _Room, boxes: int, player: int, limit: int | None = None) -> tuple[list[str], int] | None:
-    """A* over pushes. A state is the boxes plus the player's reachable region, named by its
-    lowest cell, so walking about does not multiply states. Returns (actions, pushes), or None
-    when unsolvable or when more than ``limit`` states were closed."""
-    dist, steps = room.dist, room.steps
-    h0 = sum(dist[b] for b in _bits(boxes))
-    if h0 >= _FAR:
-        return None
-    # Heap entries are (f, -g, ...): among equal estimates the deepest state goes first, which
-    # reaches the goal far sooner and, the heuristic being consistent, keeps pushes optimal.
-    heap = [(h0, 0, 0, boxes, player, None)]
-    closed: dict = {}      # (boxes, lowest reachable cell) -> the push that first got there
-    regions: dict = {}     # boxes -> player regions already expanded with them
-    tie = 0
-    while heap:
-        f, neg_g, _, bx, pos, came = heappop(heap)
-        g = -neg_g
-        done = regions.setdefault(bx, [])
-        if any(r >> pos & 1 for r in done):   # skips the flood for states already expanded
-            continue
-        reach = room.flood(pos, bx)
-        done.append(reach)
-        key = (bx, reach & -reach)
-        closed[key] = came
-        if bx == room.goals:
-            return _unwind(room, closed, key), g
-        if limit is not None and len(closed) > limit:
-            return None
-        open_, h = room.free & ~bx, f - g
-        for b in _bits(bx):
-            for a, d in enumerate(steps):
-                dest = b + d
-                if (reach >> b - d) & 1 and (open_ >> dest) & 1 and dist[dest] < _FAR:
-                    nb = bx ^ (1 << b) ^ (1 << dest)
-                    if not room.frozen(dest, nb):
-                        tie += 1
-                        heappush(heap, (g + 1 + h - dist[b] + dist[dest], -g - 1, tie, nb, b,
-                                        (key, bx, pos, b - d, a)))
-    return None
-
-
-def _unwind(room: _Room, closed: dict, key) -> list[str]:
-    """Turn the chain of pushes ending in ``key`` into walks plus the pushes themselves."""
-    chain = []
-    while closed[key] is not None:
-        key, bx, pos, stand, a = closed[key]
-        chain.append(room.walk(pos, stand, bx) + [_NAMES[a]])
-    return [name for part in reversed(chain) for name in part]
-
-
-def solve(walls: Iterable[Cell], boxes: Iterable[Cell], goals: Iterable[Cell],
-          player: Cell) -> list[str] | None:
-    """Action names of a solution with the fewest pushes (walks between pushes are shortest
-    walks), or None if the level cannot be solved. Cells are (row, col); cells outside the
-    bounding box of everything given count as wall."""
-    walls, boxes, goals = set(walls), set(boxes), set(goals)
-    everything = walls | boxes | goals | {player}
-    if min(min(rc) for rc in everything) < 0:
-        raise ValueError("cells must have non-negative coordinates")
-    if len(boxes) != len(goals) or not boxes:
-        raise ValueError(f"need as many boxes as goals (at least one), got {len(boxes)} and {len(goals)}")
-    if (boxes | goals | {player}) & walls or player in boxes:
-        raise ValueError("boxes, goals and the player must stand on floor, the player not on a box")
-    room = _Room(walls, max(r for r, _ in everything) + 1, max(c for _, c in everything) + 1, goals)
-    found = _search(room, sum(1 << room.index(*b) for b in boxes), room.index(*player))
-    return None if found is None else found[0]
 
 
 class Sokoban(GlyphTask):
@@ -239,7 +90,7 @@ class Sokoban(GlyphTask):
         for _ in range(self.params.inner_walls):
             cell = floor[int(rng.integers(len(floor)))]
             rest = [x for x in floor if x != cell]
-            room = _Room(walls | {cell}, n + 2, n + 2, ())
+            room = PushRoom(walls | {cell}, n + 2, n + 2, ())
             if bin(room.flood(room.index(*rest[0]), 0)).count("1") == len(rest):  # still connected
                 walls.add(cell)
                 floor = rest
@@ -249,39 +100,14 @@ class Sokoban(GlyphTask):
         p = self.params
         walls, floor = self._make_room(rng)
         picks = rng.choice(len(floor), size=p.boxes + 1, replace=False)
-        room = _Room(walls, p.size + 2, p.size + 2, [floor[int(i)] for i in picks[:-1]])
-        boxes, player = room.goals, room.index(*floor[int(picks[-1])])
-        # Reverse play: walk up to a box and pull it a few cells in a straight line, over and
-        # over. Every pull is undone by a push, so each state on the way is solvable in at most
-        # as many pushes as pulls so far; of those that may still need min_pushes, keep the one
-        # whose boxes are farthest (in lone-box pushes) from the goals, none on a goal.
-        best, best_score, pulls = None, 0, 0
-        for _ in range(_PULL_RUNS * p.boxes):
-            reach, open_ = room.flood(player, boxes), room.free & ~boxes
-            options = [(b, d) for b in _bits(boxes) for d in room.steps
-                       if reach >> b + d & 1 and open_ >> b + 2 * d & 1]
-            if not options:
-                break
-            b, d = options[int(rng.integers(len(options)))]
-            player = b + d
-            for _ in range(1 + int(rng.integers(3))):
-                if not open_ >> player + d & 1:
-                    break
-                boxes ^= 1 << b | 1 << player
-                open_ ^= 1 << b | 1 << player
-                b, player = player, player + d
-                pulls += 1
-            if pulls >= p.min_pushes and not boxes & room.goals:
-                score = sum(room.dist[x] for x in _bits(boxes))
-                if score >= best_score:
-                    best, best_score = (boxes, player), score
-        if best is None or best_score == 0:
+        room = PushRoom(walls, p.size + 2, p.size + 2, [floor[int(i)] for i in picks[:-1]])
+        best = pull_back(room, room.index(*floor[int(picks[-1])]), rng, _PULL_RUNS * p.boxes, p.min_pushes)
+        if best is None:
             return None
-        found = _search(room, *best, limit=_SEARCH_LIMIT)
+        found = search(room, *best, limit=_SEARCH_LIMIT)
         if found is None or found[1] < p.min_pushes or len(found[0]) > p.max_moves:
             return None
-        cells = lambda mask: {room.cell(i) for i in _bits(mask)}  # noqa: E731
-        return walls, cells(best[0]), cells(room.goals), room.cell(best[1]), *found
+        return walls, room.cells(best[0]), room.cells(room.goals), room.cell(best[1]), *found
 
     # -- play --------------------------------------------------------------------------------------
     def _paint(self, rc: Cell) -> None:

@@ -11,4 +11,6 @@ family, and nothing here imports a family.
 - ``waves``: enemies with hit points, spawn schedules and cells, path walkers, wanderers,
   marching formations, turret volleys.
 - ``boards``: one action per board cell, bitboards (flood fills, regions), run-length clues.
+- ``pushing``: box pushing under Sokoban rules: rooms as bitmasks, the push-optimal A* solver,
+  reverse play (random pulling runs, and every pull state by breadth-first layers).
 """
