@@ -344,8 +344,23 @@ class MiniHackTask(NetHackTask):
     Params = MiniHackParams
     rules = ("{goal} You play NetHack: the grid is the part of the level seen so far; monsters "
              "move when you act; walking into a monster attacks it. " + ANSWER_RULES)
-    rewards = "{reward_win:+g} when the goal is reached{lose_text}; no other reward."
+    plain_rewards = "{reward_win:+g} when the goal is reached{lose_text}; no other reward."
     ends = "when the goal is reached{lose_end}"
+
+    def _make_actions(self) -> ActionSet:
+        only = LEVELS[self.params.level].actions
+        if not only:
+            return ACTIONS
+        return ActionSet([(a.name, a.description) for a in ACTIONS if a.name in only])
+
+    @property
+    def rewards(self) -> str:   # type: ignore[override]
+        return LEVELS[self.params.level].rewards or self.plain_rewards
+
+    def _before_reset(self, rng: np.random.Generator) -> None:
+        next_level = getattr(self.env, "next_level", None)   # a level generated per episode
+        if next_level is not None:
+            next_level(rng)
 
     def prompt_fields(self) -> dict[str, Any]:
         level = LEVELS[self.params.level]

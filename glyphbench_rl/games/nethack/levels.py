@@ -17,6 +17,8 @@ class Level:
     source: str
     goal: str
     lose: str = "you die"          # how the episode is lost ("" = it cannot be)
+    rewards: str = ""              # the prompt's reward text, when not the plain win/lose one
+    actions: tuple[str, ...] = ()  # the only actions offered (upstream's own restriction), or all
 
 
 STAIRS = "reach the staircase down (>)"
@@ -25,6 +27,16 @@ _ROOM = "The level is one room. Goal: " + STAIRS + "."
 
 def _level(source: str, goal: str, lose: str = "you die") -> Level:
     return Level(source, goal, lose)
+
+
+def _boxoban(difficulty: str, about: str) -> Level:
+    return Level(f"glyphbench_rl.games.nethack.boxoban_env:{difficulty}",
+                 f"A 10x10 Sokoban level ({about}): push every boulder onto a fountain. You "
+                 "push a boulder by walking into it; it moves one cell unless a wall or another "
+                 "boulder is behind it, and it cannot be pulled. Only the four straight moves are offered.",
+                 lose="", actions=("MOVE_N", "MOVE_S", "MOVE_E", "MOVE_W"),
+                 rewards="+0.1 each time a boulder is pushed onto a fountain (-0.1 when one is pushed "
+                         "off), +0.7 when every boulder stands on a fountain (+1 in all); no other reward.")
 
 
 LEVELS: dict[str, Level] = {
@@ -68,6 +80,9 @@ LEVELS: dict[str, Level] = {
     "memento-short": _level("MiniHack-Memento-Short-F2-v0", "A monster is shown at the start; remember it. At the fork, take the branch where that monster waits and kill it (+1); the other branch holds a squeaky board (-1)."),
     "memento-f2": _level("MiniHack-Memento-F2-v0", "A monster is shown at the start; remember it. At the end of the long corridor, take the branch where that monster waits and kill it (+1); the other branch holds a squeaky board (-1)."),
     "memento-f4": _level("MiniHack-Memento-F4-v0", "Monsters are shown at the start; remember them. Of the four branches at the end of the corridor, the one with the remembered monster is right (kill it, +1); the others end on squeaky boards (-1)."),
+    "boxoban-unfiltered": _boxoban("unfiltered", "any solvable level, four boulders"),
+    "boxoban-medium": _boxoban("medium", "four boulders, 14 to 17 pushes at best"),
+    "boxoban-hard": _boxoban("hard", "four boulders, 18 or more pushes at best"),
     # -- skills (a caveman, autopickup off) ----------------------------------------------------------
     "eat": _level("MiniHack-Eat-v0", "Goal: eat the apple (%) (walk onto it and EAT, or PICKUP and EAT)."),
     "eat-distract": _level("MiniHack-Eat-Distr-v0", "A monster and another object are in the room too. Goal: eat the apple (%)."),

@@ -27,7 +27,7 @@ HERO = "you"
 # blstats indices (nle.nethack.NLE_BL_*), written out so this module needs no nle import
 BL_X, BL_Y, BL_HP, BL_HPMAX, BL_DEPTH, BL_AC, BL_TIME, BL_HUNGER, BL_CONDITION = 0, 1, 10, 11, 12, 16, 20, 21, 25
 BL_GOLD, BL_ENERGY, BL_ENERGYMAX, BL_XP = 13, 14, 15, 18
-HUNGER = ("", "Hungry", "Weak", "Fainting", "Fainted", "Starved")
+HUNGER = ("Satiated", "", "Hungry", "Weak", "Fainting", "Fainted", "Starved")   # NetHack's u.uhs
 # NLE's condition bits (BL_MASK_*), in NetHack's order
 CONDITIONS = ((0x1, "Stone"), (0x2, "Slime"), (0x4, "Strangled"), (0x8, "FoodPois"), (0x10, "Ill"),
               (0x20, "Blind"), (0x40, "Deaf"), (0x80, "Stun"), (0x100, "Conf"), (0x200, "Hallu"),
@@ -75,7 +75,7 @@ def status(blstats: np.ndarray, hp_only: bool = False) -> str:
     if not hp_only:
         parts.append(f"AC {b[BL_AC]}")
     hunger = b[BL_HUNGER]
-    if 0 < hunger < len(HUNGER):
+    if 0 <= hunger < len(HUNGER) and HUNGER[hunger]:
         parts.append(HUNGER[hunger])
     cond = b[BL_CONDITION]
     parts.extend(name for bit, name in CONDITIONS if cond & bit)

@@ -20,6 +20,7 @@ _HORIZONS = {
     "mazewalk-mapped-9x9": 200, "mazewalk-mapped-15x15": 1000, "mazewalk-mapped-45x19": 1000,
     "river": 350, "river-narrow": 350, "river-lava": 350, "river-monster": 350, "river-monsterlava": 350,
     "hidenseek": 200, "hidenseek-mapped": 200, "hidenseek-lava": 200, "hidenseek-big": 400,
+    "boxoban-unfiltered": 400, "boxoban-medium": 400, "boxoban-hard": 400,
     "memento-short": 5000, "memento-f2": 5000, "memento-f4": 5000,
     "eat": 250, "eat-distract": 250, "pray": 250, "pray-distract": 250, "read": 250, "read-distract": 250,
     "sink": 250, "sink-distract": 250, "wield": 250, "wield-distract": 250,
