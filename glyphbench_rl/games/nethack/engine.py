@@ -38,6 +38,7 @@ try:
         from nle import nethack
         from nle.env.base import NLE
         import minihack  # noqa: F401  (registers MiniHack's gymnasium IDs)
+        from minihack.reward_manager import MessageEvent, RewardManager
         import gymnasium as gym
 except ImportError as e:   # pragma: no cover - depends on the installed extras
     raise ModuleNotFoundError(
@@ -234,6 +235,7 @@ class NetHackTask(GlyphTask):
                 break
             internal = observation[env._internal_index]
             if internal[3]:                                   # --More-- or a menu window
+                self._message_events(observation)
                 key = self._window(observation)
                 observation, done = env.nethack.step(key)
                 continue
@@ -245,13 +247,27 @@ class NetHackTask(GlyphTask):
             break
         return observation, done
 
+    def _message_events(self, observation) -> None:
+        """Upstream's message events (a kill, "This scroll seems to be blank.") read only the
+        message a command ends on; one shown before a --More-- ("You kill the minotaur!" before
+        "The death ray bounces!") would be lost for good, so it is checked here too."""
+        manager = getattr(self.env, "reward_manager", None)
+        if type(manager) is not RewardManager:                # (ordered or grouped ones: as upstream)
+            return
+        for event in manager.events:
+            if isinstance(event, MessageEvent) and not event.achieved:
+                manager._reward += event.check(self.env, None, None, observation)
+
     def _window(self, observation) -> int:
         msg = render.text(observation[self._ix["message"]])
         if msg:
             if not self._heard or self._heard[-1] != msg:
                 self._heard.append(msg)
             return ENTER
-        lines = [render.text(row) for row in observation[self._ix["tty_chars"]]]
+        tty = observation[self._ix["tty_chars"]]
+        top = next((row for row in tty if (row != SPACE).any()), None)
+        col = int(np.argmax(top != SPACE)) if top is not None else 0   # a window over the map
+        lines = [render.text(row[col:]) for row in tty]                # starts where its title does
         lines = [s for s in lines if s]
         head = lines[0] if lines else ""
         if head.startswith("Pick up what?"):
@@ -262,7 +278,8 @@ class NetHackTask(GlyphTask):
         if not any(s.endswith("--More--") for s in lines):
             return ESC                                        # a menu (the inventory): close it
         if head.endswith(":"):                                # "Things that are here:" ...
-            items = [s for s in lines[1:] if not s.endswith("--More--")][:8]
+            end = next(i for i, s in enumerate(lines) if s.endswith("--More--"))
+            items = lines[1:end][:8]
             self._heard.append(head + " " + ", ".join(items) + ".")
         return ENTER
 
