@@ -84,6 +84,8 @@ ANSWER_RULES = (
 # object classes of NetHack (objclass.h) that WIELD equips, and the command for each
 _EQUIP = {2: "w", 3: "W", 4: "P", 5: "P"}          # weapon, armour, ring, amulet
 _ITEM_QUESTION = re.compile(r"\[([^\]]*)\]")
+_DEATH_CAUSE = re.compile(r"\b(?:killed|drowned|burned|choked|starved|petrified|dissolved|crushed|"
+                          r"died|turned to stone|zapped (?:him|her)self)\b[^.,;:!]*?(?=\s{2,}|[.,;:!]|$)")
 
 
 class NetHackTask(GlyphTask):
@@ -135,6 +137,7 @@ class NetHackTask(GlyphTask):
         self.env.seed(core, disp, False, lgen)
         self._heard: list[str] = []
         self._pick_all = False
+        self._death: str | None = None
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             self.env.reset()
@@ -172,6 +175,7 @@ class NetHackTask(GlyphTask):
     def _score(self) -> None:
         """Turn NetHack's end of episode into ours: MiniHack's reward was added by ``_press``."""
         if self.status == self.env.StepStatus.DEATH:
+            self.say(f"You die, {self._death}." if self._death else "You die.")
             self.reward(self.params.reward_lose)
             self.finish(False)
         elif self.status != self.env.StepStatus.RUNNING:
@@ -210,10 +214,10 @@ class NetHackTask(GlyphTask):
     def _press(self, key: int) -> None:
         _, gain, done, _, info = self.env.step(self._index[key])
         self.reward(gain)
-        if not self._asking():
-            self._note_message()
         if done:
             self.status = int(info["end_status"])
+        if not self._asking() and self.status != self.env.StepStatus.DEATH:
+            self._note_message()
 
     def _asking(self) -> bool:
         return bool(self.obs("internal")[1])
@@ -259,6 +263,12 @@ class NetHackTask(GlyphTask):
                 manager._reward += event.check(self.env, None, None, observation)
 
     def _window(self, observation) -> int:
+        if observation[self.env._program_state_index][0]:   # the game is over: of its end screens
+            if self._death is None:                           # (dump, tombstone) only the cause
+                screen = " ".join(render.text(row) for row in observation[self._ix["tty_chars"]])
+                found = _DEATH_CAUSE.search(render.text(observation[self._ix["message"]]) + " " + screen)
+                self._death = found.group(0).strip() if found else None
+            return ENTER
         msg = render.text(observation[self._ix["message"]])
         if msg:
             if not self._heard or self._heard[-1] != msg:
