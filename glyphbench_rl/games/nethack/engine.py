@@ -179,7 +179,8 @@ class NetHackTask(GlyphTask):
             self.reward(self.params.reward_lose)
             self.finish(False)
         elif self.status != self.env.StepStatus.RUNNING:
-            self.finish(self.status != self.env.StepStatus.ABORTED)
+            # MiniHack ends "successfully" on a losing event too (Memento's squeaky board, -1)
+            self.finish(self.status != self.env.StepStatus.ABORTED and self._step_reward >= 0)
 
     def _grid(self) -> list[str]:
         if self.status == self.env.StepStatus.DEATH:   # NetHack shows its end screens now

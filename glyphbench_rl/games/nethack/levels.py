@@ -23,6 +23,7 @@ class Level:
 
 STAIRS = "reach the staircase down (>)"
 _ROOM = "The level is one room. Goal: " + STAIRS + "."
+_OURS = "glyphbench_rl.games.nethack.custom:"   # our levels for the IDs upstream lacks
 
 
 def _level(source: str, goal: str, lose: str = "you die") -> Level:
@@ -80,6 +81,7 @@ LEVELS: dict[str, Level] = {
     "memento-short": _level("MiniHack-Memento-Short-F2-v0", "A monster is shown at the start; remember it. At the fork, take the branch where that monster waits and kill it (+1); the other branch holds a squeaky board (-1)."),
     "memento-f2": _level("MiniHack-Memento-F2-v0", "A monster is shown at the start; remember it. At the end of the long corridor, take the branch where that monster waits and kill it (+1); the other branch holds a squeaky board (-1)."),
     "memento-f4": _level("MiniHack-Memento-F4-v0", "Monsters are shown at the start; remember them. Of the four branches at the end of the corridor, the one with the remembered monster is right (kill it, +1); the others end on squeaky boards (-1)."),
+    "memento-hard": _level(_OURS + "memento_hard", "Three monsters are shown behind bars at the start; remember them. Of the eight branches at the end of the dark corridor, one is right for that trio of monsters: kill the grid bug at its end (+1); the others end on squeaky boards (-1)."),
     "boxoban-unfiltered": _boxoban("unfiltered", "any solvable level, four boulders"),
     "boxoban-medium": _boxoban("medium", "four boulders, 14 to 17 pushes at best"),
     "boxoban-hard": _boxoban("hard", "four boulders, 18 or more pushes at best"),
@@ -92,6 +94,8 @@ LEVELS: dict[str, Level] = {
     "read-distract": _level("MiniHack-Read-Distr-v0", "A monster and a random object (maybe another scroll) are in the room too. Goal: READ the blank (unlabeled) scroll (PICKUP it first)."),
     "sink": _level("MiniHack-Sink-v0", "Goal: QUAFF from the sink (#): stand on it and QUAFF."),
     "sink-distract": _level("MiniHack-Sink-Distr-v0", "A monster and a random object are in the room too. Goal: QUAFF from the sink (#): stand on it and QUAFF."),
+    "quaff": _level(_OURS + "quaff", "Goal: QUAFF the potion of healing (!) (PICKUP it first)."),
+    "quaff-distract": _level(_OURS + "quaff_distract", "A monster and another object (maybe another potion) are in the room too. Goal: QUAFF the potion of healing (!) (PICKUP it first)."),
     "wield": _level("MiniHack-Wield-v0", "Goal: WIELD the dagger ()) (PICKUP it first)."),
     "wield-distract": _level("MiniHack-Wield-Distr-v0", "A monster and a random object are in the room too. Goal: WIELD the dagger (PICKUP it first)."),
     "wod-easy": _level("MiniHack-WoD-Easy-Full-v0", "You carry a wand of death (an unidentified wand); a minotaur sleeps down the corridor. Goal: kill it: ZAP the wand at it (the ray flies 7-13 cells straight and bounces off walls)."),

@@ -22,6 +22,7 @@ _HORIZONS = {
     "hidenseek": 200, "hidenseek-mapped": 200, "hidenseek-lava": 200, "hidenseek-big": 400,
     "boxoban-unfiltered": 400, "boxoban-medium": 400, "boxoban-hard": 400,
     "memento-short": 5000, "memento-f2": 5000, "memento-f4": 5000,
+    "memento-hard": 512, "quaff": 250, "quaff-distract": 250,   # ours (custom.py): no upstream horizon
     "eat": 250, "eat-distract": 250, "pray": 250, "pray-distract": 250, "read": 250, "read-distract": 250,
     "sink": 250, "sink-distract": 250, "wield": 250, "wield-distract": 250,
     "wod-easy": 50, "wod-medium": 150, "wod-hard": 400, "wod-pro": 1000,
