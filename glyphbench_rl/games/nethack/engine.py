@@ -27,6 +27,7 @@ import numpy as np
 
 from ...core.actions import ActionSet
 from ...core.params import param
+from ...core.registry import MissingExtraError
 from ...core.seeding import nle_seeds
 from ...core.task import GlyphTask
 from . import render
@@ -40,7 +41,7 @@ try:
         import minihack  # noqa: F401  (registers MiniHack's gymnasium IDs)
         import gymnasium as gym
 except ImportError as e:   # pragma: no cover - depends on the installed extras
-    raise ModuleNotFoundError(
+    raise MissingExtraError(
         f"the MiniHack and NetHack tasks need the 'nethack' extra ({e}): "
         f"pip install 'glyphbench_rl[nethack]'") from None
 
@@ -89,6 +90,7 @@ class NetHackTask(GlyphTask):
     """A GlyphTask over one NLE environment, created at the first reset and reused."""
 
     ACTIONS = ACTIONS
+    KEYS = KEYS                  # action name -> NetHack key (a task with other actions brings its own)
     extra_chars = render.SPARE + render.BLANK + "".join(render.PREFERRED.values())
     default_max_turns = 512
 
@@ -151,14 +153,7 @@ class NetHackTask(GlyphTask):
         name = self.actions[action].name
         self._heard = []
         self._pick_all = name == "PICKUP"
-        key = self._equip_key() if name == "WIELD" else None
-        if key is not None:
-            self._press(key[0])
-            self._press(key[1])
-        else:
-            self._press(KEYS[name])
-        if name.startswith("MOVE_"):
-            self._last_move = next(d for d, k in DIRECTION_KEYS.items() if ord(k) == KEYS[name])
+        self._command(name)
         for _ in range(8):                      # answer what NetHack asks, by the stated rules
             if self.status or not self._asking():
                 break
@@ -167,6 +162,17 @@ class NetHackTask(GlyphTask):
             self._press(ESC)
         self._messages.extend(self._heard)
         self._score()
+
+    def _command(self, name: str) -> None:
+        """Press the keys of action ``name`` (what NetHack asks back is answered after)."""
+        key = self._equip_key() if name == "WIELD" else None
+        if key is not None:
+            self._press(key[0])
+            self._press(key[1])
+        else:
+            self._press(self.KEYS[name])
+        if name.startswith("MOVE_"):
+            self._last_move = next(d for d, k in DIRECTION_KEYS.items() if ord(k) == self.KEYS[name])
 
     def _score(self) -> None:
         """Turn NetHack's end of episode into ours: MiniHack's reward was added by ``_press``."""
@@ -262,7 +268,8 @@ class NetHackTask(GlyphTask):
         if not any(s.endswith("--More--") for s in lines):
             return ESC                                        # a menu (the inventory): close it
         if head.endswith(":"):                                # "Things that are here:" ...
-            items = [s for s in lines[1:] if not s.endswith("--More--")][:8]
+            end = next(i for i, s in enumerate(lines) if s.endswith("--More--"))
+            items = lines[1:end][:8]                          # (below --More--: the map, not the window)
             self._heard.append(head + " " + ", ".join(items) + ".")
         return ENTER
 
