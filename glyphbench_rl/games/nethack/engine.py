@@ -269,7 +269,7 @@ class NetHackTask(GlyphTask):
             return ESC                                        # a menu (the inventory): close it
         if head.endswith(":"):                                # "Things that are here:" ...
             end = next(i for i, s in enumerate(lines) if s.endswith("--More--"))
-            items = lines[1:end][:8]                          # (below --More--: the map, not the window)
+            items = lines[1:end][:8]
             self._heard.append(head + " " + ", ".join(items) + ".")
         return ENTER
 
