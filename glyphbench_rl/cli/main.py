@@ -12,7 +12,7 @@ from pathlib import Path
 from typing import Sequence
 
 from ..core import list_tasks, make, resolve_tasks, seeding
-from ..core.registry import SUITES, UnknownTaskError, get_spec
+from ..core.registry import SUITES, MissingExtraError, UnknownTaskError, get_spec
 from .replay import register as _register_replay
 
 CATALOG = Path(__file__).resolve().parents[2] / "tasks" / "catalog.tsv"
@@ -196,7 +196,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             return 2
     try:
         return args.func(args)
-    except (UnknownTaskError, ValueError, FileNotFoundError) as e:
+    except (UnknownTaskError, MissingExtraError, ValueError, FileNotFoundError) as e:
         print(f"glyphbench: error: {e}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:

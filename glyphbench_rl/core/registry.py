@@ -17,13 +17,14 @@ module:
 - its package ``__init__`` (imported by ``games/__init__.py``) and a light variants module that
   import nothing heavy and hold only the variants table, registered with strings::
 
-      register_variants("glyphbench_rl.games.nethack.engine:NetHackTask", "NetHack", {
-          "glyphbench/nethack-full-v0": dict(character="mon-hum-neu-mal", max_turns=10_000),
+      register_variants("glyphbench_rl.games.nethack.full:NetHackFull", "NetHack", {
+          "glyphbench/nethack-full-v0": dict(max_turns=10_000),
       }, tier="extended")
 
   (parameter values are plain data, checked by the class's ``Params`` when the task is made);
-- the engine module (``engine.py`` above) that imports ``nle`` / ``jax`` at module level and
-  defines the ``GlyphTask`` subclass, imported by nothing but the registry.
+- the engine module (``full.py`` above) that imports ``nle`` / ``jax`` at module level and
+  defines the ``GlyphTask`` subclass, imported by nothing but the registry; without its extra
+  installed it raises ``MissingExtraError``, one line naming the extra.
 
 Engines seed from the task seed through ``core.seeding`` (``nle_seeds``, ``jax_key_data``).
 """
@@ -51,6 +52,11 @@ TIERS = ("standard", "extended")
 
 class UnknownTaskError(LookupError):
     pass
+
+
+class MissingExtraError(ModuleNotFoundError):
+    """A task's engine needs an optional extra that is not installed; the message is one line
+    naming it (``pip install 'glyphbench_rl[nethack]'``). Raised by engine modules at import."""
 
 
 @dataclass(frozen=True)

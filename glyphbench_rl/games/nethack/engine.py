@@ -27,6 +27,7 @@ import numpy as np
 
 from ...core.actions import ActionSet
 from ...core.params import param
+from ...core.registry import MissingExtraError
 from ...core.seeding import nle_seeds
 from ...core.task import GlyphTask
 from . import render
@@ -41,7 +42,7 @@ try:
         from minihack.reward_manager import MessageEvent, RewardManager
         import gymnasium as gym
 except ImportError as e:   # pragma: no cover - depends on the installed extras
-    raise ModuleNotFoundError(
+    raise MissingExtraError(
         f"the MiniHack and NetHack tasks need the 'nethack' extra ({e}): "
         f"pip install 'glyphbench_rl[nethack]'") from None
 
@@ -92,6 +93,7 @@ class NetHackTask(GlyphTask):
     """A GlyphTask over one NLE environment, created at the first reset and reused."""
 
     ACTIONS = ACTIONS
+    KEYS = KEYS                  # action name -> NetHack key (a task with other actions brings its own)
     extra_chars = render.SPARE + render.BLANK + "".join(render.PREFERRED.values())
     default_max_turns = 512
 
@@ -155,14 +157,7 @@ class NetHackTask(GlyphTask):
         name = self.actions[action].name
         self._heard = []
         self._pick_all = name == "PICKUP"
-        key = self._equip_key() if name == "WIELD" else None
-        if key is not None:
-            self._press(key[0])
-            self._press(key[1])
-        else:
-            self._press(KEYS[name])
-        if name.startswith("MOVE_"):
-            self._last_move = next(d for d, k in DIRECTION_KEYS.items() if ord(k) == KEYS[name])
+        self._command(name)
         for _ in range(8):                      # answer what NetHack asks, by the stated rules
             if self.status or not self._asking():
                 break
@@ -171,6 +166,17 @@ class NetHackTask(GlyphTask):
             self._press(ESC)
         self._messages.extend(self._heard)
         self._score()
+
+    def _command(self, name: str) -> None:
+        """Press the keys of action ``name`` (what NetHack asks back is answered after)."""
+        key = self._equip_key() if name == "WIELD" else None
+        if key is not None:
+            self._press(key[0])
+            self._press(key[1])
+        else:
+            self._press(self.KEYS[name])
+        if name.startswith("MOVE_"):
+            self._last_move = next(d for d, k in DIRECTION_KEYS.items() if ord(k) == self.KEYS[name])
 
     def _score(self) -> None:
         """Turn NetHack's end of episode into ours: MiniHack's reward was added by ``_press``."""

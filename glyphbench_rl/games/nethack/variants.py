@@ -1,6 +1,12 @@
 """The 63 MiniHack tasks and full NetHack, registered as data (no engine import).
 
 Horizons are upstream MiniHack's ``max_episode_steps`` capped at the standard tier's 512.
+
+Full NetHack (``full.NetHackFull``, extended tier: NetHack's score as reward, no clamp) gets
+10,000 turns. A turn is one command, and one command (FAR_E, TRAVEL, a count) can take many game
+turns, so this is room to clear several dungeon levels and to meet hunger (a new character starts
+with 900 nutrition and burns one a turn) while one episode still fits a rollout budget. NLE's
+own cap, a million keystrokes, is for agents that press one key per step.
 """
 
 from __future__ import annotations
@@ -34,3 +40,7 @@ register_variants("glyphbench_rl.games.nethack.engine:MiniHackTask", "MiniHack",
     f"glyphbench/minihack-{level}-v0": dict(level=level, max_turns=min(steps, STANDARD_TURN_CAP))
     for level, steps in _HORIZONS.items()
 })
+
+register_variants("glyphbench_rl.games.nethack.full:NetHackFull", "NetHack", {
+    "glyphbench/nethack-full-v0": dict(max_turns=10_000),
+}, tier="extended")
