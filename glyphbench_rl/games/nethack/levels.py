@@ -24,6 +24,10 @@ class Level:
 STAIRS = "reach the staircase down (>)"
 _ROOM = "The level is one room. Goal: " + STAIRS + "."
 _OURS = "glyphbench_rl.games.nethack.custom:"   # our levels for the IDs upstream lacks
+_CORRIDOR = ("Rooms joined by corridors; a door or corridor may be hidden (SEARCH finds it) and a door "
+             "locked (APPLY your lock pick beside it; KICK is not offered). Goal: ")
+_KEYROOM = ("The staircase is in a small room behind a locked door. PICKUP the key, then APPLY beside "
+            "the door: that unlocks and opens it. Goal: " + STAIRS + ".")
 
 
 def _level(source: str, goal: str, lose: str = "you die") -> Level:
@@ -48,27 +52,27 @@ LEVELS: dict[str, Level] = {
     "room-random-15x15": _level("MiniHack-Room-Random-15x15-v0", _ROOM),
     "room-dark-5x5": _level("MiniHack-Room-Dark-5x5-v0", "The level is one unlit room: you see only next to you. Goal: " + STAIRS + "."),
     "room-dark-15x15": _level("MiniHack-Room-Dark-15x15-v0", "The level is one unlit room: you see only next to you. Goal: " + STAIRS + "."),
-    "room-monster-5x5": _level("MiniHack-Room-Monster-5x5-v0", "The room holds a hostile monster. Goal: " + STAIRS + "."),
-    "room-monster-15x15": _level("MiniHack-Room-Monster-15x15-v0", "The room holds hostile monsters. Goal: " + STAIRS + "."),
-    "room-trap-5x5": _level("MiniHack-Room-Trap-5x5-v0", "The room holds a hidden or visible trap. Goal: " + STAIRS + "."),
-    "room-trap-15x15": _level("MiniHack-Room-Trap-15x15-v0", "The room holds many traps. Goal: " + STAIRS + "."),
-    "room-ultimate-5x5": _level("MiniHack-Room-Ultimate-5x5-v0", "The room is unlit and holds a monster and a trap. Goal: " + STAIRS + "."),
-    "room-ultimate-15x15": _level("MiniHack-Room-Ultimate-15x15-v0", "The room is unlit and holds monsters and traps. Goal: " + STAIRS + "."),
-    "corridor-r2": _level("MiniHack-Corridor-R2-v0", "Rooms joined by corridors; doors may be closed or locked (walk into a door to open it, KICK is not offered). Goal: " + STAIRS + "."),
-    "corridor-r3": _level("MiniHack-Corridor-R3-v0", "Rooms joined by corridors; doors may be closed or locked. Goal: " + STAIRS + "."),
-    "corridor-r5": _level("MiniHack-Corridor-R5-v0", "Rooms joined by corridors; doors may be closed or locked. Goal: " + STAIRS + "."),
-    "corridorbattle": _level("MiniHack-CorridorBattle-v0", "A corridor leads from your room to a hall full of rats; fight them in the corridor one at a time. Goal: " + STAIRS + "."),
-    "corridorbattle-dark": _level("MiniHack-CorridorBattle-Dark-v0", "An unlit corridor leads from your room to a hall full of rats; fight them in the corridor one at a time. Goal: " + STAIRS + "."),
-    "keyroom-s5": _level("MiniHack-KeyRoom-S5-v0", "The staircase is in a small room behind a locked door. Pick up the key, APPLY it toward the door to unlock it, open the door by walking into it, and " + STAIRS + "."),
-    "keyroom-s15": _level("MiniHack-KeyRoom-S15-v0", "The staircase is in a small room behind a locked door. Pick up the key, APPLY it toward the door to unlock it, open the door by walking into it, and " + STAIRS + "."),
-    "keyroom-dark-s5": _level("MiniHack-KeyRoom-Dark-S5-v0", "The rooms are unlit. The staircase is in a small room behind a locked door. Pick up the key, APPLY it toward the door to unlock it, open the door by walking into it, and " + STAIRS + "."),
-    "keyroom-dark-s15": _level("MiniHack-KeyRoom-Dark-S15-v0", "The rooms are unlit. The staircase is in a small room behind a locked door. Pick up the key, APPLY it toward the door to unlock it, open the door by walking into it, and " + STAIRS + "."),
-    "mazewalk-9x9": _level("MiniHack-MazeWalk-9x9-v0", "An unlit maze. Goal: " + STAIRS + ".", ""),
-    "mazewalk-15x15": _level("MiniHack-MazeWalk-15x15-v0", "An unlit maze. Goal: " + STAIRS + ".", ""),
-    "mazewalk-45x19": _level("MiniHack-MazeWalk-45x19-v0", "An unlit maze. Goal: " + STAIRS + ".", ""),
-    "mazewalk-mapped-9x9": _level("MiniHack-MazeWalk-Mapped-9x9-v0", "A maze whose walls are all shown. Goal: " + STAIRS + ".", ""),
-    "mazewalk-mapped-15x15": _level("MiniHack-MazeWalk-Mapped-15x15-v0", "A maze whose walls are all shown. Goal: " + STAIRS + ".", ""),
-    "mazewalk-mapped-45x19": _level("MiniHack-MazeWalk-Mapped-45x19-v0", "A maze whose walls are all shown. Goal: " + STAIRS + ".", ""),
+    "room-monster-5x5": _level("MiniHack-Room-Monster-5x5-v0", "A random monster is in the room. Goal: " + STAIRS + "."),
+    "room-monster-15x15": _level("MiniHack-Room-Monster-15x15-v0", "Random monsters are in the room. Goal: " + STAIRS + "."),
+    "room-trap-5x5": _level("MiniHack-Room-Trap-5x5-v0", "The room holds a hidden teleportation trap. Goal: " + STAIRS + "."),
+    "room-trap-15x15": _level("MiniHack-Room-Trap-15x15-v0", "The room holds many hidden teleportation traps. Goal: " + STAIRS + "."),
+    "room-ultimate-5x5": _level("MiniHack-Room-Ultimate-5x5-v0", "The room is unlit and holds a random monster and a hidden teleportation trap. Goal: " + STAIRS + "."),
+    "room-ultimate-15x15": _level("MiniHack-Room-Ultimate-15x15-v0", "The room is unlit and holds random monsters and many hidden teleportation traps. Goal: " + STAIRS + "."),
+    "corridor-r2": _level("MiniHack-Corridor-R2-v0", _CORRIDOR + STAIRS + "."),
+    "corridor-r3": _level("MiniHack-Corridor-R3-v0", _CORRIDOR + STAIRS + "."),
+    "corridor-r5": _level("MiniHack-Corridor-R5-v0", _CORRIDOR + STAIRS + "."),
+    "corridorbattle": _level("MiniHack-CorridorBattle-v0", "A corridor leads from your room to a hall where giant rats wait by the stairs; in the corridor they come one at a time. Goal: " + STAIRS + "."),
+    "corridorbattle-dark": _level("MiniHack-CorridorBattle-Dark-v0", "The level is unlit. A corridor leads from your room to a hall where giant rats wait by the stairs; in the corridor they come one at a time. Goal: " + STAIRS + "."),
+    "keyroom-s5": _level("MiniHack-KeyRoom-S5-v0", _KEYROOM),
+    "keyroom-s15": _level("MiniHack-KeyRoom-S15-v0", _KEYROOM),
+    "keyroom-dark-s5": _level("MiniHack-KeyRoom-Dark-S5-v0", "The rooms are unlit. " + _KEYROOM),
+    "keyroom-dark-s15": _level("MiniHack-KeyRoom-Dark-S15-v0", "The rooms are unlit. " + _KEYROOM),
+    "mazewalk-9x9": _level("MiniHack-MazeWalk-9x9-v0", "An unlit maze. Goal: " + STAIRS + "."),
+    "mazewalk-15x15": _level("MiniHack-MazeWalk-15x15-v0", "An unlit maze. Goal: " + STAIRS + "."),
+    "mazewalk-45x19": _level("MiniHack-MazeWalk-45x19-v0", "An unlit maze. Goal: " + STAIRS + "."),
+    "mazewalk-mapped-9x9": _level("MiniHack-MazeWalk-Mapped-9x9-v0", "A maze shown in full from the start. Goal: " + STAIRS + "."),
+    "mazewalk-mapped-15x15": _level("MiniHack-MazeWalk-Mapped-15x15-v0", "A maze shown in full from the start. Goal: " + STAIRS + "."),
+    "mazewalk-mapped-45x19": _level("MiniHack-MazeWalk-Mapped-45x19-v0", "A maze shown in full from the start. Goal: " + STAIRS + "."),
     "river": _level("MiniHack-River-v0", "A river of water lies between you and the stairs; you cannot swim, but pushing a boulder into the water fills that cell. Goal: " + STAIRS + "."),
     "river-narrow": _level("MiniHack-River-Narrow-v0", "A narrow river of water lies between you and the stairs; you cannot swim, but pushing a boulder into the water fills that cell. Goal: " + STAIRS + "."),
     "river-lava": _level("MiniHack-River-Lava-v0", "A river of water and lava lies between you and the stairs; walking into lava is deadly; pushing a boulder into water fills that cell. Goal: " + STAIRS + "."),
