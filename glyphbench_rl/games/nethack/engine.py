@@ -174,7 +174,10 @@ class NetHackTask(GlyphTask):
             self.reward(self.params.reward_lose)
             self.finish(False)
         elif self.status != self.env.StepStatus.RUNNING:
-            self.finish(self.status != self.env.StepStatus.ABORTED)
+            # MiniHack ends a task on a paying event of either sign (Memento's squeaky board is
+            # TASK_SUCCESSFUL with -1): won means the episode ended paying more than nothing
+            self.finish(self.status == self.env.StepStatus.TASK_SUCCESSFUL
+                        and self.episode_return + self._step_reward > 0)
 
     def _grid(self) -> list[str]:
         if self.status == self.env.StepStatus.DEATH:   # NetHack shows its end screens now
