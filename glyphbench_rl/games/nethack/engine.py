@@ -140,6 +140,7 @@ class NetHackTask(GlyphTask):
         self._heard: list[str] = []
         self._pick_all = False
         self._death: str | None = None
+        self._ended = False                   # NetHack's end screens began
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             self.env.reset()
@@ -185,8 +186,10 @@ class NetHackTask(GlyphTask):
             self.reward(self.params.reward_lose)
             self.finish(False)
         elif self.status != self.env.StepStatus.RUNNING:
-            # MiniHack ends "successfully" on a losing event too (Memento's squeaky board, -1)
-            self.finish(self.status != self.env.StepStatus.ABORTED and self._step_reward >= 0)
+            # MiniHack ends a task on a paying event of either sign (Memento's squeaky board is
+            # TASK_SUCCESSFUL with -1): won means the episode ended paying more than nothing
+            self.finish(self.status == self.env.StepStatus.TASK_SUCCESSFUL
+                        and self.episode_return + self._step_reward > 0)
 
     def _grid(self) -> list[str]:
         if self.status == self.env.StepStatus.DEATH:   # NetHack shows its end screens now
@@ -223,7 +226,7 @@ class NetHackTask(GlyphTask):
         self.reward(gain)
         if done:
             self.status = int(info["end_status"])
-        if not self._asking() and self.status != self.env.StepStatus.DEATH:
+        if not self._asking() and not self._ended:
             self._note_message()
 
     def _asking(self) -> bool:
@@ -270,13 +273,17 @@ class NetHackTask(GlyphTask):
                 manager._reward += event.check(self.env, None, None, observation)
 
     def _window(self, observation) -> int:
-        if observation[self.env._program_state_index][0]:   # the game is over: of its end screens
-            if self._death is None:                           # (dump, tombstone) only the cause
-                screen = " ".join(render.text(row) for row in observation[self._ix["tty_chars"]])
-                found = _DEATH_CAUSE.search(render.text(observation[self._ix["message"]]) + " " + screen)
-                self._death = found.group(0).strip() if found else None
-            return ENTER
         msg = render.text(observation[self._ix["message"]])
+        if observation[self.env._program_state_index][0]:   # the game is over: its last messages
+            if not self._death:                               # are kept, its end screens (dump,
+                screen = " ".join(render.text(row) for row in observation[self._ix["tty_chars"]])
+                found = _DEATH_CAUSE.search(msg + " " + screen)   # tombstone) only for the cause
+                self._death = found.group(0).strip() if found else ""
+            if not msg:
+                self._ended = True
+            if msg and not self._ended and (not self._heard or self._heard[-1] != msg):
+                self._heard.append(msg)
+            return ENTER
         if msg:
             if not self._heard or self._heard[-1] != msg:
                 self._heard.append(msg)

@@ -22,6 +22,7 @@ class Level:
 
 
 STAIRS = "reach the staircase down (>)"
+_SQUEAK = "a board squeaks under you or you die"
 _ROOM = "The level is one room. Goal: " + STAIRS + "."
 _OURS = "glyphbench_rl.games.nethack.custom:"   # our levels for the IDs upstream lacks
 _CORRIDOR = ("Rooms joined by corridors; a door or corridor may be hidden (SEARCH finds it) and a door "
@@ -73,19 +74,19 @@ LEVELS: dict[str, Level] = {
     "mazewalk-mapped-9x9": _level("MiniHack-MazeWalk-Mapped-9x9-v0", "A maze shown in full from the start. Goal: " + STAIRS + "."),
     "mazewalk-mapped-15x15": _level("MiniHack-MazeWalk-Mapped-15x15-v0", "A maze shown in full from the start. Goal: " + STAIRS + "."),
     "mazewalk-mapped-45x19": _level("MiniHack-MazeWalk-Mapped-45x19-v0", "A maze shown in full from the start. Goal: " + STAIRS + "."),
-    "river": _level("MiniHack-River-v0", "A river of water lies between you and the stairs; you cannot swim, but pushing a boulder into the water fills that cell. Goal: " + STAIRS + "."),
-    "river-narrow": _level("MiniHack-River-Narrow-v0", "A narrow river of water lies between you and the stairs; you cannot swim, but pushing a boulder into the water fills that cell. Goal: " + STAIRS + "."),
-    "river-lava": _level("MiniHack-River-Lava-v0", "A river of water and lava lies between you and the stairs; walking into lava is deadly; pushing a boulder into water fills that cell. Goal: " + STAIRS + "."),
-    "river-monster": _level("MiniHack-River-Monster-v0", "A river of water lies between you and the stairs, and monsters roam; pushing a boulder into the water fills that cell. Goal: " + STAIRS + "."),
-    "river-monsterlava": _level("MiniHack-River-MonsterLava-v0", "A river of water and lava lies between you and the stairs, and monsters roam; pushing a boulder into water fills that cell. Goal: " + STAIRS + "."),
+    "river": _level("MiniHack-River-v0", "A river of water lies between you and the stairs; you cannot swim, but a boulder pushed into the water (walk into it) usually fills that cell. Goal: " + STAIRS + "."),
+    "river-narrow": _level("MiniHack-River-Narrow-v0", "A narrow river of water lies between you and the stairs; you cannot swim, but a boulder pushed into the water (walk into it) usually fills that cell. Goal: " + STAIRS + "."),
+    "river-lava": _level("MiniHack-River-Lava-v0", "A river of water and lava lies between you and the stairs; walking into lava is deadly; a boulder pushed into water (walk into it) usually fills that cell. Goal: " + STAIRS + "."),
+    "river-monster": _level("MiniHack-River-Monster-v0", "A river of water lies between you and the stairs, and monsters roam; a boulder pushed into the water (walk into it) usually fills that cell. Goal: " + STAIRS + "."),
+    "river-monsterlava": _level("MiniHack-River-MonsterLava-v0", "A river of water and lava lies between you and the stairs, and monsters roam; walking into lava is deadly; a boulder pushed into water (walk into it) usually fills that cell. Goal: " + STAIRS + "."),
     "hidenseek": _level("MiniHack-HideNSeek-v0", "Trees and clouds block the view; a powerful monster is somewhere. Goal: " + STAIRS + " without being caught."),
     "hidenseek-mapped": _level("MiniHack-HideNSeek-Mapped-v0", "Trees and clouds block the view, the layout is shown; a powerful monster is somewhere. Goal: " + STAIRS + " without being caught."),
     "hidenseek-lava": _level("MiniHack-HideNSeek-Lava-v0", "Trees, clouds and lava; a powerful monster is somewhere. Goal: " + STAIRS + " without being caught."),
     "hidenseek-big": _level("MiniHack-HideNSeek-Big-v0", "A large field of trees and clouds; a powerful monster is somewhere. Goal: " + STAIRS + " without being caught."),
-    "memento-short": _level("MiniHack-Memento-Short-F2-v0", "A monster is shown at the start; remember it. At the fork, take the branch where that monster waits and kill it (+1); the other branch holds a squeaky board (-1)."),
-    "memento-f2": _level("MiniHack-Memento-F2-v0", "A monster is shown at the start; remember it. At the end of the long corridor, take the branch where that monster waits and kill it (+1); the other branch holds a squeaky board (-1)."),
-    "memento-f4": _level("MiniHack-Memento-F4-v0", "Monsters are shown at the start; remember them. Of the four branches at the end of the corridor, the one with the remembered monster is right (kill it, +1); the others end on squeaky boards (-1)."),
-    "memento-hard": _level(_OURS + "memento_hard", "Three monsters are shown behind bars at the start; remember them. Of the eight branches at the end of the dark corridor, one is right for that trio of monsters: kill the grid bug at its end (+1); the others end on squeaky boards (-1)."),
+    "memento-short": _level("MiniHack-Memento-Short-F2-v0", "The monster shown behind bars at the start tells which branch of the fork ahead is the right one; remember it. Goal: kill the grid bug (x) at the end of the right branch; the other branch holds a squeaky board.", _SQUEAK),
+    "memento-f2": _level("MiniHack-Memento-F2-v0", "The monster shown behind bars at the start tells which of the two branches at the end of the long dark corridor is the right one; remember it. Goal: kill the grid bug (x) at the end of the right branch; the other branch holds a squeaky board.", _SQUEAK),
+    "memento-f4": _level("MiniHack-Memento-F4-v0", "The two monsters shown behind bars at the start tell which of the four branches at the end of the long dark corridor is the right one; remember them. Goal: kill the grid bug (x) at the end of the right branch; the others hold squeaky boards.", _SQUEAK),
+    "memento-hard": _level(_OURS + "memento_hard", "Three monsters are shown behind bars at the start; remember them. Of the eight branches at the end of the dark corridor, one is right for that trio of monsters: kill the grid bug at its end (+1); the others end on squeaky boards (-1).", _SQUEAK),
     "boxoban-unfiltered": _boxoban("unfiltered", "any solvable level, four boulders"),
     "boxoban-medium": _boxoban("medium", "four boulders, 14 to 17 pushes at best"),
     "boxoban-hard": _boxoban("hard", "four boulders, 18 or more pushes at best"),
@@ -106,8 +107,8 @@ LEVELS: dict[str, Level] = {
     "wod-medium": _level("MiniHack-WoD-Medium-Full-v0", "A wand of death (an unidentified wand) lies next to you; a sleeping minotaur blocks the far end of the corridor. Goal: " + STAIRS + " behind it (PICKUP the wand and ZAP it at the minotaur; the ray flies 7-13 cells straight and bounces off walls)."),
     "wod-hard": _level("MiniHack-WoD-Hard-Full-v0", "A wand of death (an unidentified wand) lies in your room; an awake minotaur comes down the corridor. Goal: " + STAIRS + " at its end (PICKUP the wand and ZAP it at the minotaur; the ray flies 7-13 cells straight and bounces off walls)."),
     "wod-pro": _level("MiniHack-WoD-Pro-Full-v0", "A maze; a wand of death (an unidentified wand) lies somewhere in it and an awake minotaur roams it. Goal: " + STAIRS + " (PICKUP the wand and ZAP it at the minotaur; the ray flies 7-13 cells straight and bounces off walls)."),
-    "lavacross-full": _level("MiniHack-LavaCross-Full-v0", "A river of lava lies between you and the stairs. An item on your side gets you across (a potion or ring of levitation, levitation boots, a wand of cold or a frost horn to freeze the lava). Goal: " + STAIRS + "."),
-    "lavacross-levitate": _level("MiniHack-LavaCross-Levitate-Full-v0", "A river of lava lies between you and the stairs. A levitation item (potion, ring or boots) on your side gets you across. Goal: " + STAIRS + "."),
+    "lavacross-full": _level("MiniHack-LavaCross-Full-v0", "A river of lava lies between you and the stairs. An item on your side (PICKUP it) gets you across: a potion or ring of levitation or levitation boots let you float (QUAFF, WIELD), a wand of cold or a frost horn freezes the lava in a ray (ZAP, APPLY). Goal: " + STAIRS + "."),
+    "lavacross-levitate": _level("MiniHack-LavaCross-Levitate-Full-v0", "A river of lava lies between you and the stairs. A levitation item on your side (a potion, ring or boots: PICKUP it, then QUAFF or WIELD it) lets you float across. Goal: " + STAIRS + "."),
     "lavacross-levitate-potion-inv": _level("MiniHack-LavaCross-Levitate-Potion-Inv-Full-v0", "A river of lava lies between you and the stairs. You carry a potion of levitation: QUAFF it and float across. Goal: " + STAIRS + "."),
-    "lavacross-levitate-ring-inv": _level("MiniHack-LavaCross-Levitate-Ring-Inv-Full-v0", "A river of lava lies between you and the stairs. You carry a ring of levitation: put it on and float across. Goal: " + STAIRS + "."),
+    "lavacross-levitate-ring-inv": _level("MiniHack-LavaCross-Levitate-Ring-Inv-Full-v0", "A river of lava lies between you and the stairs. You carry a ring of levitation: put it on (WIELD) and float across. Goal: " + STAIRS + "."),
 }
