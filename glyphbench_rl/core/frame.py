@@ -53,18 +53,17 @@ def new_frame(grid: tuple[str, ...], legend: tuple[tuple[str, str], ...], hud: s
     _set_hud(frame, hud)
     _set_message(frame, message)
     _set_axes(frame, axes)
-    for set_field, default in _OTHER_FIELDS:
-        set_field(frame, default)
+    _set_above(frame, ())
+    _set_beside(frame, ())
     return frame
 
 
 _new = object.__new__
-_NAMED = ("grid", "legend", "hud", "message", "axes")
-_set_grid, _set_legend, _set_hud, _set_message, _set_axes = (Frame.__dict__[f].__set__ for f in _NAMED)
-_OTHER_FIELDS = tuple((Frame.__dict__[f.name].__set__, f.default)
-                      for f in dataclasses.fields(Frame) if f.name not in _NAMED)
-assert all(default is not dataclasses.MISSING for _, default in _OTHER_FIELDS), \
-    "new_frame gives every Frame field past the first five a plain default"
+_NAMED = ("grid", "legend", "hud", "message", "axes", "above", "beside")
+_set_grid, _set_legend, _set_hud, _set_message, _set_axes, _set_above, _set_beside = (
+    Frame.__dict__[f].__set__ for f in _NAMED)
+assert [f.name for f in dataclasses.fields(Frame)] == list(_NAMED) and all(
+    f.default == () for f in dataclasses.fields(Frame)[5:]), "new_frame sets every Frame field"
 
 
 def build_frame(grid: Sequence[str], vocab: Mapping[str, str], hud: str, message: str = "",

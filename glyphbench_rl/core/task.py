@@ -277,14 +277,15 @@ class GlyphTask(gym.Env[str, int]):
                                f"{self.turn}/{self.max_turns}); call reset() to start another")
 
     def _finish_step(self, reward: float, *, forfeit: bool, reason: str | None = None):
-        if self.tier == "standard":
-            total = self.episode_return + reward
-            if total > 1.0 + _RETURN_EPS or total < -1.0 - _RETURN_EPS:
-                self._clamped = True
-                reward = min(1.0, max(-1.0, total)) - self.episode_return
-        self.episode_return += reward
-        if abs(reward) > _RETURN_EPS:       # every paying turn says so, once, for every game
-            self._messages.append(f"Reward {reward:+.3g}")
+        if reward:   # (most turns pay nothing: the return, already in bounds, stays)
+            if self.tier == "standard":
+                total = self.episode_return + reward
+                if total > 1.0 + _RETURN_EPS or total < -1.0 - _RETURN_EPS:
+                    self._clamped = True
+                    reward = min(1.0, max(-1.0, total)) - self.episode_return
+            self.episode_return += reward
+            if abs(reward) > _RETURN_EPS:       # every paying turn says so, once, for every game
+                self._messages.append(f"Reward {reward:+.3g}")
         if self.turn >= self.max_turns and not self._terminated:
             self._truncated = True
         self._frame = self._build_frame()

@@ -76,6 +76,7 @@ def test_same_cell_is_a_draw():
     for r, c in ((1, 3), (3, 3), (2, 4)):
         task.cells[r][c] = WALL
         task.blocked |= 1 << task.index(r, c)
+    task.redraw()
     _, reward, term, _, info = task.step("RIGHT")
     assert term and reward == 0.0 and task.won is False
     assert info["frame"].message == "Both bikes crashed. Draw."
