@@ -46,7 +46,7 @@ def new_frame(grid: tuple[str, ...], legend: tuple[tuple[str, str], ...], hud: s
     """``Frame(grid, legend, hud, message, axes)`` without the frozen dataclass's ``__init__``
     (which sets each field through ``object.__setattr__``): a third of the cost, for the one
     Frame every step makes. The fields are set through their slots, so the object is the same;
-    any further field takes its default."""
+    ``above`` and ``beside`` get their default, empty (checked against Frame's fields below)."""
     frame = _new(Frame)
     _set_grid(frame, grid)
     _set_legend(frame, legend)
@@ -102,13 +102,15 @@ def legend_of(text: str, entries: Sequence[tuple[str, str]],
             if counted == len(text):
                 return hint
     legend = []
-    counted = 0
+    counted, size = 0, len(text)
     for entry in entries:   # (the legend holds the entries themselves: equal legends compare fast)
         g = entry[0]
         if g in text:
             legend.append(entry)
             counted += text.count(g)
-    if counted != len(text):
+            if counted == size:   # every character is accounted for: no later glyph occurs
+                break
+    if counted != size:
         missing = "".join(sorted(set(text).difference(g for g, _ in entries)))
         raise RuntimeError(f"glyphs {missing!r} are on the grid but have no legend entry")
     return tuple(legend)

@@ -42,6 +42,7 @@ class MemoryMatch(GlyphTask):
         p = self.params
         self.pairs = p.rows * p.cols // 2
         self._vocab = {DOWN: "face down"} | {FACES[k]: "card" for k in range(self.pairs)}
+        self._cells = [divmod(i, p.cols) for i in range(p.rows * p.cols)]   # card -> (row, column)
 
     def vocab(self):
         return self._vocab
@@ -61,22 +62,23 @@ class MemoryMatch(GlyphTask):
         self.showing: list[int] = []            # face-up cards not yet matched (0, 1 or 2)
         self.found = 0
         self._hud_text = f"Pairs 0/{self.pairs}"
-        cols = self.params.cols
-        self._glyphs = [[DOWN] * cols for _ in range(self.params.rows)]   # each row's glyphs
-        self._lines = ["".join(row) for row in self._glyphs]              # and joined
+        self._face_up = [FACES[f] for f in self.faces]   # each card's glyph face up
+        # the board: each row's glyphs, and each row joined (again when one of its cards turns)
+        self._glyphs = [[DOWN] * self.params.cols for _ in range(self.params.rows)]
+        self._lines = ["".join(row) for row in self._glyphs]
 
     def _act(self, action: int) -> None:
         up, showing = self.up, self.showing
         if len(showing) == 2:             # a failed pair turns back first
             for i in showing:
                 up[i] = False
-                self._draw(i)
+                self._draw(i, DOWN)
             showing = self.showing = []
         if up[action]:
             self.say("That card is already face up.")
             return
         up[action] = True
-        self._draw(action)
+        self._draw(action, self._face_up[action])
         showing.append(action)
         if len(showing) == 2:
             a, b = showing
@@ -93,11 +95,11 @@ class MemoryMatch(GlyphTask):
             else:
                 self.say("No match.")
 
-    def _draw(self, card: int) -> None:
-        """Redraw ``card`` (face up or down) and join its row again."""
-        r, c = divmod(card, self.params.cols)
+    def _draw(self, card: int, glyph: str) -> None:
+        """Show ``glyph`` for ``card`` and join its row again."""
+        r, c = self._cells[card]
         row = self._glyphs[r]
-        row[c] = FACES[self.faces[card]] if self.up[card] else DOWN
+        row[c] = glyph
         self._lines[r] = "".join(row)
 
     def _grid(self) -> list[str]:
