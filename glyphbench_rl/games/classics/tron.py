@@ -2,9 +2,11 @@
 
 Occupancy is one Python int bitmask over a board padded with a ring of blocked cells (index
 (r + 1) * W + c + 1), so the opponent's flood fill is a few shifts per BFS layer over the whole
-board instead of a walk over cells. The bikes' heads are kept as such indices; the picture is
-``cells`` (a list of glyphs per row) and ``rows`` (each row joined), a row rejoined when a bike
-changes it.
+board instead of a walk over cells. Most turns need no fill: a table over the 8 cells round
+the opponent's head gives its safe moves and whether the free cells among those 8 already join
+them all (then the moves lead into one region). The bikes' heads are kept as such indices; the
+picture is ``cells`` (a list of glyphs per row) and ``rows`` (each row joined), a row joined
+again when a bike changes it.
 """
 
 from __future__ import annotations
@@ -182,7 +184,7 @@ class Tron(VersusTask):
         head, or all of them when every one is."""
         you, o = self.heads
         width, steps = self.W, self.steps
-        if abs(o - you) > 2 * width:   # (too far apart for any move to be)
+        if abs(o - you) > 2 * width:   # (too far apart for a move to end next to your head)
             return list(moves)
         return [d for d in moves if abs(o + steps[d] - you) not in (1, width)] or list(moves)
 
