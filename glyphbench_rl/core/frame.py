@@ -46,25 +46,24 @@ def new_frame(grid: tuple[str, ...], legend: tuple[tuple[str, str], ...], hud: s
     """``Frame(grid, legend, hud, message, axes)`` without the frozen dataclass's ``__init__``
     (which sets each field through ``object.__setattr__``): a third of the cost, for the one
     Frame every step makes. The fields are set through their slots, so the object is the same;
-    any further field takes its default."""
+    ``above`` and ``beside`` get their default, empty (checked against Frame's fields below)."""
     frame = _new(Frame)
     _set_grid(frame, grid)
     _set_legend(frame, legend)
     _set_hud(frame, hud)
     _set_message(frame, message)
     _set_axes(frame, axes)
-    for set_field, default in _OTHER_FIELDS:
-        set_field(frame, default)
+    _set_above(frame, ())
+    _set_beside(frame, ())
     return frame
 
 
 _new = object.__new__
-_NAMED = ("grid", "legend", "hud", "message", "axes")
-_set_grid, _set_legend, _set_hud, _set_message, _set_axes = (Frame.__dict__[f].__set__ for f in _NAMED)
-_OTHER_FIELDS = tuple((Frame.__dict__[f.name].__set__, f.default)
-                      for f in dataclasses.fields(Frame) if f.name not in _NAMED)
-assert all(default is not dataclasses.MISSING for _, default in _OTHER_FIELDS), \
-    "new_frame gives every Frame field past the first five a plain default"
+_NAMED = ("grid", "legend", "hud", "message", "axes", "above", "beside")
+_set_grid, _set_legend, _set_hud, _set_message, _set_axes, _set_above, _set_beside = (
+    Frame.__dict__[f].__set__ for f in _NAMED)
+assert [f.name for f in dataclasses.fields(Frame)] == list(_NAMED) and all(
+    f.default == () for f in dataclasses.fields(Frame)[5:]), "new_frame sets every Frame field"
 
 
 def build_frame(grid: Sequence[str], vocab: Mapping[str, str], hud: str, message: str = "",
@@ -103,13 +102,15 @@ def legend_of(text: str, entries: Sequence[tuple[str, str]],
             if counted == len(text):
                 return hint
     legend = []
-    counted = 0
+    counted, size = 0, len(text)
     for entry in entries:   # (the legend holds the entries themselves: equal legends compare fast)
         g = entry[0]
         if g in text:
             legend.append(entry)
             counted += text.count(g)
-    if counted != len(text):
+            if counted == size:   # every character is accounted for: no later glyph occurs
+                break
+    if counted != size:
         missing = "".join(sorted(set(text).difference(g for g, _ in entries)))
         raise RuntimeError(f"glyphs {missing!r} are on the grid but have no legend entry")
     return tuple(legend)

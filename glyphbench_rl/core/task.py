@@ -86,6 +86,7 @@ class GlyphTask(gym.Env[str, int]):
         self._init()
         self.actions: ActionSet = self._make_actions()
         self.action_space = gym.spaces.Discrete(len(self.actions))
+        self._n_actions = len(self.actions)
         chars = set(string.printable) - set("\t\r\x0b\x0c") | set(self.extra_chars)
         chars.update("".join(self.vocab()))
         self.observation_space = gym.spaces.Text(max_length=200_000, min_length=1,
@@ -200,7 +201,8 @@ class GlyphTask(gym.Env[str, int]):
     def step(self, action: int | str) -> tuple[str, float, bool, bool, dict]:
         if self._terminated or self._truncated or not self._started:
             self._check_running()
-        index = self.actions.index(action)
+        index = (action if type(action) is int and 0 <= action < self._n_actions   # the usual case
+                 else self.actions.index(action))
         self.turn += 1
         self._step_reward = 0.0
         self._messages = []
@@ -277,14 +279,15 @@ class GlyphTask(gym.Env[str, int]):
                                f"{self.turn}/{self.max_turns}); call reset() to start another")
 
     def _finish_step(self, reward: float, *, forfeit: bool, reason: str | None = None):
-        if self.tier == "standard":
-            total = self.episode_return + reward
-            if total > 1.0 + _RETURN_EPS or total < -1.0 - _RETURN_EPS:
-                self._clamped = True
-                reward = min(1.0, max(-1.0, total)) - self.episode_return
-        self.episode_return += reward
-        if abs(reward) > _RETURN_EPS:       # every paying turn says so, once, for every game
-            self._messages.append(f"Reward {reward:+.3g}")
+        if reward:   # (most turns pay nothing: the return, already in bounds, stays)
+            if self.tier == "standard":
+                total = self.episode_return + reward
+                if total > 1.0 + _RETURN_EPS or total < -1.0 - _RETURN_EPS:
+                    self._clamped = True
+                    reward = min(1.0, max(-1.0, total)) - self.episode_return
+            self.episode_return += reward
+            if abs(reward) > _RETURN_EPS:       # every paying turn says so, once, for every game
+                self._messages.append(f"Reward {reward:+.3g}")
         if self.turn >= self.max_turns and not self._terminated:
             self._truncated = True
         self._frame = self._build_frame()
@@ -326,7 +329,8 @@ class GlyphTask(gym.Env[str, int]):
                 self._legend_reused = True
             self._legend, self._legend_text = seen
         self._legend_grid = grid
-        return new_frame(grid, self._legend, hud, " ".join(self._messages), self.axes)
+        messages = self._messages
+        return new_frame(grid, self._legend, hud, " ".join(messages) if messages else "", self.axes)
 
     def _observation(self) -> str:
         """The current frame's text (its legend line kept from the frame before when unchanged)."""

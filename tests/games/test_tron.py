@@ -1,3 +1,5 @@
+import random
+
 import pytest
 
 import glyphbench_rl
@@ -76,6 +78,7 @@ def test_same_cell_is_a_draw():
     for r, c in ((1, 3), (3, 3), (2, 4)):
         task.cells[r][c] = WALL
         task.blocked |= 1 << task.index(r, c)
+    task.redraw()
     _, reward, term, _, info = task.step("RIGHT")
     assert term and reward == 0.0 and task.won is False
     assert info["frame"].message == "Both bikes crashed. Draw."
@@ -110,6 +113,28 @@ def test_opponent_prefers_the_larger_region():
             task.blocked |= 1 << task.index(r, oc - 1)
     safe = task.opponent_safe()
     assert task.opponent_best(safe) == [2] and 2 in safe
+
+
+def test_ring_table_agrees_with_the_fill():
+    """The safe moves and the one-region shortcut from the table round the opponent's head give
+    the flood fill's choice, on random boards."""
+    rng = random.Random(0)
+    task = glyphbench_rl.make(ID, size=8, walls=0)
+    task.reset(seed=0)
+    n, shortcuts = task.params.size, 0
+    for _ in range(400):
+        density = rng.random() * 0.6
+        task.blocked = task.border | sum(1 << task.index(r, c) for r in range(n) for c in range(n)
+                                         if rng.random() < density)
+        task.pos = rng.sample([(r, c) for r in range(n) for c in range(n)], 2)
+        for head in task.heads:
+            task.blocked |= 1 << head
+        o = task.heads[1]
+        safe, joined = task.ring[task.around(o)]
+        assert safe == tuple(d for d, step in enumerate(task.steps) if not task.blocked >> o + step & 1)
+        assert task.opponent_best(safe, joined) == task.opponent_best(safe)
+        shortcuts += joined and len(safe) > 1
+    assert shortcuts > 50
 
 
 def test_bad_params():

@@ -42,6 +42,7 @@ class MemoryMatch(GlyphTask):
         p = self.params
         self.pairs = p.rows * p.cols // 2
         self._vocab = {DOWN: "face down"} | {FACES[k]: "card" for k in range(self.pairs)}
+        self._cells = [divmod(i, p.cols) for i in range(p.rows * p.cols)]   # card -> (row, column)
 
     def vocab(self):
         return self._vocab
@@ -60,25 +61,31 @@ class MemoryMatch(GlyphTask):
         self.up = [False] * len(self.faces)     # face up: found pairs and the cards on show
         self.showing: list[int] = []            # face-up cards not yet matched (0, 1 or 2)
         self.found = 0
-        self._draw()
+        self._hud_text = f"Pairs 0/{self.pairs}"
+        self._face_up = [FACES[f] for f in self.faces]   # each card's glyph face up
+        # the board: each row's glyphs, and each row joined (again when one of its cards turns)
+        self._glyphs = [[DOWN] * self.params.cols for _ in range(self.params.rows)]
+        self._lines = ["".join(row) for row in self._glyphs]
 
     def _act(self, action: int) -> None:
-        turned = []
-        if len(self.showing) == 2:             # a failed pair turns back first
-            for i in self.showing:
-                self.up[i] = False
-            turned, self.showing = self.showing, []
-        if self.up[action]:
+        up, showing = self.up, self.showing
+        if len(showing) == 2:             # a failed pair turns back first
+            for i in showing:
+                up[i] = False
+                self._draw(i, DOWN)
+            showing = self.showing = []
+        if up[action]:
             self.say("That card is already face up.")
-            self._draw(turned)
             return
-        self.up[action] = True
-        self.showing.append(action)
-        if len(self.showing) == 2:
-            a, b = self.showing
+        up[action] = True
+        self._draw(action, self._face_up[action])
+        showing.append(action)
+        if len(showing) == 2:
+            a, b = showing
             if self.faces[a] == self.faces[b]:
                 self.showing = []
                 self.found += 1
+                self._hud_text = f"Pairs {self.found}/{self.pairs}"
                 self.reward(self.params.pair_share / self.pairs)
                 self.say("A pair.")
                 if self.found == self.pairs:
@@ -87,28 +94,19 @@ class MemoryMatch(GlyphTask):
                     self.finish(won=True)
             else:
                 self.say("No match.")
-        self._draw(turned + [action])
 
-    def _draw(self, cells=None) -> None:
-        """Redraw ``cells`` and the rows holding them (every cell when None)."""
-        cols, faces, up = self.params.cols, self.faces, self.up
-        if cells is None:
-            self._glyphs = [[DOWN] * cols for _ in range(self.params.rows)]   # each row's glyphs
-            self._lines = [""] * self.params.rows
-            cells = range(len(faces))
-        rows = set()
-        for i in cells:
-            r = i // cols
-            self._glyphs[r][i - r * cols] = FACES[faces[i]] if up[i] else DOWN
-            rows.add(r)
-        for r in rows:
-            self._lines[r] = "".join(self._glyphs[r])
+    def _draw(self, card: int, glyph: str) -> None:
+        """Show ``glyph`` for ``card`` and join its row again."""
+        r, c = self._cells[card]
+        row = self._glyphs[r]
+        row[c] = glyph
+        self._lines[r] = "".join(row)
 
     def _grid(self) -> list[str]:
         return self._lines
 
     def _hud(self) -> str:
-        return f"Pairs {self.found}/{self.pairs}"
+        return self._hud_text
 
 
 register_variants(MemoryMatch, "Classics", {
