@@ -40,7 +40,7 @@ MEANINGS = {"floor of a room": "floor", "dark part of a room": "dark floor", "st
 PREFERRED = {"doorway": "·", "broken door": "·", "open door": "'", "dark floor": ",",
              "tree": "τ", "water": "~", "molten lava": "≈"}
 # spare single-width symbols for a meaning whose NetHack character is taken
-SPARE = "¤§µøßðþæ¢£¥ΩΣΔΘΛΞΠΦΨλπφψ±×÷¬¿¡ÆØÞ"
+SPARE = "§µøßðæ¢£Δλπφ±×¬¿¤þ¥ΩΣΘΛΞΠΦΨψ÷¡ÆØÞ"   # (one-token symbols first)
 
 _SHORTEN = ((re.compile(r"^(?:an?|the) "), ""), (re.compile(r"\buncursed "), ""),
             (re.compile(r" \(weapons? in hands?\)"), " (wielded)"),
@@ -48,9 +48,11 @@ _SHORTEN = ((re.compile(r"^(?:an?|the) "), ""), (re.compile(r"\buncursed "), "")
             (re.compile(r" \(alternate weapon; not wielded\)"), " (alternate)"),
             (re.compile(r" \(in quiver(?: pouch)?\)"), " (quivered)"),
             (re.compile(r" \(on (?:left|right) hand\)"), " (worn)"))
-# and tersely: no blessed/uncursed (cursed stays), enchantments, or weapon slots no action uses
+# and tersely: no blessed/uncursed (cursed stays), enchantments, or weapon slots no action uses;
+# "wielded"/"worn" said before the name (fewer tokens than the bracket after it)
 _TERSE = ((re.compile(r"\b(?:blessed|uncursed) "), ""), (re.compile(r"(?<![\w+-])[+-]\d+ "), ""),
           (re.compile(r" \((?:alternate weapon; not wielded|in quiver(?: pouch)?)\)"), ""))
+_IN_USE = re.compile(r"^(.*) \((wielded|worn)\)$")
 
 
 def text(row: np.ndarray) -> str:
@@ -60,13 +62,14 @@ def text(row: np.ndarray) -> str:
 
 def item_name(s: str, terse: bool = False) -> str:
     """An item's name without article and "uncursed", its slot said short; ``terse``: also
-    without "blessed", enchantment, and the alternate-weapon and quiver slots."""
+    without "blessed", enchantment, and the alternate-weapon and quiver slots, and "wielded" or
+    "worn" first (``wielded short sword``)."""
     if terse:
         for pattern, repl in _TERSE:
             s = pattern.sub(repl, s)
     for pattern, repl in _SHORTEN:
         s = pattern.sub(repl, s)
-    return s
+    return _IN_USE.sub(r"\2 \1", s) if terse else s
 
 
 def inventory(letters: np.ndarray, strs: np.ndarray, terse: bool = False) -> list[tuple[str, str]]:
