@@ -158,7 +158,7 @@ class NetHackTask(GlyphTask):
         self._last_move = (1, 0)
         self.glyph_map = render.Glyphs()
         self.painter = render.Painter(self.glyph_map, _VARYING)
-        self._inv = (b"", "")
+        self._inv = ((b"", b""), "")
         self.view = self.painter.view
         self._note_message()
         self._messages = self._heard
@@ -182,8 +182,9 @@ class NetHackTask(GlyphTask):
             if self.status or not self._asking():
                 break
             self._press(self._answer(self._question()))
-        while not self.status and self._asking():
-            self._press(ESC)
+        else:
+            while not self.status and self._asking():
+                self._press(ESC)
         self._messages.extend(self._heard)
         self._score()
 
@@ -208,7 +209,7 @@ class NetHackTask(GlyphTask):
             y0, y1, x0, x1 = self._bounds
             hud += f" | View cols {x0}-{x1 - 1} rows {y0}-{y1 - 1} of 79x21"
         letters, strs = self.obs("inv_letters"), self.obs("inv_strs")
-        key = letters.tobytes() + strs.tobytes()      # (the inventory text only when they change)
+        key = (letters.tobytes(), strs.tobytes())     # (the inventory text only when they change)
         if key != self._inv[0]:
             inv = render.inventory(letters, strs, self.terse_items)
             names = (v for _, v in inv) if self.terse_items else (f"{k} {v}" for k, v in inv)
@@ -345,8 +346,7 @@ def _letters(spec: str) -> list[str]:
     return out
 
 
-_DOOR_GLYPHS = np.array([nethack.GLYPH_CMAP_OFF + i for i in range(12, 16)] +   # S_vodoor..S_hcdoor
-                        [nethack.GLYPH_CMAP_OFF + 11])                        # S_ndoor (doorway)
+_DOOR_GLYPHS = np.array([nethack.GLYPH_CMAP_OFF + i for i in range(12, 17)])   # S_ndoor (doorway)..S_hcdoor
 
 # glyphs whose screen description can differ from cell to cell or turn to turn (the renderer looks
 # again every turn): monsters, objects, warnings and statues, and of the map features doorways

@@ -16,6 +16,8 @@ Light: numpy only (no ``nle``), so the rules here are testable on synthetic arra
 from __future__ import annotations
 
 import re
+from functools import lru_cache
+
 import numpy as np
 
 ROWS, COLS = 21, 79
@@ -60,6 +62,7 @@ def text(row: np.ndarray) -> str:
     return row.tobytes().split(b"\0", 1)[0].decode("latin-1").strip()
 
 
+@lru_cache(maxsize=4096)
 def item_name(s: str, terse: bool = False) -> str:
     """An item's name without article and "uncursed", its slot said short; ``terse``: also
     without "blessed", enchantment, and the alternate-weapon and quiver slots, and "wielded" or
@@ -211,9 +214,12 @@ def grid_rows(chars: np.ndarray, glyphs: np.ndarray, descriptions: np.ndarray, b
 def _meaning(chars: np.ndarray, descriptions: np.ndarray, y: int, x: int, hero: tuple[int, int]) -> tuple[int, str]:
     """(NetHack character, meaning) of map cell (y, x)."""
     nh = int(chars[y, x])
-    if nh == 32:
-        return nh, BLANK_MEANING
-    return nh, describe(text(descriptions[y, x]), (x, y) == hero)
+    return nh, HERO if (x, y) == hero and nh != 32 else _cell_meaning(nh, descriptions[y, x])
+
+
+def _cell_meaning(nh: int, description: np.ndarray) -> str:
+    """The meaning of a cell other than the hero's: its NetHack character and description."""
+    return BLANK_MEANING if nh == 32 else describe(text(description), False)
 
 
 class Painter:
@@ -239,7 +245,7 @@ class Painter:
         self._by_glyph: dict[int, int] = {}             # glyph id -> character, glyphs that do not vary
         self._lut = np.zeros(size, np.uint32)           # the same as a table (0: none yet)
         self._by_look: dict[tuple, int] = {}            # (glyph id, NetHack char, description) -> character
-        self._varying: list[int] = []                   # cells in view showing a varying glyph
+        self._varying: dict[int, bytes] = {}            # cells in view showing a varying glyph: their text
         self._hero = -1
         self._hero_codes: dict[int, int] = {}           # the hero's NetHack char -> character
         self._rows: dict[int, str] = {}                 # decoded rows of the columns of ``bounds``
@@ -282,13 +288,18 @@ class Painter:
         else:
             pending = [c for c in changed if y0 <= c // COLS < y1 and x0 <= c % COLS < x1]
         todo = []
-        if self._varying:
-            for c in self._varying:
-                if y0 <= c // COLS < y1 and x0 <= c % COLS < x1:
-                    todo.append(c)
-                else:                      # out of view: worked out again on its return
-                    codes[c] = 0
-            self._varying = []
+        descs = descriptions.reshape(ROWS * COLS, -1)
+        if self._varying:                  # the same glyph: worked out again if its text changed
+            keep = {}
+            for c, seen in self._varying.items():
+                if not (y0 <= c // COLS < y1 and x0 <= c % COLS < x1):
+                    codes[c] = 0           # out of view: worked out again on its return
+                elif codes[c]:             # (0: its glyph changed, it is pending)
+                    if descs[c].tobytes() == seen:
+                        keep[c] = seen
+                    else:
+                        todo.append(c)
+            self._varying = keep
         if pending:
             rows, hero_cell = self._rows, self._hero
             if len(pending) > 32:          # (a new or moved window: a table look-up at once)
@@ -302,8 +313,8 @@ class Painter:
             else:
                 by_glyph = self._by_glyph
                 for c, g in zip(pending, flat[pending].tolist()):
-                    code = by_glyph.get(g)
-                    if code is None or c == hero_cell:
+                    code = by_glyph.get(g) if c != hero_cell else self._hero_codes.get(int(chars.flat[c]))
+                    if code is None:
                         todo.append(c)
                     else:
                         codes[c] = code
@@ -312,30 +323,30 @@ class Painter:
         if todo:
             if len(todo) > 1:
                 todo = sorted(set(todo), key=lambda c: (int(flat[c]), c))
-            self._work_out(todo, flat, chars, descriptions)
+            self._work_out(todo, flat, chars, descs)
         return bounds
 
-    def _work_out(self, cells: list[int], flat: np.ndarray, chars: np.ndarray, descriptions: np.ndarray) -> None:
+    def _work_out(self, cells: list[int], flat: np.ndarray, chars: np.ndarray, descs: np.ndarray) -> None:
         codes, varies, by_glyph, by_look = self._codes, self._varies, self._by_glyph, self._by_look
-        descs = descriptions.reshape(ROWS * COLS, -1)
         nh_flat = chars.reshape(-1)
         for c in cells:
             g = int(flat[c])
+            nh = int(nh_flat[c])
             if c == self._hero:
-                nh = int(nh_flat[c])
                 code = self._hero_codes.get(nh)
                 if code is None:
                     code = self._hero_codes[nh] = ord(self.assign.char(nh, HERO if nh != 32 else BLANK_MEANING))
             elif varies[g]:
-                key = (g, int(nh_flat[c]), descs[c].tobytes())
+                seen = descs[c].tobytes()
+                key = (g, nh, seen)
                 code = by_look.get(key)
                 if code is None:
-                    code = by_look[key] = ord(self.assign.char(*_meaning(chars, descriptions, c // COLS, c % COLS, (-1, -1))))
-                self._varying.append(c)
+                    code = by_look[key] = ord(self.assign.char(nh, _cell_meaning(nh, descs[c])))
+                self._varying[c] = seen
             else:
                 code = by_glyph.get(g)
                 if code is None:
-                    code = by_glyph[g] = ord(self.assign.char(*_meaning(chars, descriptions, c // COLS, c % COLS, (-1, -1))))
+                    code = by_glyph[g] = ord(self.assign.char(nh, _cell_meaning(nh, descs[c])))
                     self._lut[g] = code
             if codes[c] != code:
                 codes[c] = code
