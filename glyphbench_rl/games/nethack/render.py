@@ -5,12 +5,17 @@ Light: numpy only (no ``nle``), so the rules here are testable on synthetic arra
 - **Grid.** NetHack draws on a 21x79 map. We show the bounding box of every cell seen so far in
   the episode; a box wider or taller than the window (``VIEW``)
   is shown as a window of that size around the hero, and the HUD then says where the window is.
+  Cells NetHack leaves blank (not seen, dark, solid rock) are ``█``: one token, fewer in runs.
+  ``grid_rows`` states the drawing; :class:`Painter` keeps it up to date a few cells a turn.
 - **Glyphs.** NetHack reuses characters (``.`` is floor and doorway, ``d`` a jackal and a coyote).
   A :class:`Glyphs` assigns each (character, description) pair one grid character for the whole
   episode: NetHack's own character while it is free, else one from a pool of spare symbols. So
   the legend never maps one character to two meanings, and a meaning keeps its character.
+  Meanings are NetHack's screen descriptions said short (``floor``, ``stairs down``, ``apple``).
 - **HUD.** Hit points, armour class, hunger and conditions from ``blstats``; the inventory as
-  ``letter name`` pairs, shortened (articles, "uncursed", and the long "(weapon in hand)" forms).
+  ``letter name`` pairs, shortened (articles, "uncursed", and the long "(weapon in hand)" forms);
+  tersely (MiniHack) names only, without blessed/uncursed, enchantment and the weapon slots no
+  action uses, ``wielded``/``worn`` first.
 """
 
 from __future__ import annotations
