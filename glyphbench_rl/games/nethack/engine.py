@@ -417,4 +417,4 @@ class MiniHackTask(NetHackTask):
             cls = getattr(importlib.import_module(module), name)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            return lean(cls)(**kwargs)          # (upstream's class, one array copy a step)
+            return lean(cls)(**kwargs)          # (upstream's class, copying less a step: lean.py)
