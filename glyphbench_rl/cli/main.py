@@ -134,9 +134,15 @@ def cmd_bench(args) -> int:
     progress = (lambda line: print(f"  {line}", file=sys.stderr)) if args.progress else None
     results = bench.bench(task_ids, runs=args.runs, steps=args.steps, rounds=args.rounds,
                           count_tokens=counter, progress=progress)
-    print(bench.format_table(results))
+    engine_ids = [r.task_id for r in results if r.raw_step_us is not None]
+    memory = bench.live_memory(engine_ids, args.live) if engine_ids and args.live else None
+    print(bench.format_table(results, memory))
     if args.json:
-        Path(args.json).write_text(json.dumps(bench.to_json(results), indent=1))
+        rows = bench.to_json(results)
+        for row in rows:            # (the memory figure belongs to the engine tasks together)
+            if memory and row["task_id"] in engine_ids:
+                row["live_memory"] = memory
+        Path(args.json).write_text(json.dumps(rows, indent=1))
     return 0
 
 
@@ -178,6 +184,9 @@ def build_parser() -> argparse.ArgumentParser:
     s.add_argument("--rounds", type=int, default=3,
                    help="repeats of the whole measurement; the least disturbed is kept (default 3)")
     s.add_argument("--tokenizer", help="'smollm2', a tokenizer.json path or a HF tokenizer name")
+    s.add_argument("--live", type=int, default=64,
+                   help="engine tasks (NetHack, MiniHack): memory per episode with this many open "
+                        "at once, in a fresh process (default 64; 0: skip)")
     s.add_argument("--json", help="also write the results to this file")
     s.add_argument("--progress", action="store_true")
     s.set_defaults(func=cmd_bench)

@@ -20,6 +20,7 @@ from __future__ import annotations
 import importlib
 import re
 import warnings
+import weakref
 from dataclasses import dataclass
 from typing import Any, Callable
 
@@ -38,6 +39,7 @@ try:
         warnings.simplefilter("ignore")
         from nle import nethack
         from nle.env.base import NLE
+        from nle.env.tasks import NetHackStaircase
         import minihack  # noqa: F401  (registers MiniHack's gymnasium IDs)
         from minihack.reward_manager import MessageEvent, RewardManager
         import gymnasium as gym
@@ -45,6 +47,11 @@ except ImportError as e:   # pragma: no cover - depends on the installed extras
     raise MissingExtraError(
         f"the MiniHack and NetHack tasks need the 'nethack' extra ({e}): "
         f"pip install 'glyphbench_rl[nethack]'") from None
+from .lean import lean, turn_function   # noqa: E402  (needs minihack)
+
+# NLE's StepStatus values (int compares: the enum's members cost an attribute search a turn)
+DEATH, RUNNING, ABORTED = int(NLE.StepStatus.DEATH), int(NLE.StepStatus.RUNNING), int(NLE.StepStatus.ABORTED)
+SUCCESS = int(NetHackStaircase.StepStatus.TASK_SUCCESSFUL)
 
 ESC, ENTER, SPACE = 27, 13, 32
 PRAY_KEY = 0x80 | ord("p")          # M-p, NetHack's #pray
@@ -55,6 +62,7 @@ MOVES = (("MOVE_N", "k", "north"), ("MOVE_S", "j", "south"), ("MOVE_E", "l", "ea
          ("MOVE_SW", "b", "south-west"))
 DIRECTION_KEYS = {(0, -1): "k", (0, 1): "j", (1, 0): "l", (-1, 0): "h", (1, -1): "u", (-1, -1): "y",
                   (1, 1): "n", (-1, 1): "b"}
+MOVE_DIRECTIONS = {n: next(d for d, key in DIRECTION_KEYS.items() if key == k) for n, k, _ in MOVES}
 COMMANDS = (
     ("WAIT", ".", "rest one turn"),
     ("SEARCH", "s", "search the cells around you for hidden doors and traps"),
@@ -96,6 +104,8 @@ class NetHackTask(GlyphTask):
     KEYS = KEYS                  # action name -> NetHack key (a task with other actions brings its own)
     extra_chars = render.SPARE + render.BLANK + "".join(render.PREFERRED.values())
     default_max_turns = 512
+    terse_items = False        # inventory names only (no letters), without blessed/uncursed,
+                               # enchantment or weapon slots
 
     # -- the environment ------------------------------------------------------------------------
     def _new_env(self) -> NLE:
@@ -110,10 +120,14 @@ class NetHackTask(GlyphTask):
 
     def _open(self) -> NLE:
         env = self._new_env()
-        env._perform_known_steps = self._known_steps   # records --More-- texts (see _known_steps)
+        # records --More-- texts (see _known_steps); through a weak reference, so that the env
+        # does not keep its task alive: a task nobody holds is freed at once, its NetHack with it
+        task = weakref.ref(self)
+        env._perform_known_steps = lambda obs, done, exceptions=True: task()._known_steps(obs, done, exceptions)
         # a won episode stays in the game (so its last frame shows the level, not the end
         # screens); the next reset starts a new game all the same
         env._quit_game = lambda observation, done: None
+        self._turn = turn_function(env)                # env.step without the dicts we do not read
         self._index = {int(a): i for i, a in enumerate(env.actions)}
         keys = env._observation_keys
         self._ix = {k: keys.index(k) for k in ("chars", "glyphs", "screen_descriptions", "blstats",
@@ -125,6 +139,11 @@ class NetHackTask(GlyphTask):
         if self.env is not None:
             self.env.close()
             self.env = None
+
+    def raw_replay(self):
+        """The benchmark's raw step: upstream's environment on the keys of this task's turns."""
+        from .rawstep import RawReplay
+        return RawReplay(self)
 
     def obs(self, key: str) -> np.ndarray:
         """NLE's current array ``key`` (``chars``, ``blstats``, ``message`` ...)."""
@@ -147,7 +166,9 @@ class NetHackTask(GlyphTask):
         self.status = 0                       # NLE/MiniHack StepStatus of the last command
         self._last_move = (1, 0)
         self.glyph_map = render.Glyphs()
-        self.view = render.MapView()
+        self.painter = render.Painter(self.glyph_map, _VARYING)
+        self._inv = ((b"", b""), "")
+        self.view = self.painter.view
         self._note_message()
         self._messages = self._heard
 
@@ -163,8 +184,9 @@ class NetHackTask(GlyphTask):
             if self.status or not self._asking():
                 break
             self._press(self._answer(self._question()))
-        while not self.status and self._asking():
-            self._press(ESC)
+        else:
+            while not self.status and self._asking():
+                self._press(ESC)
         self._messages.extend(self._heard)
         self._score()
 
@@ -176,43 +198,44 @@ class NetHackTask(GlyphTask):
             self._press(key[1])
         else:
             self._press(self.KEYS[name])
-        if name.startswith("MOVE_"):
-            self._last_move = next(d for d, k in DIRECTION_KEYS.items() if ord(k) == self.KEYS[name])
+        if name in MOVE_DIRECTIONS:
+            self._last_move = MOVE_DIRECTIONS[name]
 
     def _score(self) -> None:
         """Turn NetHack's end of episode into ours: MiniHack's reward was added by ``_press``."""
-        if self.status == self.env.StepStatus.DEATH:
+        if self.status == DEATH:
             self.say(f"You die, {self._death}." if self._death else "You die.")
             self.reward(self.params.reward_lose)
             self.finish(False)
-        elif self.status != self.env.StepStatus.RUNNING:
+        elif self.status != RUNNING:
             # MiniHack ends a task on a paying event of either sign (Memento's squeaky board is
             # TASK_SUCCESSFUL with -1): won means the episode ended paying more than nothing
-            self.finish(self.status == self.env.StepStatus.TASK_SUCCESSFUL
-                        and self.episode_return + self._step_reward > 0)
+            self.finish(self.status == SUCCESS and self.episode_return + self._step_reward > 0)
 
     def _grid(self) -> list[str]:
-        if self.status == self.env.StepStatus.DEATH:   # NetHack shows its end screens now
+        if self.status == DEATH:   # NetHack shows its end screens now
             return list(self._frame.grid)
-        return render.grid_rows(self.obs("chars"), self.obs("glyphs"), self.obs("screen_descriptions"),
-                                self._bounds, self.hero, self.glyph_map)
+        return self.painter.rows()
 
     def _hud(self) -> str:
-        if self.status == self.env.StepStatus.DEATH:
+        if self.status == DEATH:
             return "Dead"
-        parts = [render.status(self.obs("blstats"))]
+        hud = render.status(self.obs("blstats"))
         if self.view.scrolled(self._bounds):
             y0, y1, x0, x1 = self._bounds
-            parts.append(f"View cols {x0}-{x1 - 1} rows {y0}-{y1 - 1} of 79x21")
-        inv = render.inventory(self.obs("inv_letters"), self.obs("inv_strs"))
-        if inv:
-            parts.append("Inv " + ", ".join(f"{k} {v}" for k, v in inv))
-        return " | ".join(parts)
+            hud += f" | View cols {x0}-{x1 - 1} rows {y0}-{y1 - 1} of 79x21"
+        letters, strs = self.obs("inv_letters"), self.obs("inv_strs")
+        key = (letters.tobytes(), strs.tobytes())     # (the inventory text only when they change)
+        if key != self._inv[0]:
+            inv = render.inventory(letters, strs, self.terse_items)
+            names = (v for _, v in inv) if self.terse_items else (f"{k} {v}" for k, v in inv)
+            self._inv = key, " | Inv " + ", ".join(names) if inv else ""
+        return hud + self._inv[1]
 
     def _build_frame(self):
-        if self.status != self.env.StepStatus.DEATH:   # what is shown: before the HUD and grid
-            self.view.see(self.obs("chars"))
-            self._bounds = self.view.window(self.hero)
+        if self.status != DEATH:   # what is shown: before the HUD and grid
+            self._bounds = self.painter.update(self.obs("chars"), self.obs("glyphs"),
+                                               self.obs("screen_descriptions"), self.hero)
         return super()._build_frame()
 
     # -- talking to NetHack --------------------------------------------------------------------
@@ -222,10 +245,10 @@ class NetHackTask(GlyphTask):
         return int(b[render.BL_X]), int(b[render.BL_Y])
 
     def _press(self, key: int) -> None:
-        _, gain, done, _, info = self.env.step(self._index[key])
+        _, gain, done, _, status = self._turn(self._index[key])
         self.reward(gain)
         if done:
-            self.status = int(info["end_status"])
+            self.status = int(status)
         if not self._asking() and not self._ended:
             self._note_message()
 
@@ -365,8 +388,16 @@ def _letters(spec: str) -> list[str]:
     return out
 
 
-_DOOR_GLYPHS = np.array([nethack.GLYPH_CMAP_OFF + i for i in range(12, 16)] +   # S_vodoor..S_hcdoor
-                        [nethack.GLYPH_CMAP_OFF + 11])                        # S_ndoor (doorway)
+_DOOR_GLYPHS = np.array([nethack.GLYPH_CMAP_OFF + i for i in range(12, 17)])   # S_ndoor (doorway)..S_hcdoor
+
+# glyphs whose screen description can differ from cell to cell or turn to turn (the renderer looks
+# again every turn): monsters, objects, warnings and statues, and of the map features doorways
+# ("broken door"), altars (their alignment) and traps ("trapped door"); see NetHack's lookat()
+_VARYING = np.zeros(nethack.MAX_GLYPH, bool)
+_VARYING[:nethack.GLYPH_CMAP_OFF] = True
+_VARYING[nethack.GLYPH_WARNING_OFF:] = True
+_VARYING[[nethack.GLYPH_CMAP_OFF + 12, nethack.GLYPH_CMAP_OFF + 27]] = True   # S_ndoor, S_altar
+_VARYING[[g for g in range(nethack.GLYPH_CMAP_OFF, nethack.GLYPH_EXPLODE_OFF) if nethack.glyph_is_trap(g)]] = True
 
 
 # -- MiniHack -------------------------------------------------------------------------------------
@@ -382,8 +413,10 @@ class MiniHackTask(NetHackTask):
     of ours (``levels.LEVELS``), on the real NetHack engine."""
 
     title = "MiniHack, a task on the real NetHack game"
+    terse_items = True         # (no action here names a letter, swaps, fires or takes off)
     Params = MiniHackParams
-    rules = ("{goal} You play NetHack: the grid is the part of the level seen so far; monsters "
+    rules = ("{goal} You play NetHack: the grid is the part of the level seen so far (" + render.BLANK
+             + " unknown: not seen, dark or solid rock); monsters "
              "move when you act; walking into a monster attacks it. " + ANSWER_RULES)
     plain_rewards = "{reward_win:+g} when the goal is reached{lose_text}; no other reward."
     ends = "when the goal is reached{lose_end}"
@@ -426,4 +459,4 @@ class MiniHackTask(NetHackTask):
             cls = getattr(importlib.import_module(module), name)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            return cls(**kwargs)
+            return lean(cls)(**kwargs)          # (upstream's class, copying less a step: lean.py)

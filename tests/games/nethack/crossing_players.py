@@ -18,10 +18,10 @@ from typing import Callable, Iterable
 MOVES = {(0, -1): "MOVE_N", (0, 1): "MOVE_S", (1, 0): "MOVE_E", (-1, 0): "MOVE_W",
          (1, -1): "MOVE_NE", (-1, -1): "MOVE_NW", (1, 1): "MOVE_SE", (-1, 1): "MOVE_SW"}
 STEP = {name: d for d, name in MOVES.items()}
-UNKNOWN = "unexplored, dark or solid rock"
-HERO, WATER, LAVA, STAIRS = "you", "water", "molten lava", "staircase down"
+UNKNOWN = "unknown"
+HERO, WATER, LAVA, STAIRS = "you", "water", "molten lava", "stairs down"
 SOLID = {"wall", "iron bars", "tree", "closed door", UNKNOWN}
-TERRAIN = SOLID | {WATER, LAVA, STAIRS, "staircase up", "floor of a room", "dark part of a room",
+TERRAIN = SOLID | {WATER, LAVA, STAIRS, "stairs up", "floor", "dark floor",
                    "doorway", "open door", "broken door", "corridor", "ice"}
 
 Pos = tuple[int, int]
@@ -74,9 +74,9 @@ class Sight:
         return [p for p, m in self.cells.items() if test(m)]
 
     def inventory(self) -> list[str]:
-        """The HUD's ``Inv a x, b y`` items, without their letters."""
+        """The HUD's ``Inv x, y`` items."""
         inv = next((part[4:] for part in self.hud.split(" | ") if part.startswith("Inv ")), "")
-        return [item.split(" ", 1)[1] for item in inv.split(", ") if " " in item]
+        return [item for item in inv.split(", ") if item]
 
     def levitating(self) -> bool:
         return "Lev" in self.hud.split(" | ")[1].split() if " | " in self.hud else False
@@ -264,7 +264,7 @@ class RiverPlayer:
         row is the one of fewest water or unexplored cells, then of the cheapest first push.
         Unexplored cells west of the river (hidden behind boulders) are taken for floor."""
         west = min((x for (x, _), m in cells.items() if m in (WATER, LAVA)), default=0)
-        cells = {p: "floor of a room" if m == UNKNOWN and p[0] < west else m for p, m in cells.items()}
+        cells = {p: "floor" if m == UNKNOWN and p[0] < west else m for p, m in cells.items()}
         land = distances(hero, lambda q: walkable(cells.get(q)))
         boulders = {p for p, m in cells.items() if is_boulder(m)}
         near = [b for b in boulders if any(add(b, d) in land for d in MOVES)]

@@ -16,12 +16,12 @@ from collections import Counter
 from typing import Callable, Iterable
 
 HERO = "you"
-BLANK = "unexplored, dark or solid rock"
-PASSABLE = {"floor of a room", "dark part of a room", "doorway", "broken door", "open door", "corridor",
-            "lit corridor", "staircase down", "staircase up", "fog/vapor cloud", "fountain", "altar",
+BLANK = "unknown"
+PASSABLE = {"floor", "dark floor", "doorway", "broken door", "open door", "corridor",
+            "lit corridor", "stairs down", "stairs up", "fog/vapor cloud", "fountain", "altar",
             "grave", "sink", "ice", "ladder up", "ladder down", "lowered drawbridge"}
 SOLID = {"wall", "tree", "water", "molten lava", "iron bars", "raised drawbridge"}   # (a boulder is pushed)
-KIN = {"dark part of a room": "floor of a room", "lit corridor": "corridor"}   # one cell, lit or not
+KIN = {"dark floor": "floor", "lit corridor": "corridor"}   # one cell, lit or not
 NO_DIAGONAL = {"open door", "closed door"}         # NetHack: no diagonal step into or out of these
 OBJECT_CHARS = set(')[%?/=!"*`$(0_')               # NetHack's object classes
 MOVES = {(0, -1): "MOVE_N", (0, 1): "MOVE_S", (1, 0): "MOVE_E", (-1, 0): "MOVE_W",
@@ -279,7 +279,7 @@ def _near(c: Cell, d: Cell) -> tuple[int, int, int]:
 
 def stairs(p: Player) -> str:
     """Make for the staircase down (exploring, fighting and searching on the way)."""
-    return p.next_move(lambda m: m == "staircase down")
+    return p.next_move(lambda m: m == "stairs down")
 
 
 def keyroom(p: Player) -> str:
@@ -307,7 +307,7 @@ def hold_corridor(p: Player, wait: int = 20) -> str:
 
 def hunt(p: Player) -> str:
     """A way to die: go for the nearest monster and attack it (never onto the stairs)."""
-    p.blocked |= set(p.find(lambda m: m == "staircase down"))
+    p.blocked |= set(p.find(lambda m: m == "stairs down"))
     if attack := p.adjacent_monster():
         return attack
     return p.toward([c for c in p.map if p.is_monster(c)]) or p.next_move(lambda m: False)

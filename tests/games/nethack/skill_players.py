@@ -13,13 +13,12 @@ from collections import deque
 STEPS = {(0, -1): "MOVE_N", (0, 1): "MOVE_S", (1, 0): "MOVE_E", (-1, 0): "MOVE_W",
          (1, -1): "MOVE_NE", (-1, -1): "MOVE_NW", (1, 1): "MOVE_SE", (-1, 1): "MOVE_SW"}
 # map features one can stand on; a meaning with an article (or a count) is an object on the floor
-_FEATURES = ("floor", "dark part", "doorway", "altar", "sink", "staircase", "corridor", "door", "fountain")
+_FEATURES = ("floor", "dark floor", "doorway", "altar", "sink", "stairs", "corridor", "door", "fountain")
 # what is neither walkable nor a monster
-_SCENERY = ("wall", "unexplored", "tree", "water", "lava", "iron bars", "cloud", "boulder")
-UNSEEN = "unexplored"
+_SCENERY = ("wall", "unknown", "tree", "water", "lava", "iron bars", "cloud", "boulder")
+UNSEEN = "unknown"
 ZAP_RANGE = 7             # a wand's ray flies 7 to 13 cells: within 7 it always reaches
 SAFE_BOUNCE = 6           # a ray that bounces off a wall this far away cannot fly back to you
-_INV_ITEM = re.compile(r"(?:^|, )([a-zA-Z$]) (.*?)(?=, [a-zA-Z$] |$)")
 
 
 # -- reading the frame --------------------------------------------------------------------------
@@ -53,9 +52,10 @@ def meaning_at(frame, x: int, y: int) -> str:
 
 
 def inventory(frame) -> list[tuple[str, str]]:
-    """``(letter, name)`` pairs of the HUD's inventory, in its order (newest letters last)."""
+    """``(slot, name)`` pairs of the HUD's inventory, in its order (newest last); the HUD shows no
+    letters, so a slot is the item's position."""
     part = next((p[4:] for p in frame.hud.split(" | ") if p.startswith("Inv ")), "")
-    return _INV_ITEM.findall(part)
+    return [(str(i), name) for i, name in enumerate(part.split(", ")) if name]
 
 
 def monsters(frame) -> list[tuple[int, int]]:
@@ -221,7 +221,7 @@ def wand_of_death(task, limit: int = 600) -> None:
                 continue
             targets = cells(f, lambda m: "wand" in m and is_item(m))
         else:
-            targets = cells(f, lambda m: "staircase down" in m)
+            targets = cells(f, lambda m: "stairs down" in m)
         step = path_step(f, targets) if targets else None
         if step is None and armed and foes:
             step = path_step(f, foes)           # it blocks the way: go closer until it is in line

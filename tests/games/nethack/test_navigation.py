@@ -144,9 +144,9 @@ def test_teleportation_traps_do_not_kill(level):
     def wander(p: Player) -> str:
         offsets.add((p.hero[0] - task.hero[0], p.hero[1] - task.hero[1]))
         places.append(task.hero)
-        p.blocked |= set(p.find(lambda m: m == "staircase down"))
+        p.blocked |= set(p.find(lambda m: m == "stairs down"))
         traps.update(p.find(is_trap))
-        floor = [c for c in p.find(lambda m: KIN.get(m, m) == "floor of a room") if c != p.hero]
+        floor = [c for c in p.find(lambda m: KIN.get(m, m) == "floor") if c != p.hero]
         return p.toward([c for c in floor if c not in p.visited] or list(traps - {p.hero}) or floor) or "WAIT"
 
     p.play(wander)
