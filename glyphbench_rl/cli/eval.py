@@ -16,7 +16,7 @@ import sys
 from pathlib import Path
 from typing import Any, Sequence
 
-from ..core.registry import UnknownTaskError
+from ..core.registry import MissingExtraError, UnknownTaskError, check_engines
 from ..core.tasklist import resolve_tasks
 from ..rollout.factory import BACKENDS
 from ..evaluate import job as job_mod
@@ -78,6 +78,7 @@ def cmd_run(argv: Sequence[str]) -> int:
     if args.backend not in BACKENDS:
         raise job_mod.EvalError(f"unknown backend {args.backend!r}; backends: {', '.join(BACKENDS)}")
     tasks = resolve_tasks(args.tasks)         # before any backend or model is built
+    check_engines(tasks)
     options = _set(args, {"temperature": "temperature", "top_p": "top_p",
                           "max_new_tokens": "max_new_tokens", "base_url": "base_url"})
     options.update(dict(args.option))
@@ -158,7 +159,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         command = COMMANDS[argv.pop(0)]
     try:
         return command(argv)
-    except (UnknownTaskError, EpisodeLogError, ValueError, FileNotFoundError) as e:
+    except (UnknownTaskError, MissingExtraError, EpisodeLogError, ValueError, FileNotFoundError) as e:
         print(f"{PROG}: error: {e}", file=sys.stderr)
         return EXIT_USAGE
     except KeyboardInterrupt:               # outside a job's episode loop: nothing half-written

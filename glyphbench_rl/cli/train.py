@@ -13,7 +13,7 @@ import time
 from pathlib import Path
 from typing import Sequence
 
-from ..core.registry import UnknownTaskError
+from ..core.registry import MissingExtraError, UnknownTaskError
 from ..train.config import ConfigError, load_config
 from ..train.sinks import SinkError
 
@@ -38,7 +38,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         else:
             from ..train.trainer import Trainer
             trainer = Trainer(cfg, out, resume=args.resume)
-    except (ConfigError, UnknownTaskError, FileExistsError, FileNotFoundError, ValueError, SinkError) as e:
+    except (ConfigError, UnknownTaskError, MissingExtraError, FileExistsError, FileNotFoundError, ValueError, SinkError) as e:
         print(f"glyphbench-train: error: {str(e).splitlines()[0]}", file=sys.stderr)
         return 2
     if args.backend == "prime-rl":

@@ -135,6 +135,14 @@ def _gym_spec(spec: TaskSpec):
     return gym.registry.get(spec.id)
 
 
+def check_engines(task_ids: Iterable[str]) -> None:
+    """Import the engine of every task in ``task_ids`` (each once): a missing optional extra
+    fails here, in one line (``MissingExtraError``), before a run loads any model."""
+    for game in {get_spec(t).game for t in task_ids if isinstance(get_spec(t).game, str)}:
+        module = game.partition(":")[0]
+        importlib.import_module(module)
+
+
 def is_registered(task_id: str) -> bool:
     return task_id in _REGISTRY
 

@@ -25,6 +25,7 @@ from pathlib import Path
 from typing import Any, Callable
 
 from ..core import resolve_tasks
+from ..core.registry import check_engines
 from ..core.seeding import generator, training_seeds
 from ..rollout.trajectory import Trajectory
 from ..rollout.engine import EpisodeSpec, RolloutEngine
@@ -54,7 +55,8 @@ class Trainer:
         import torch
 
         self.cfg, self.out, self.log = config, Path(out), log
-        self.tasks = resolve_tasks(config.tasks)        # unknown IDs fail before any model loads
+        self.tasks = resolve_tasks(config.tasks)        # unknown IDs fail before any model loads,
+        check_engines(self.tasks)                       # and so do engines whose extra is missing
         self.harness = config.harness_config()
         if not resume and (self.out / "metrics.jsonl").exists():
             raise FileExistsError(f"{self.out} already holds a run; pass --resume to continue it "

@@ -53,3 +53,23 @@ runpy.run_module("glyphbench_rl.cli", run_name="__main__")
     assert len(lines) == 1, proc.stderr[-2000:]
     assert lines[0].startswith("glyphbench: error: ") and EXTRA in lines[0]
     assert proc.stdout == ""
+
+
+@pytest.mark.parametrize("argv", [
+    ["glyphbench-eval", "--tasks", "glyphbench/minihack-eat-v0", "--backend", "random", "--episodes", "1",
+     "--out", "{tmp}/eval"],
+    ["glyphbench-train", "{tmp}/config.yaml", "--out", "{tmp}/run"],
+])
+def test_eval_and_train_stop_before_any_work_with_one_line(argv, tmp_path):
+    (tmp_path / "config.yaml").write_text("tasks: [glyphbench/minihack-eat-v0]\nsteps: 1\n")
+    argv = [a.format(tmp=tmp_path) for a in argv]
+    module = {"glyphbench-eval": "glyphbench_rl.cli.eval", "glyphbench-train": "glyphbench_rl.cli.train"}[argv[0]]
+    proc = run_without("nle", f"""
+sys.argv = {argv!r}
+import importlib
+sys.exit(importlib.import_module({module!r}).main())
+""")
+    assert proc.returncode == 2, proc.stderr[-2000:]
+    lines = [line for line in proc.stderr.splitlines() if line.strip()]
+    assert len(lines) == 1 and EXTRA in lines[0], proc.stderr[-2000:]
+    assert not (tmp_path / "run").exists() or not any((tmp_path / "run").iterdir())
