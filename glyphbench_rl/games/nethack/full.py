@@ -237,7 +237,8 @@ class NetHackFull(NetHackTask):
     def _build_frame(self):
         if self.status == self.env.StepStatus.RUNNING and self._where() != self._level:
             self._level = self._where()          # another level: the grid shows what is seen of it
-            self.view = render.MapView()
+            self.view = self.painter.view = render.MapView()   # (the painter draws its view)
+            self.view.see(self.obs("chars"))
         return super()._build_frame()
 
     def _read_character(self) -> str:

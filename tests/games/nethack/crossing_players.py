@@ -37,9 +37,10 @@ def walkable(meaning: str | None) -> bool:
 
 
 def is_monster(meaning: str | None) -> bool:
-    """Monsters are described by their name alone; objects start with an article."""
-    return (meaning is not None and meaning not in TERRAIN and meaning != HERO
-            and not meaning.startswith(("a ", "an ")) and not meaning.endswith("boulder"))
+    """Monsters are described by their name alone; the objects of these levels are boulders and
+    LavaCross's items (``kind_of``: a potion, ring, boots, wand or horn), counted or not."""
+    return (meaning is not None and meaning not in TERRAIN and meaning != HERO and not meaning[:1].isdigit()
+            and kind_of(meaning) is None and not meaning.endswith("boulder"))
 
 
 def attack(cells: dict[Pos, str], hero: Pos) -> str | None:

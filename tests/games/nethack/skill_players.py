@@ -7,23 +7,32 @@ prompt states (yes to yes/no, the newest item, a direction toward the nearest mo
 
 from __future__ import annotations
 
-import re
 from collections import deque
 
 STEPS = {(0, -1): "MOVE_N", (0, 1): "MOVE_S", (1, 0): "MOVE_E", (-1, 0): "MOVE_W",
          (1, -1): "MOVE_NE", (-1, -1): "MOVE_NW", (1, 1): "MOVE_SE", (-1, 1): "MOVE_SW"}
-# map features one can stand on; a meaning with an article (or a count) is an object on the floor
+# map features one can stand on
 _FEATURES = ("floor", "dark floor", "doorway", "altar", "sink", "stairs", "corridor", "door", "fountain")
 # what is neither walkable nor a monster
 _SCENERY = ("wall", "unknown", "tree", "water", "lava", "iron bars", "cloud", "boulder")
 UNSEEN = "unknown"
+# an object on the floor is named without an article ("scroll", "zinc wand", "2 apples") and its
+# grid character may be a spare one (NetHack's "?" taken by another scroll): the player knows it by
+# a count or a noun of its name, those of NetHack's unidentified appearances and of the objects
+# these levels hold
+_OBJECT_WORDS = frozenset(
+    "scroll scrolls wand wands potion potions ring rings amulet amulets spellbook spellbooks gem gems "
+    "stone stones rock rocks corpse corpses apple apples egg eggs ration rations food tin tins "
+    "dagger daggers knife sword axe mace club spear bow arrow arrows dart darts sling "
+    "mail armor helmet shield boots gloves cloak robe coins".split())
 ZAP_RANGE = 7             # a wand's ray flies 7 to 13 cells: within 7 it always reaches
 SAFE_BOUNCE = 6           # a ray that bounces off a wall this far away cannot fly back to you
 
 
 # -- reading the frame --------------------------------------------------------------------------
 def is_item(meaning: str) -> bool:
-    return meaning.split(" ", 1)[0] in ("a", "an", "the", "some") or meaning[:1].isdigit()
+    """An object on the floor (a count, or an object noun in its name)."""
+    return meaning[:1].isdigit() or not _OBJECT_WORDS.isdisjoint(meaning.split())
 
 
 def walkable(meaning: str) -> bool:

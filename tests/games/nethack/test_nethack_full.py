@@ -17,7 +17,7 @@ from nle import nethack
 import glyphbench_rl
 from glyphbench_rl.core import check_frame, get_spec, seeding
 from glyphbench_rl.core.params import ParamError
-from glyphbench_rl.games.nethack import engine, full
+from glyphbench_rl.games.nethack import engine, full, render
 
 ID = "glyphbench/nethack-full-v0"
 ROOT = Path(__file__).resolve().parents[3]
@@ -194,3 +194,8 @@ def test_travel_and_descending_pay_the_score_and_show_the_new_level():
     assert rewards[-1] == 50.0                 # NetHack's score: 50 for each level below the first
     assert task.episode_return == int(task.obs("blstats")[nethack.NLE_BL_SCORE])
     assert max(len(row) for row in task.frame.grid) < 41   # the new level's seen part only
+    for name in ["MOVE_W", "MOVE_S", "MOVE_S"]:        # the painter draws the new level's window
+        task.step(name)
+        assert list(task.frame.grid) == render.grid_rows(
+            task.obs("chars"), task.obs("glyphs"), task.obs("screen_descriptions"), task._bounds,
+            task.hero, task.glyph_map)
