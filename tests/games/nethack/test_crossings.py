@@ -47,9 +47,9 @@ def test_river_won_by_pushing_boulders_into_the_water(level, seed):
     assert fills >= FORD.get(level, 3)                     # a boulder that sinks fills nothing
 
 
-def test_river_water_throws_you_back_and_the_river_is_lost_only_by_time():
-    """Water is not deadly (you crawl back out, items rust), so River and River-Narrow end
-    unpaid at the horizon when the ford is never built."""
+def test_river_water_throws_you_back_and_waiting_pays_nothing():
+    """Water is not deadly (you crawl back out, items rust): a River episode whose ford is never
+    built ends unpaid at the horizon."""
     task = make("river")
     task.reset(seed=0)
     s = Sight(task.frame)
@@ -149,3 +149,18 @@ def test_memento_lost_by_another_branch(level, seed, cue):
     ep = play(task, MementoPlayer(wrong=True), seed)
     assert_lost(task, ep)
     assert "squeaks" in ep.messages[-1]
+
+
+@pytest.mark.parametrize("level", ["river", "river-narrow"])
+def test_river_lost_to_an_angry_god(level):
+    """Their water is not deadly, but praying again and again is, in every MiniHack task: the
+    prompt's "-1 if you die" holds here too."""
+    task = make(level)
+    task.reset(seed=0)
+    for _ in range(12):
+        _, reward, term, trunc, info = task.step("PRAY")
+        if term:
+            break
+    assert term and info["won"] is False and reward == -1.0 and task.episode_return == -1.0
+    assert "killed by the wrath of" in task.frame.message
+    assert "-1 if you die" in task.system_prompt()
