@@ -79,8 +79,10 @@ COMMANDS = (
     ("INVENTORY", "i", "list what you carry"),
     ("ESCAPE", ESC, "cancel whatever NetHack is asking"),
 )
-ACTIONS = ActionSet([(n, f"move one cell {d} (into a monster: attack it)") for n, _, d in MOVES]
-                    + [(n, d) for n, _, d in COMMANDS], noop="WAIT")
+# the eight moves share one prompt line (every action a group, so the indices keep this order)
+ACTION_GROUPS = ([("move one cell that way (N is up); into a monster: attack it", [n for n, _, _ in MOVES])]
+                 + [(d, [n]) for n, _, d in COMMANDS])
+ACTIONS = ActionSet(groups=ACTION_GROUPS, noop="WAIT")
 KEYS = {n: (k if isinstance(k, int) else ord(k)) for n, k, _ in MOVES + tuple((n, k, d) for n, k, d in COMMANDS)}
 
 ANSWER_RULES = (
@@ -425,7 +427,8 @@ class MiniHackTask(NetHackTask):
         only = LEVELS[self.params.level].actions
         if not only:
             return ACTIONS
-        return ActionSet([(a.name, a.description) for a in ACTIONS if a.name in only])
+        groups = [(d, [n for n in names if n in only]) for d, names in ACTION_GROUPS]
+        return ActionSet(groups=[(d, names) for d, names in groups if names])
 
     @property
     def rewards(self) -> str:   # type: ignore[override]
