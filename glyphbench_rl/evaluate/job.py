@@ -117,11 +117,12 @@ def config_mismatch(old: dict[str, Any], new: dict[str, Any]) -> str | None:
                       for k in sorted(a.keys() | b.keys()) if a.get(k) != b.get(k)]
         else:
             diffs.append(f"{key} was {json.dumps(a)}, now {json.dumps(b)}")
-    # a job may grow: its held-out seeds are the first seeds of a longer job, so more episodes
-    # extend it; fewer would leave records the new config and summary do not account for
+    # any other episode count is refused too: fewer would leave records the new config and
+    # summary do not account for, and more is a different job (--force-config extends one: its
+    # held-out seeds are the first seeds of the longer job, so finished pairs are kept)
     a, b = old.get("episodes"), new.get("episodes")
-    if isinstance(a, int) and isinstance(b, int) and b < a:
-        diffs.append(f"episodes was {a}, now {b}")
+    if a != b:
+        diffs.append(f"episodes was {json.dumps(a)}, now {json.dumps(b)}")
     return "; ".join(diffs) or None
 
 

@@ -86,8 +86,11 @@ def test_rerun_skips_finished_pairs_and_extends(tmp_path):
     result = run_job(config(2), tmp_path, backend_factory=lambda *a, **k: built.append(a), log=None)
     assert (result.new, result.saved, built) == (0, 4, [])   # nothing to do: no backend built
     assert (tmp_path / EPISODES).read_bytes() == before
-    result = run_job(config(3), tmp_path, backend=again.backend(), log=None)
-    assert sorted(again.started) == sorted(TASKS) and (result.new, result.saved) == (2, 6)
+    with pytest.raises(EvalError, match=r"episodes was 2, now 3"):     # more is another job ...
+        run_job(config(3), tmp_path, backend_factory=pytest.fail, log=None)
+    assert (tmp_path / EPISODES).read_bytes() == before
+    result = run_job(config(3), tmp_path, backend=again.backend(), log=None, force_config=True)
+    assert sorted(again.started) == sorted(TASKS) and (result.new, result.saved) == (2, 6)   # ... unless asked
 
 
 def test_cut_short_last_line_is_moved_aside(tmp_path):
@@ -114,7 +117,7 @@ def test_complete_last_line_without_newline_is_kept(tmp_path):
     log = tmp_path / EPISODES
     log.write_bytes(log.read_bytes().rstrip(b"\n"))   # e.g. an editor dropped the final newline
     policy = CountingPolicy()
-    run_job(config(2), tmp_path, backend=policy.backend(), log=None)
+    run_job(config(2), tmp_path, backend=policy.backend(), log=None, force_config=True)
     assert len(policy.started) == 2 and len(records(log)) == 4
     assert not list(tmp_path.glob("*.partial-*"))
 
@@ -148,9 +151,10 @@ def test_other_settings_in_the_same_directory_are_refused(tmp_path):
 
 @pytest.mark.parametrize("first, again, differs", [
     (dict(episodes=2), dict(episodes=1), r"episodes was 2, now 1"),
+    (dict(episodes=1), dict(episodes=2), r"episodes was 1, now 2"),
     (dict(episodes=1), dict(episodes=1, seed_start=5), r"seed_start was 0, now 5"),
 ])
-def test_fewer_episodes_or_other_seeds_in_the_same_directory_are_refused(tmp_path, first, again, differs):
+def test_other_episodes_or_seeds_in_the_same_directory_are_refused(tmp_path, first, again, differs):
     run_job(config(**first), tmp_path, backend=CountingPolicy().backend(), log=None)
     before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
     with pytest.raises(EvalError, match=rf"^{re.escape(str(tmp_path))} holds another evaluation "
