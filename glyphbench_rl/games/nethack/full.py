@@ -19,6 +19,7 @@ those commands (SEESPELLS, SEEAMULET, SEEGOLD), so each key has one name.
 
 from __future__ import annotations
 
+import logging
 import re
 import warnings
 from dataclasses import dataclass
@@ -216,14 +217,24 @@ class NetHackFull(NetHackTask):
                 if c == "@" else f"a {c} (NetHack's role abbreviation; the HUD names the character)"}
 
     def _new_env(self) -> NLE:
+        # NLE logs a warning for the 'internal' array: it is ours (is NetHack asking?), never shown
+        nle_log = logging.getLogger("nle.env.base")
+        level = nle_log.level
+        nle_log.setLevel(logging.ERROR)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            return _SeededChallenge(
-                character=self.params.character, observation_keys=(
-                    "glyphs", "chars", "screen_descriptions", "blstats", "message", "inv_letters",
-                    "inv_strs", "inv_oclasses", "tty_chars", "internal"),
-                allow_all_modes=False, max_episode_steps=_RAW_STEP_CAP,
-                no_progress_timeout=_RAW_STEP_CAP, fix_moon_phase=True, options=_OPTIONS)
+            try:
+                return self._challenge()
+            finally:
+                nle_log.setLevel(level)
+
+    def _challenge(self) -> NLE:
+        return _SeededChallenge(
+            character=self.params.character, observation_keys=(
+                "glyphs", "chars", "screen_descriptions", "blstats", "message", "inv_letters",
+                "inv_strs", "inv_oclasses", "tty_chars", "internal"),
+            allow_all_modes=False, max_episode_steps=_RAW_STEP_CAP,
+            no_progress_timeout=_RAW_STEP_CAP, fix_moon_phase=True, options=_OPTIONS)
 
     def _setup(self, rng) -> None:
         super()._setup(rng)
