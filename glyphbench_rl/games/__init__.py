@@ -11,3 +11,4 @@ another game (``tests/test_import_graph.py`` checks all of this).
 from . import classics  # noqa: F401
 from . import minigrid  # noqa: F401
 from . import nethack  # noqa: F401
+from . import procgen  # noqa: F401

@@ -8,7 +8,7 @@ import numpy as np
 
 from ...core import GlyphTask, register_variants
 from ...core.params import param
-from ..common.grid import DELTAS, Board, bfs_distances, move_actions
+from ..common.grid import DELTAS, bfs_distances, carve_maze, move_actions
 from ..common.palette import FLOOR, GOAL, PLAYER, WALL
 from ..common.view import overlay, stamped
 
@@ -17,29 +17,6 @@ from ..common.view import overlay, stamped
 class MazeParams:
     cells: int = param(5, 2, 20)      # the maze is cells x cells rooms; the grid is 2*cells+1 wide
     time_weight: float = param(0.9, 0, 1, open_hi=True)   # share of the win reward lost by using every turn
-
-
-def carve(cells: int, rng: np.random.Generator) -> Board:
-    """A perfect maze (one path between any two rooms) by randomised depth-first search."""
-    size = 2 * cells + 1
-    board = Board(size, size, WALL)
-    start = (int(rng.integers(cells)), int(rng.integers(cells)))
-    seen = {start}
-    stack = [start]
-    board[2 * start[0] + 1, 2 * start[1] + 1] = FLOOR
-    while stack:
-        r, c = stack[-1]
-        options = [(r + dr, c + dc) for dr, dc in DELTAS
-                   if 0 <= r + dr < cells and 0 <= c + dc < cells and (r + dr, c + dc) not in seen]
-        if not options:
-            stack.pop()
-            continue
-        nr, nc = options[int(rng.integers(len(options)))]
-        board[r + nr + 1, c + nc + 1] = FLOOR      # the wall between the two rooms
-        board[2 * nr + 1, 2 * nc + 1] = FLOOR
-        seen.add((nr, nc))
-        stack.append((nr, nc))
-    return board
 
 
 class Maze(GlyphTask):
@@ -55,7 +32,7 @@ class Maze(GlyphTask):
     default_max_turns = 100
 
     def _setup(self, rng: np.random.Generator) -> None:
-        self.board = carve(self.params.cells, rng)
+        self.board = carve_maze(self.params.cells, rng, WALL, FLOOR)
         rooms = self.board.cells(FLOOR)
         self.pos = rooms[int(rng.integers(len(rooms)))]
         dist = bfs_distances(self.pos, lambda r, c: self.board[r, c] != WALL)

@@ -82,6 +82,30 @@ def random_room(n: int, blocks: int, picks: int, rng: np.random.Generator, wall:
     return board, [interior[i] for i in drawn[blocks:]]
 
 
+def carve_maze(cells: int, rng: np.random.Generator, wall: str, floor: str) -> Board:
+    """A perfect maze (one path between any two rooms) of cells x cells rooms by randomised
+    depth-first search: a (2*cells+1)-square board whose rooms sit at odd (row, column)."""
+    size = 2 * cells + 1
+    board = Board(size, size, wall)
+    start = (int(rng.integers(cells)), int(rng.integers(cells)))
+    seen = {start}
+    stack = [start]
+    board[2 * start[0] + 1, 2 * start[1] + 1] = floor
+    while stack:
+        r, c = stack[-1]
+        options = [(r + dr, c + dc) for dr, dc in DELTAS
+                   if 0 <= r + dr < cells and 0 <= c + dc < cells and (r + dr, c + dc) not in seen]
+        if not options:
+            stack.pop()
+            continue
+        nr, nc = options[int(rng.integers(len(options)))]
+        board[r + nr + 1, c + nc + 1] = floor      # the wall between the two rooms
+        board[2 * nr + 1, 2 * nc + 1] = floor
+        seen.add((nr, nc))
+        stack.append((nr, nc))
+    return board
+
+
 def bfs_distances(start: tuple[int, int], passable: Callable[[int, int], bool]) -> dict[tuple[int, int], int]:
     """Shortest 4-connected step counts from ``start`` to every reachable passable cell."""
     dist = {start: 0}

@@ -1,0 +1,10 @@
+"""Procgen: grid re-imaginings of OpenAI Procgen's games, every seed a different level.
+
+Engine-level modules: ``engine`` (``ProcgenTask``: the five actions, the agent-centred view
+window, the player's arrow, the HUD, the horizon) and ``mazes`` (maze levels over
+``games.common.grid``, braiding, cached distance maps for chasers). Each game module generates
+its level, moves its entities and pays its rewards, importing only those.
+"""
+
+from . import maze  # noqa: F401
+from . import heist  # noqa: F401
