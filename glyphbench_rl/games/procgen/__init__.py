@@ -8,3 +8,5 @@ its level, moves its entities and pays its rewards, importing only those.
 
 from . import maze  # noqa: F401
 from . import heist  # noqa: F401
+from . import chaser  # noqa: F401
+from . import miner  # noqa: F401

@@ -1,0 +1,123 @@
+"""Procgen Miner: dig through dirt for diamonds and reach the exit while boulders fall.
+
+Boulder Dash's rule: a boulder falls one cell a turn into an empty cell below it; one resting on
+you is held up, but a falling one that lands on you crushes you. Boulders cannot be pushed. A
+tunnel along the top row and the right-hand column leads to the exit, so every level is won by
+walking it; the diamonds are the reason to dig."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...core import register_variants
+from ...core.params import param
+from ..common.palette import FLOOR, GOAL, WALL
+from .engine import PLAYER_GLYPHS, ProcgenTask
+
+DIRT, DIAMOND, BOULDER = ":", "*", "O"
+
+
+@dataclass(frozen=True)
+class MinerParams:
+    size: int = param(20, 8, 20)   # the world is size x size, border included
+    dirt: float = param(0.45, 0, 0.8)
+    diamonds: float = param(0.07, 0.02, 0.2)
+    boulders: float = param(0.06, 0, 0.2)
+
+
+class ProcgenMiner(ProcgenTask):
+    title = "Procgen Miner"
+    rules = ("You are a miner in a {size}x{size} mine. Walking into dirt digs it away; walk "
+             "onto a diamond to take it. Boulders cannot be pushed; a boulder with an empty cell "
+             "below falls one cell a turn. A boulder resting on you is held up, but a falling "
+             "boulder that lands on you crushes you. Reach the exit.")
+    rewards = "+0.1 for each of the first 8 diamonds, +0.2 for the exit, -1 for being crushed."
+    ends = "when you reach the exit or are crushed"
+    Params = MinerParams
+    glyphs = {WALL: "wall", FLOOR: "empty", DIRT: "dirt", DIAMOND: "diamond",
+              BOULDER: "boulder", GOAL: "exit", **PLAYER_GLYPHS}
+    view_h = view_w = 20
+
+    def _setup(self, rng: np.random.Generator) -> None:
+        p, n = self.params, self.params.size
+        rows = [[WALL] * n for _ in range(n)]
+        draws = rng.random((n - 2, n - 2))
+        for r in range(1, n - 1):
+            for c in range(1, n - 1):
+                x = draws[r - 1, c - 1]
+                rows[r][c] = (DIRT if x < p.dirt else DIAMOND if x < p.dirt + p.diamonds
+                              else BOULDER if x < p.dirt + p.diamonds + p.boulders else FLOOR)
+        for i in range(1, n - 1):   # the tunnel: top row and right-hand column
+            rows[1][i] = rows[i][n - 2] = FLOOR
+        spots = [(r, c) for r in range(2, n - 1) for c in range(1, n - 2) if rows[r][c] == DIRT]
+        missing = 8 - sum(row.count(DIAMOND) for row in rows)
+        if missing > 0:
+            for i in rng.choice(len(spots), missing, replace=False).tolist():
+                rows[spots[i][0]][spots[i][1]] = DIAMOND
+        rows[n - 2][n - 2] = GOAL
+        self.rows = rows
+        self.place_player((1, 1))
+        self.falling: set[tuple[int, int]] = set()
+        while self._settle():   # boulders come to rest before the first turn
+            pass
+        self.falling = set()
+        self.taken = 0
+        self.left = sum(row.count(DIAMOND) for row in rows)
+        self._lines = ["".join(row) for row in rows]
+
+    def _settle(self) -> bool:
+        """One turn of falling, lowest boulders first; True if any moved. Crushes the player."""
+        rows, moved, falling = self.rows, False, set()
+        for r in range(len(rows) - 2, 0, -1):
+            row, below = rows[r], rows[r + 1]
+            for c, ch in enumerate(row):
+                if ch != BOULDER:
+                    continue
+                if (r + 1, c) == self.pos:
+                    if (r, c) in self.falling:
+                        self.falling = set()
+                        self._crush()
+                        return False
+                elif below[c] == FLOOR:
+                    row[c], below[c] = FLOOR, BOULDER
+                    falling.add((r + 1, c))
+                    moved = True
+        self.falling = falling
+        return moved
+
+    def _crush(self) -> None:
+        self.reward(-1.0)
+        self.say("A falling boulder crushed you.")
+        self.finish(won=False)
+
+    def _rows(self) -> list[str]:
+        return self._lines
+
+    def _extras(self) -> str:
+        return f"Diamonds {self.taken} | Left {self.left}"
+
+    def _act(self, action: int) -> None:
+        r, c = self.target(action)
+        ch = self.rows[r][c]
+        if ch != WALL and ch != BOULDER:
+            self.pos = (r, c)
+            if ch == DIAMOND:
+                self.left -= 1
+                self.taken += 1
+                if self.taken <= 8:
+                    self.reward(0.1)
+                self.say("You took a diamond.")
+            elif ch == GOAL:
+                self.reward(0.2)
+                self.say("You reached the exit.")
+                self.finish(won=True)
+                return
+            if ch != FLOOR:
+                self.rows[r][c] = FLOOR
+        if self._settle() or ch == DIRT or ch == DIAMOND:
+            self._lines = ["".join(row) for row in self.rows]
+
+
+register_variants(ProcgenMiner, "Procgen", {"glyphbench/procgen-miner-v0": dict(max_turns=500)})

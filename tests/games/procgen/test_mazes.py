@@ -1,0 +1,78 @@
+import pytest
+
+import glyphbench_rl
+from glyphbench_rl.games.common.grid import bfs_search, shortest_path
+from glyphbench_rl.games.common.palette import WALL
+
+GAMES = ["maze", "heist", "chaser", "miner"]
+
+
+@pytest.mark.parametrize("game", GAMES)
+def test_fifty_seeds_give_distinct_levels(game):
+    task = glyphbench_rl.make(f"glyphbench/procgen-{game}-v0")
+    levels = {tuple(task._rows()) for seed in range(50) if task.reset(seed=seed)}
+    assert len(levels) >= 45
+
+
+@pytest.mark.parametrize("seed", [0, 1, 7])
+def test_maze_win_path(seed):
+    task = glyphbench_rl.make("glyphbench/procgen-maze-v0")
+    task.reset(seed=seed)
+    for move in shortest_path(task.pos, task.goal, lambda r, c: task.board[r, c] != WALL):
+        _, _, term, _, info = task.step(move)
+    assert term and task.won and task.episode_return == 1.0 and not info["clamped"]
+
+
+@pytest.mark.parametrize("seed", [0, 1, 7])
+def test_heist_win_path_takes_every_key(seed):
+    task = glyphbench_rl.make("glyphbench/procgen-heist-v0")
+    task.reset(seed=seed)
+    for action in task.solution():
+        task.step(action)
+    assert task.won and task.held == 0b111 and task.episode_return == pytest.approx(1.0)
+
+
+@pytest.mark.parametrize("seed", [0, 3])
+def test_chaser_win_path_without_ghosts(seed):
+    task = glyphbench_rl.make("glyphbench/procgen-chaser-v0", ghosts=0)
+    task.reset(seed=seed)
+    while not task.done:
+        def neighbours(cell):
+            return [(a, n) for a, n in zip(range(1, 5), ((cell[0], cell[1] - 1), (cell[0], cell[1] + 1),
+                    (cell[0] - 1, cell[1]), (cell[0] + 1, cell[1]))) if task.rows[n[0]][n[1]] != WALL]
+        for action in bfs_search(task.pos, neighbours, lambda c: task.rows[c[0]][c[1]] in "oO"):
+            task.step(action)
+    assert task.won and task.episode_return == pytest.approx(0.8)
+
+
+def test_chaser_caught_ends_with_nothing_lost():
+    task = glyphbench_rl.make("glyphbench/procgen-chaser-v0")
+    task.reset(seed=0)
+    while not task.done:
+        task.step("NOOP")
+    assert task.won is False and task.episode_return == 0.0 and task.turn < 200
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_miner_tunnel_wins(seed):
+    task = glyphbench_rl.make("glyphbench/procgen-miner-v0")
+    task.reset(seed=seed)
+    for move in ["RIGHT"] * 17 + ["DOWN"] * 17:
+        task.step(move)
+    assert task.won and task.episode_return == pytest.approx(0.2)
+
+
+def test_miner_falling_boulder_crushes():
+    task = glyphbench_rl.make("glyphbench/procgen-miner-v0")
+    task.reset(seed=0)
+    rows = task.rows
+    for r in range(2, 6):
+        rows[r][3] = "·"
+    rows[2][3] = "O"
+    task.pos = (3, 3)               # holding up the boulder
+    task.step("NOOP")
+    assert not task.done
+    task.step("DOWN")               # the boulder falls behind
+    assert not task.done
+    task.step("NOOP")               # and lands
+    assert task.done and task.won is False and task.episode_return == -1.0
