@@ -76,3 +76,23 @@ def test_miner_falling_boulder_crushes():
     assert not task.done
     task.step("NOOP")               # and lands
     assert task.done and task.won is False and task.episode_return == -1.0
+
+
+def test_chaser_scared_ghost_is_eaten_and_sent_home_and_a_hunting_one_catches():
+    task = glyphbench_rl.make("glyphbench/procgen-chaser-v0")
+    task.reset(seed=4)
+    r, c = task.pos
+    moves = {"RIGHT": (r, c + 1), "DOWN": (r + 1, c)}
+    name, cell = next((n, x) for n, x in moves.items() if task.rows[x[0]][x[1]] != WALL)
+    task.ghosts[0], task.scared = cell, [True] * len(task.ghosts)
+    task.timer = 5
+    _, reward, term, _, _ = task.step(name)
+    home = task.lairs[0]                                    # sent home (and it moved on from there)
+    assert not term and abs(task.ghosts[0][0] - home[0]) + abs(task.ghosts[0][1] - home[1]) <= 1
+    assert not task.scared[0]
+    assert reward == pytest.approx(0.1 + (0.5 / task.total if task.pellets < task.total else 0.0))
+    assert "You ate a ghost." in task.frame.message
+    back = {"RIGHT": "LEFT", "DOWN": "UP"}[name]
+    task.ghosts[1], task.scared[1] = (r, c), False          # a hunting ghost where you step next
+    _, reward, term, _, info = task.step(back)
+    assert term and info["won"] is False and "A ghost caught you." in task.frame.message
