@@ -50,7 +50,7 @@ except ImportError as e:   # pragma: no cover - depends on the installed extras
 from .lean import lean, turn_function   # noqa: E402  (needs minihack)
 
 # NLE's StepStatus values (int compares: the enum's members cost an attribute search a turn)
-DEATH, RUNNING, ABORTED = int(NLE.StepStatus.DEATH), int(NLE.StepStatus.RUNNING), int(NLE.StepStatus.ABORTED)
+DEATH, RUNNING = int(NLE.StepStatus.DEATH), int(NLE.StepStatus.RUNNING)
 SUCCESS = int(NetHackStaircase.StepStatus.TASK_SUCCESSFUL)
 
 ESC, ENTER, SPACE = 27, 13, 32
@@ -170,7 +170,6 @@ class NetHackTask(GlyphTask):
         self.glyph_map = render.Glyphs()
         self.painter = render.Painter(self.glyph_map, _VARYING)
         self._inv = ((b"", b""), "")
-        self.view = self.painter.view
         self._note_message()
         self._messages = self._heard
 
@@ -240,6 +239,11 @@ class NetHackTask(GlyphTask):
                                                self.obs("screen_descriptions"), self.hero)
         return super()._build_frame()
 
+    @property
+    def view(self) -> render.MapView:
+        """What part of the map is shown (the painter's)."""
+        return self.painter.view
+
     # -- talking to NetHack --------------------------------------------------------------------
     @property
     def hero(self) -> tuple[int, int]:
@@ -261,7 +265,10 @@ class NetHackTask(GlyphTask):
         return render.text(self.obs("message"))
 
     def _note_message(self) -> None:
-        msg = render.text(self.obs("message"))
+        self._hear(render.text(self.obs("message")))
+
+    def _hear(self, msg: str) -> None:
+        """Keep a message for this turn's message line (NetHack repeats one across keys)."""
         if msg and (not self._heard or self._heard[-1] != msg):
             self._heard.append(msg)
 
@@ -306,12 +313,11 @@ class NetHackTask(GlyphTask):
                 self._death = found.group(0).strip() if found else ""
             if not msg:
                 self._ended = True
-            if msg and not self._ended and (not self._heard or self._heard[-1] != msg):
-                self._heard.append(msg)
+            if not self._ended:
+                self._hear(msg)
             return ENTER
         if msg:
-            if not self._heard or self._heard[-1] != msg:
-                self._heard.append(msg)
+            self._hear(msg)
             return ENTER
         tty = observation[self._ix["tty_chars"]]
         top = next((row for row in tty if (row != SPACE).any()), None)

@@ -29,7 +29,7 @@ from ...core.actions import ActionSet
 from ...core.params import param
 from . import render
 # (the engine first: without the nethack extra it raises the one-line MissingExtraError)
-from .engine import ANSWER_RULES, COMMANDS, DIRECTION_KEYS, ESC, MOVES, _RAW_STEP_CAP, NetHackTask
+from .engine import ANSWER_RULES, COMMANDS, ESC, MOVE_DIRECTIONS, MOVES, RUNNING, _RAW_STEP_CAP, NetHackTask
 
 from nle import nethack
 from nle.env.base import NLE
@@ -153,7 +153,7 @@ def _action_table() -> tuple[ActionSet, dict[str, int]]:
 
 FULL_ACTIONS, FULL_KEYS = _action_table()
 _WAITS_FOR_MORE = {"FIGHT", "MOVE", "MOVEFAR", "RUSH", "RUSH2"} | {f"NUM_{d}" for d in range(10)}
-_STEPS = {name: d for name, key, _ in MOVES for d, k in DIRECTION_KEYS.items() if k == key}
+_STEPS = dict(MOVE_DIRECTIONS)
 _STEPS.update({"FAR" + name[4:]: d for name, d in list(_STEPS.items())})   # MOVE_N -> FAR_N
 # NetHack waiting inside a command for input that is no question (a map position, the name
 # of an extended command)
@@ -246,10 +246,10 @@ class NetHackFull(NetHackTask):
         return int(b[nethack.NLE_BL_DNUM]), int(b[nethack.NLE_BL_DLEVEL])
 
     def _build_frame(self):
-        if self.status == self.env.StepStatus.RUNNING and self._where() != self._level:
+        if self.status == RUNNING and self._where() != self._level:
             self._level = self._where()          # another level: the grid shows what is seen of it
-            self.view = self.painter.view = render.MapView()   # (the painter draws its view)
-            self.view.see(self.obs("chars"))
+            self.painter.view = render.MapView()   # (the painter draws its view)
+            self.painter.view.see(self.obs("chars"))
         return super()._build_frame()
 
     def _read_character(self) -> str:
@@ -283,11 +283,11 @@ class NetHackFull(NetHackTask):
         self._press(ESC)
 
     def _score(self) -> None:
-        if self.status != self.env.StepStatus.RUNNING:
+        if self.status != RUNNING:
             self.finish(self.env.nethack.how_done() == nethack.ASCENDED)
 
     def _hud(self) -> str:
-        if self.status != self.env.StepStatus.RUNNING:
+        if self.status != RUNNING:
             how = self.env.nethack.how_done()   # DIED, CHOKING, ... GENOCIDED: kinds of death
             return "Dead" if int(how) < int(nethack.PANICKED) else _ENDS.get(how, "Game over")
         b = self.obs("blstats").tolist()

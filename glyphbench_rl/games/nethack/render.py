@@ -247,8 +247,7 @@ class Painter:
         self._glyphs: np.ndarray | None = None         # the glyph map drawn last, flat
         self._glyph_bytes = b""
         self._codes = np.zeros(ROWS * COLS, np.uint32)  # each cell's character; 0: to work out
-        self._by_glyph: dict[int, int] = {}             # glyph id -> character, glyphs that do not vary
-        self._lut = np.zeros(size, np.uint32)           # the same as a table (0: none yet)
+        self._lut = np.zeros(size, np.uint32)           # glyph id -> character, glyphs that do not vary (0: none yet)
         self._by_look: dict[tuple, int] = {}            # (glyph id, NetHack char, description) -> character
         self._varying: dict[int, bytes] = {}            # cells in view showing a varying glyph: their text
         self._hero = -1
@@ -316,9 +315,9 @@ class Painter:
                 for y in set((cells // COLS).tolist()):
                     rows.pop(y, None)
             else:
-                by_glyph = self._by_glyph
+                lut = self._lut
                 for c, g in zip(pending, flat[pending].tolist()):
-                    code = by_glyph.get(g) if c != hero_cell else self._hero_codes.get(int(chars.flat[c]))
+                    code = int(lut[g]) or None if c != hero_cell else self._hero_codes.get(int(chars.flat[c]))
                     if code is None:
                         todo.append(c)
                     else:
@@ -332,7 +331,7 @@ class Painter:
         return bounds
 
     def _work_out(self, cells: list[int], flat: np.ndarray, chars: np.ndarray, descs: np.ndarray) -> None:
-        codes, varies, by_glyph, by_look = self._codes, self._varies, self._by_glyph, self._by_look
+        codes, varies, lut, by_look = self._codes, self._varies, self._lut, self._by_look
         nh_flat = chars.reshape(-1)
         for c in cells:
             g = int(flat[c])
@@ -349,10 +348,9 @@ class Painter:
                     code = by_look[key] = ord(self.assign.char(nh, _cell_meaning(nh, descs[c])))
                 self._varying[c] = seen
             else:
-                code = by_glyph.get(g)
-                if code is None:
-                    code = by_glyph[g] = ord(self.assign.char(nh, _cell_meaning(nh, descs[c])))
-                    self._lut[g] = code
+                code = int(lut[g])
+                if not code:
+                    code = lut[g] = ord(self.assign.char(nh, _cell_meaning(nh, descs[c])))
             if codes[c] != code:
                 codes[c] = code
                 self._rows.pop(c // COLS, None)

@@ -13,6 +13,7 @@ from typing import ClassVar, Iterable, Sequence
 
 from ...core import GlyphTask
 from ...core.actions import ActionSet
+from ..common.view import overlay, window
 
 Cell = tuple[int, int]
 
@@ -64,15 +65,9 @@ class ProcgenTask(GlyphTask):
         r, c = self.pos
         top = min(max(r - self.view_h // 2, 0), max(height - self.view_h, 0))
         left = min(max(c - self.view_w // 2, 0), max(width - self.view_w, 0))
-        bottom, right = top + self.view_h, left + self.view_w
-        if top == 0 and left == 0 and bottom >= height and right >= width:
-            view = list(rows)
-        else:
-            view = [row[left:right] for row in rows[top:bottom]]
+        view = window(rows, top, left, self.view_h, self.view_w)
         for sr, sc, ch in (*self._sprites(), (r, c, ARROWS[self.facing])):
-            if top <= sr < bottom and left <= sc < right:
-                row = view[sr - top]
-                view[sr - top] = row[:sc - left] + ch + row[sc - left + 1:]
+            overlay(view, sr - top, sc - left, ch)
         return view
 
     def _hud(self) -> str:

@@ -5,11 +5,9 @@ source cell (chasers look them up every turn; the player revisits cells, so most
 
 from __future__ import annotations
 
-from collections import deque
-
 import numpy as np
 
-from ..common.grid import DELTAS, Board, carve_maze
+from ..common.grid import DELTAS, Board, bfs_distances, carve_maze
 from ..common.palette import FLOOR, WALL
 
 Cell = tuple[int, int]
@@ -49,15 +47,5 @@ class DistanceMaps:
     def from_(self, source: Cell) -> dict[Cell, int]:
         dist = self._maps.get(source)
         if dist is None:
-            dist = {source: 0}
-            queue = deque([source])
-            nbrs = self.neighbours
-            while queue:
-                cell = queue.popleft()
-                d = dist[cell] + 1
-                for nxt in nbrs[cell]:
-                    if nxt not in dist:
-                        dist[nxt] = d
-                        queue.append(nxt)
-            self._maps[source] = dist
+            dist = self._maps[source] = bfs_distances(source, lambda r, c: (r, c) in self.neighbours)
         return dist
