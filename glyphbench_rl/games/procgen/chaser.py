@@ -13,8 +13,8 @@ import numpy as np
 
 from ...core import register_variants
 from ...core.params import param
-from ..common.palette import FLOOR, WALL
-from .engine import PLAYER_GLYPHS, ProcgenTask
+from ..common.palette import WALL
+from .engine import OPEN, PLAYER_GLYPHS, ProcgenTask
 from .mazes import DistanceMaps, maze_level, rooms
 
 PELLET, POWER, GHOST, SCARED = "o", "O", "E", "F"
@@ -41,7 +41,7 @@ class ProcgenChaser(ProcgenTask):
                "nothing but ends the game.")
     ends = "when the maze is cleared or a ghost catches you"
     Params = ChaserParams
-    glyphs = {WALL: "wall", FLOOR: "open", PELLET: "pellet", POWER: "power pellet",
+    glyphs = {WALL: "wall", OPEN: "open", PELLET: "pellet", POWER: "power pellet",
               GHOST: "ghost", SCARED: "scared ghost", **PLAYER_GLYPHS}
 
     def prompt_fields(self) -> dict:
@@ -59,10 +59,10 @@ class ProcgenChaser(ProcgenTask):
         self.ghosts = list(self.lairs)
         self.scared = [False] * p.ghosts
         spots = [cell for cell in rooms(board) if cell != self.pos]
-        self.rows = [[PELLET if ch == FLOOR else ch for ch in row] for row in board.rows]
+        self.rows = [[PELLET if ch == OPEN else ch for ch in row] for row in board.rows]
         for i in rng.choice(len(spots), p.powers, replace=False).tolist():
             self.rows[spots[i][0]][spots[i][1]] = POWER
-        self.rows[1][1] = FLOOR
+        self.rows[1][1] = OPEN
         self.pellets = self.total = sum(row.count(PELLET) + row.count(POWER) for row in self.rows)
         self._lines = ["".join(row) for row in self.rows]
         self.timer = self.eaten = 0
@@ -83,7 +83,7 @@ class ProcgenChaser(ProcgenTask):
         if ch != WALL:
             self.pos = (r, c)
             if ch == PELLET or ch == POWER:
-                self.rows[r][c] = FLOOR
+                self.rows[r][c] = OPEN
                 self._lines[r] = "".join(self.rows[r])
                 self.pellets -= 1
                 self.reward(0.5 / self.total)
