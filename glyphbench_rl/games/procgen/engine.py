@@ -24,9 +24,10 @@ from ..common.view import overlay, window
 Cell = tuple[int, int]
 OPEN = "."          # an open cell in every Procgen game
 MAX_MOVERS = 6      # the HUD lists at most this many moving things, nearest first
-MOTION_RULE = (" The status line gives your velocity (Vel, cells per turn: →1 is one column right "
-               "a turn, ↑2 two rows up) and the moving things in view, nearest first: E@+2,-3←1 is "
-               "an E two rows below and three columns left of you moving one column left a turn.")
+MOTION_RULE = (" The status line gives the moving things in view, nearest first, with their "
+               "velocity in cells per turn (E@+2,-3←1 is an E two rows below and three columns "
+               "left of you moving one column left a turn; ↑2 is two rows up a turn), and your own "
+               "velocity as Vel where you have one.")
 
 ACTIONS = ActionSet([("NOOP", "wait a turn"), ("LEFT", "move one cell left"),
                      ("RIGHT", "move one cell right"), ("UP", "move one cell up"),
@@ -78,9 +79,10 @@ class ProcgenTask(GlyphTask):
     def _extras(self) -> str:
         return ""
 
-    def _velocity(self) -> Cell:
-        """The player's velocity (rows, columns per turn; rows grow downward)."""
-        return 0, 0
+    def _velocity(self) -> Cell | None:
+        """The player's velocity (rows, columns per turn; rows grow downward), or None for a
+        game where the player has none beyond the last move (the HUD then leaves Vel out)."""
+        return None
 
     def _movers(self) -> Iterable[tuple[str, int, int, int, int]]:
         """Moving things as (glyph, row, column, row velocity, column velocity), world cells."""
@@ -95,11 +97,12 @@ class ProcgenTask(GlyphTask):
         seen = sorted((abs(mr - r) + abs(mc - c), mr - r, mc - c, ch, vr, vc)
                       for ch, mr, mc, vr, vc in self._movers()
                       if (vr or vc) and top <= mr < top + self.view_h and left <= mc < left + self.view_w)
-        text = "Vel " + velocity_text(*self._velocity())
+        vel = self._velocity()
+        parts = [] if vel is None else ["Vel " + velocity_text(*vel)]
         if seen:
-            text += " | Moving: " + " ".join(f"{ch}@{dr:+d},{dc:+d}{velocity_text(vr, vc)}"
-                                             for _, dr, dc, ch, vr, vc in seen[:MAX_MOVERS])
-        return text
+            parts.append("Moving: " + " ".join(f"{ch}@{dr:+d},{dc:+d}{velocity_text(vr, vc)}"
+                                               for _, dr, dc, ch, vr, vc in seen[:MAX_MOVERS]))
+        return " | ".join(parts)
 
     def _grid(self) -> list[str]:
         rows = self._rows()
