@@ -1,0 +1,364 @@
+"""Side-view physics for the Procgen platformers (coinrun, jumper, ninja, climber).
+
+Integer physics over ``games.common.physics``: each turn the player first moves one column
+sideways (LEFT/RIGHT, in the air too: air control), then jumps if asked and able, then moves
+``vy`` rows cell by cell (``move_vertical``: nothing tunnels), then gravity updates ``vy``
+(``fall``). A jump sets ``vy = -JUMP_SPEED``; gravity adds ``GRAVITY`` a turn up to
+``MAX_FALL``, so over flat ground a jump moves 2 up, 1 up, hang, 1 down, 2 down: three rows
+high, five turns in the air. Only standing on something may you jump, unless a game grants air
+jumps (jumper's double jump). Falling out of the bottom of the world kills; hazard cells
+(spikes, saws) kill on touch; patrolling enemies walk a stretch back and forth, a pure function
+of the turn, and kill on touch.
+
+``advance(lines, state, action)`` is the player's step, pure: the game plays it and ``search``
+(breadth-first over states ``(row, col, vy, air jumps left)`` and the turn modulo the patrol
+period) uses it, so a path the search finds wins in the real game. Generators call
+``PlatformTask._setup``'s loop: build, search, rebuild (seeded, bounded); tests replay
+``task.solution()``.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from math import lcm
+from typing import ClassVar, Iterable, Sequence
+
+import numpy as np
+
+from ...core.actions import ActionSet
+from ..common.physics import fall, move_vertical
+from .engine import OPEN, ProcgenTask
+
+GROUND, PLATFORM, BREAKABLE, ENEMY, SHURIKEN = "#", "=", "B", "E", "-"
+SOLID = frozenset(GROUND + PLATFORM + BREAKABLE)
+JUMP_SPEED, GRAVITY, MAX_FALL = 2, 1, 2        # rows per turn, positive = down
+TRIES = 40                                     # level draws before the game's easy level
+SHURIKEN_SPEED = 2                             # columns per turn
+
+State = tuple[int, int, int, int]              # row, column, vy, air jumps left
+Patrol = tuple[int, int, int, int]             # row, first column, last column, phase
+
+_MOVES = [("NOOP", "stay (gravity still acts)"), ("LEFT", "move one column left"),
+          ("RIGHT", "move one column right"), ("JUMP", "jump straight up"),
+          ("JUMP_LEFT", "jump and move one column left"),
+          ("JUMP_RIGHT", "jump and move one column right")]
+ACTIONS = ActionSet(_MOVES, noop="NOOP")
+THROW_ACTIONS = ActionSet(_MOVES + [("THROW", "throw a shuriken the way you last moved sideways")],
+                          noop="NOOP")
+THROW = 6
+DX = (0, -1, 1, 0, -1, 1, 0)
+JUMPS = (False, False, False, True, True, True, False)
+FACING = (0, 1, 2, 3, 1, 2, 0)                 # the engine's arrow for each action (0: keep)
+
+
+def advance(lines: Sequence[str], state: State, action: int, air_jumps: int = 0
+            ) -> tuple[State, list[tuple[int, int]]]:
+    """One turn of the player's physics; returns the new state and the cells entered in order.
+    A row at or below ``len(lines)`` means the player fell out of the world."""
+    r, c, vy, air = state
+    height, width = len(lines), len(lines[0])
+
+    def solid(rr: int, cc: int) -> bool:
+        return cc < 0 or cc >= width or rr < 0 or (rr < height and lines[rr][cc] in SOLID)
+
+    passed = []
+    grounded = vy >= 0 and solid(r + 1, c)
+    dx = DX[action]
+    if dx and not solid(r, c + dx):
+        c += dx
+        passed.append((r, c))
+    if JUMPS[action]:
+        if grounded:
+            vy = -JUMP_SPEED
+        elif air:
+            vy, air = -JUMP_SPEED, air - 1
+    if vy:
+        r0, step = r, (1 if vy > 0 else -1)
+        r, stopped = move_vertical(r, vy, lambda y: solid(y, c))
+        passed.extend((y, c) for y in range(r0 + step, r + step, step))
+        if stopped:
+            vy = 0
+    if r >= height:
+        return (r, c, vy, air), passed
+    if vy >= 0 and solid(r + 1, c):
+        vy, air = 0, air_jumps
+    else:
+        vy = fall(vy, GRAVITY, MAX_FALL)
+    return (r, c, vy, air), passed
+
+
+def jump_arc() -> list[int]:
+    """Rows moved each turn by a jump over flat ground (negative is up), from the constants."""
+    lines = [OPEN] * 8 + [GROUND]
+    state, arc = (7, 0, 0, 0), []
+    for action in (3, *[0] * 10):
+        nxt, _ = advance(lines, state, action)
+        arc.append(nxt[0] - state[0])
+        state = nxt
+        if state[0] == 7:
+            return arc
+    raise AssertionError("a jump over flat ground never lands")
+
+
+def patrol_col(patrol: Patrol, turn: int) -> int:
+    """Column of a patroller after ``turn`` turns: it walks its stretch back and forth."""
+    _, lo, hi, phase = patrol
+    span = hi - lo
+    if not span:
+        return lo
+    k = (turn + phase) % (2 * span)
+    return lo + (k if k <= span else 2 * span - k)
+
+
+def period_of(patrols: Iterable[Patrol]) -> int:
+    return lcm(1, *(2 * (hi - lo) for _, lo, hi, _ in patrols if hi > lo))
+
+
+def caught(start: tuple[int, int], end: tuple[int, int], passed: list, before: tuple[int, int],
+           after: tuple[int, int]) -> bool:
+    """Does an enemy moving ``before`` -> ``after`` touch a player moving ``start`` -> ``end``
+    through ``passed`` (on ``after``, met on the way, or the two swapping cells)?"""
+    return after == end or after in passed or (after == start and before in passed)
+
+
+def search(lines: Sequence[str], start: State, goals: frozenset, *, air_jumps: int = 0,
+           hazards: str = "", patrols: Sequence[Patrol] = (), turn: int = 0,
+           n_actions: int = 6, limit: int = 400_000):
+    """Breadth-first search over the player's states (and the turn modulo the patrol period):
+    the shortest action list from ``start`` at ``turn`` that touches a cell of ``goals`` without
+    falling, touching a hazard or being caught. Returns (actions or None, visited states)."""
+    height = len(lines)
+    period = period_of(patrols)
+    pairs = [[(p[0], patrol_col(p, t)) for p in patrols] for t in range(period + 1)]
+    key0 = (start, turn % period)
+    parent: dict = {key0: None}
+    queue = deque([key0])
+    while queue and len(parent) < limit:
+        key = queue.popleft()
+        state, t = key
+        t1 = t + 1
+        p0 = state[:2]
+        for action in range(n_actions):
+            nxt, passed = advance(lines, state, action, air_jumps)
+            if nxt[0] >= height:
+                continue
+            nkey = (nxt, t1 % period)
+            if nkey in parent:
+                continue
+            end = nxt[:2]
+            if hazards and any(lines[r][c] in hazards for r, c in passed):
+                continue
+            if patrols and any(caught(p0, end, passed, b, a) for b, a in zip(pairs[t], pairs[t1])):
+                continue
+            parent[nkey] = (key, action)
+            if end in goals or any(cell in goals for cell in passed):
+                path = []
+                while parent[nkey] is not None:
+                    nkey, action = parent[nkey]
+                    path.append(action)
+                return path[::-1], parent
+            queue.append(nkey)
+    return None, parent
+
+
+class PlatformTask(ProcgenTask):
+    """A side-view game: a still level (``rows`` as lists, ``_lines`` as strings), the player's
+    physics state, patrollers and (ninja) shuriken. A game supplies ``_build(rng, easy)``
+    (setting ``rows``, ``start``, ``goals``, ``patrols``), ``_touch(cell, ch)`` for its pickups,
+    its HUD extras and its death penalty."""
+
+    ACTIONS = ACTIONS
+    air_jumps: ClassVar[int] = 0
+    hazards: ClassVar[str] = ""
+    death_penalty: ClassVar[float] = 0.0
+    shows_motion = True
+
+    rows: list[list[str]]
+    start: tuple[int, int]
+    goals: frozenset
+    patrols: list[Patrol]
+
+    def prompt_fields(self) -> dict:
+        arc = jump_arc()
+        words = ", ".join("hang" if d == 0 else f"{abs(d)} {'up' if d < 0 else 'down'}" for d in arc)
+        air = (f", or once more in mid-air ({self.air_jumps} air jump, restored on landing)"
+               if self.air_jumps == 1 else "")
+        physics = (f"LEFT/RIGHT move you one column a turn, in the air too. You may jump only "
+                   f"standing on something{air}; over flat ground a jump moves you {words} "
+                   f"({-sum(d for d in arc if d < 0)} rows up and {len(arc)} turns in the air; vertical speed "
+                   f"changes by {GRAVITY} a turn up to {MAX_FALL} down). Solid cells stop you.")
+        return {**super().prompt_fields(), "physics": physics}
+
+    # -- level ------------------------------------------------------------------------------------
+    def _build(self, rng: np.random.Generator, easy: bool) -> None:
+        raise NotImplementedError
+
+    def _setup(self, rng: np.random.Generator) -> None:
+        for attempt in range(TRIES + 1):
+            self._build(rng, easy=attempt == TRIES)
+            self._lines = ["".join(row) for row in self.rows]
+            self.height, self.width = len(self._lines), len(self._lines[0])
+            self.state: State = (*self.start, 0, self.air_jumps)
+            self.alive = [True] * len(self.patrols)
+            if self.solution() is not None:
+                break
+        else:
+            raise AssertionError(f"{self.task_id}: the easy level is not winnable")
+        self.place_player(self.start)
+        self.heading, self.vx, self.kills = 1, 0, 0
+        self.stars: list[list[int]] = []      # shuriken in flight: [row, col, direction]
+
+    def solution(self) -> list[int] | None:
+        """Actions that win from here (enemies included), by ``search``; None if none found."""
+        patrols = [p for p, a in zip(self.patrols, self.alive) if a]
+        path, _ = search(self._lines, self.state, self.goals, air_jumps=self.air_jumps,
+                         hazards=self.hazards, patrols=patrols, turn=self.turn)
+        return path
+
+    def set_tile(self, r: int, c: int, ch: str) -> None:
+        self.rows[r][c] = ch
+        self._lines[r] = "".join(self.rows[r])
+
+    # -- turn -------------------------------------------------------------------------------------
+    def _act(self, action: int) -> None:
+        if action == THROW:
+            self.stars.append([self.pos[0], self.pos[1], self.heading])
+        start = self.pos
+        self.state, passed = advance(self._lines, self.state, action, self.air_jumps)
+        r, c = self.state[0], self.state[1]
+        self.vx = c - start[1]
+        if self.vx:
+            self.heading = self.vx
+        if FACING[action]:
+            self.facing = FACING[action]
+        if r >= self.height:
+            self.pos = (self.height - 1, c)
+            return self._die("You fell out of the world.")
+        self.pos = (r, c)
+        lines = self._lines
+        for pr, pc in passed:
+            ch = lines[pr][pc]
+            if ch in self.hazards:
+                return self._die("You touched a hazard.")
+            if ch != OPEN:
+                self._touch((pr, pc), ch)
+                if self.done:
+                    return
+        if self.stars:
+            self._fly()
+        for i, patrol in enumerate(self.patrols):
+            if self.alive[i]:
+                before = (patrol[0], patrol_col(patrol, self.turn - 1))
+                after = (patrol[0], patrol_col(patrol, self.turn))
+                if caught(start, self.pos, passed, before, after):
+                    return self._die("An enemy got you.")
+
+    def _touch(self, cell: tuple[int, int], ch: str) -> None:
+        """The player entered a cell holding ``ch`` (a pickup or the goal)."""
+
+    def _die(self, message: str) -> None:
+        if self.death_penalty:
+            self.reward(-self.death_penalty)
+        self.say(message)
+        self.finish(won=False)
+
+    def _fly(self) -> None:
+        """Shuriken fly ``SHURIKEN_SPEED`` columns a turn: a breakable wall breaks, an enemy
+        dies, anything else solid or the world's edge stops them."""
+        flying = []
+        for star in self.stars:
+            r, c, d = star
+            for _ in range(SHURIKEN_SPEED):
+                c += d
+                if not 0 <= c < self.width:
+                    break
+                ch = self._lines[r][c]
+                if ch == BREAKABLE:
+                    for rr in range(self.height):
+                        if self.rows[rr][c] == BREAKABLE:
+                            self.set_tile(rr, c, OPEN)
+                    self.say("Your shuriken broke a wall.")
+                    break
+                if ch in SOLID:
+                    break
+                hit = self._enemy_at(r, c)
+                if hit is not None:
+                    self.alive[hit] = False
+                    self.kills += 1
+                    self._kill()
+                    break
+            else:
+                star[1] = c
+                flying.append(star)
+        self.stars = flying
+
+    def _enemy_at(self, r: int, c: int) -> int | None:
+        for i, patrol in enumerate(self.patrols):
+            if self.alive[i] and patrol[0] == r and c in (patrol_col(patrol, self.turn),
+                                                           patrol_col(patrol, self.turn - 1)):
+                return i
+        return None
+
+    def _kill(self) -> None:
+        """A shuriken killed an enemy (ninja pays for it)."""
+
+    # -- drawing ----------------------------------------------------------------------------------
+    def _rows(self) -> list[str]:
+        return self._lines
+
+    def _sprites(self):
+        out = [(p[0], patrol_col(p, self.turn), ENEMY) for p, a in zip(self.patrols, self.alive) if a]
+        out += [(r, c, SHURIKEN) for r, c, _ in self.stars]
+        return out
+
+    def _velocity(self) -> tuple[int, int]:
+        return self.state[2], self.vx
+
+    def _movers(self):
+        t = self.turn
+        for p, a in zip(self.patrols, self.alive):
+            if a:
+                col = patrol_col(p, t)
+                yield ENEMY, p[0], col, 0, patrol_col(p, t + 1) - col
+        for r, c, d in self.stars:
+            yield SHURIKEN, r, c, 0, d * SHURIKEN_SPEED
+
+
+def ground_level(rng: np.random.Generator, width: int, height: int, *, lo: int, hi: int,
+                 pits: int, pit_width: tuple[int, int], step: int, flat_start: int = 5,
+                 flat_end: int = 6) -> tuple[list[list[str]], list[int | None]]:
+    """A side-scroller's ground: the top row of ground per column (None over a pit), changing by
+    up to ``step`` rows between stretches, between rows ``lo`` and ``hi``; flat at both ends."""
+    tops: list[int | None] = []
+    top = hi
+    pit_cols = set()
+    body = list(range(flat_start + 2, width - flat_end - 4))
+    for c0 in sorted(rng.choice(body, size=min(pits, len(body) // 6), replace=False).tolist()):
+        if not pit_cols & set(range(c0 - 4, c0 + 5)):
+            pit_cols.update(range(c0, c0 + int(rng.integers(pit_width[0], pit_width[1] + 1))))
+    run = 0
+    for c in range(width):
+        if c in pit_cols:
+            tops.append(None)
+            continue
+        if flat_start <= c < width - flat_end and run <= 0:
+            top = int(np.clip(top + rng.integers(-step, step + 1), lo, hi))
+            run = int(rng.integers(3, 7))
+        run -= 1
+        tops.append(top)
+    rows = [[OPEN] * width for _ in range(height)]
+    for c, t in enumerate(tops):
+        if t is not None:
+            for r in range(t, height):
+                rows[r][c] = GROUND
+    return rows, tops
+
+
+def flats(tops: Sequence[int | None], length: int, lo: int, hi: int) -> list[tuple[int, int]]:
+    """Stretches (first column, top) of ``length`` equal ground tops within columns lo..hi."""
+    out = []
+    for c in range(lo, hi - length + 1):
+        t = tops[c]
+        if t is not None and all(tops[c + i] == t for i in range(length)):
+            out.append((c, t))
+    return out
