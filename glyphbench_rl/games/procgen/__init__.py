@@ -11,3 +11,6 @@ from . import heist  # noqa: F401
 from . import chaser  # noqa: F401
 from . import miner  # noqa: F401
 from . import coinrun  # noqa: F401
+from . import jumper  # noqa: F401
+from . import ninja  # noqa: F401
+from . import climber  # noqa: F401
