@@ -199,12 +199,13 @@ class PlatformTask(ProcgenTask):
             self._lines = ["".join(row) for row in self.rows]
             self.height, self.width = len(self._lines), len(self._lines[0])
             self.state: State = (*self.start, 0, self.air_jumps)
-            self.alive = [True] * len(self.patrols)
+            self.alive, self.clock = [True] * len(self.patrols), 0
             if self.solution() is not None:
                 break
         else:
             raise AssertionError(f"{self.task_id}: the easy level is not winnable")
         self.place_player(self.start)
+        self.clock = 0
         self.heading, self.vx, self.kills = 1, 0, 0
         self.stars: list[list[int]] = []      # shuriken in flight: [row, col, direction]
 
@@ -212,7 +213,7 @@ class PlatformTask(ProcgenTask):
         """Actions that win from here (enemies included), by ``search``; None if none found."""
         patrols = [p for p, a in zip(self.patrols, self.alive) if a]
         path, _ = search(self._lines, self.state, self.goals, air_jumps=self.air_jumps,
-                         hazards=self.hazards, patrols=patrols, turn=self.turn)
+                         hazards=self.hazards, patrols=patrols, turn=self.clock)
         return path
 
     def set_tile(self, r: int, c: int, ch: str) -> None:
@@ -221,6 +222,7 @@ class PlatformTask(ProcgenTask):
 
     # -- turn -------------------------------------------------------------------------------------
     def _act(self, action: int) -> None:
+        self.clock += 1                 # the patrols' clock (a forfeited turn moves nothing)
         if action == THROW:
             self.stars.append([self.pos[0], self.pos[1], self.heading])
         start = self.pos
@@ -248,8 +250,8 @@ class PlatformTask(ProcgenTask):
             self._fly()
         for i, patrol in enumerate(self.patrols):
             if self.alive[i]:
-                before = (patrol[0], patrol_col(patrol, self.turn - 1))
-                after = (patrol[0], patrol_col(patrol, self.turn))
+                before = (patrol[0], patrol_col(patrol, self.clock - 1))
+                after = (patrol[0], patrol_col(patrol, self.clock))
                 if caught(start, self.pos, passed, before, after):
                     return self._die("An enemy got you.")
 
@@ -294,8 +296,8 @@ class PlatformTask(ProcgenTask):
 
     def _enemy_at(self, r: int, c: int) -> int | None:
         for i, patrol in enumerate(self.patrols):
-            if self.alive[i] and patrol[0] == r and c in (patrol_col(patrol, self.turn),
-                                                           patrol_col(patrol, self.turn - 1)):
+            if self.alive[i] and patrol[0] == r and c in (patrol_col(patrol, self.clock),
+                                                           patrol_col(patrol, self.clock - 1)):
                 return i
         return None
 
@@ -307,7 +309,7 @@ class PlatformTask(ProcgenTask):
         return self._lines
 
     def _sprites(self):
-        out = [(p[0], patrol_col(p, self.turn), ENEMY) for p, a in zip(self.patrols, self.alive) if a]
+        out = [(p[0], patrol_col(p, self.clock), ENEMY) for p, a in zip(self.patrols, self.alive) if a]
         out += [(r, c, SHURIKEN) for r, c, _ in self.stars]
         return out
 
@@ -315,7 +317,7 @@ class PlatformTask(ProcgenTask):
         return self.state[2], self.vx
 
     def _movers(self):
-        t = self.turn
+        t = self.clock
         for p, a in zip(self.patrols, self.alive):
             if a:
                 col = patrol_col(p, t)
