@@ -69,6 +69,7 @@ class ProcgenJumper(PlatformTask):
         dist = {cell: abs(cell[0] - self.start[0]) + abs(cell[1] - self.start[1]) for cell in reached}
         cands = sorted(cell for cell, d in dist.items() if d >= p.min_distance or easy and d == max(dist.values()))
         self.goals = frozenset()
+        self.proven = bool(cands)       # the search above reached the carrot's ledge
         if cands:
             carrot = cands[int(rng.integers(len(cands)))]
             rows[carrot[0]][carrot[1]] = CARROT

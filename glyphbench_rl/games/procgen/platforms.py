@@ -54,17 +54,14 @@ FACING = (0, 1, 2, 3, 1, 2, 0)                 # the engine's arrow for each act
 def advance(lines: Sequence[str], state: State, action: int, air_jumps: int = 0
             ) -> tuple[State, list[tuple[int, int]]]:
     """One turn of the player's physics; returns the new state and the cells entered in order.
-    A row at or below ``len(lines)`` means the player fell out of the world."""
+    Columns outside the world and rows above it are solid; a row at or below ``len(lines)``
+    means the player fell out of the world."""
     r, c, vy, air = state
-    height, width = len(lines), len(lines[0])
-
-    def solid(rr: int, cc: int) -> bool:
-        return cc < 0 or cc >= width or rr < 0 or (rr < height and lines[rr][cc] in SOLID)
-
+    height = len(lines)
     passed = []
-    grounded = vy >= 0 and solid(r + 1, c)
+    grounded = vy >= 0 and r + 1 < height and lines[r + 1][c] in SOLID
     dx = DX[action]
-    if dx and not solid(r, c + dx):
+    if dx and 0 <= c + dx < len(lines[0]) and lines[r][c + dx] not in SOLID:
         c += dx
         passed.append((r, c))
     if JUMPS[action]:
@@ -73,14 +70,14 @@ def advance(lines: Sequence[str], state: State, action: int, air_jumps: int = 0
         elif air:
             vy, air = -JUMP_SPEED, air - 1
     if vy:
-        r0, step = r, (1 if vy > 0 else -1)
-        r, stopped = move_vertical(r, vy, lambda y: solid(y, c))
+        r0, step, col = r, (1 if vy > 0 else -1), c
+        r, stopped = move_vertical(r, vy, lambda y: y < 0 or (y < height and lines[y][col] in SOLID))
         passed.extend((y, c) for y in range(r0 + step, r + step, step))
         if stopped:
             vy = 0
     if r >= height:
         return (r, c, vy, air), passed
-    if vy >= 0 and solid(r + 1, c):
+    if vy >= 0 and r + 1 < height and lines[r + 1][c] in SOLID:
         vy, air = 0, air_jumps
     else:
         vy = fall(vy, GRAVITY, MAX_FALL)
@@ -126,32 +123,45 @@ def search(lines: Sequence[str], start: State, goals: frozenset, *, air_jumps: i
            n_actions: int = 6, limit: int = 400_000):
     """Breadth-first search over the player's states (and the turn modulo the patrol period):
     the shortest action list from ``start`` at ``turn`` that touches a cell of ``goals`` without
-    falling, touching a hazard or being caught. Returns (actions or None, visited states)."""
+    falling, touching a hazard or being caught. Returns (actions or None, visited keys).
+
+    The player's moves do not depend on the turn, so each state's distinct safe moves are
+    worked out once (``advance`` per action) and reused at every turn of the period."""
     height = len(lines)
     period = period_of(patrols)
     pairs = [[(p[0], patrol_col(p, t)) for p in patrols] for t in range(period + 1)]
+    moves: dict = {}
     key0 = (start, turn % period)
     parent: dict = {key0: None}
     queue = deque([key0])
     while queue and len(parent) < limit:
         key = queue.popleft()
         state, t = key
+        options = moves.get(state)
+        if options is None:
+            options, kept = [], set()
+            r, c, vy, air = state
+            can_jump = air or vy >= 0 and r + 1 < height and lines[r + 1][c] in SOLID
+            for action in range(n_actions if can_jump else 3):   # else a jump is a step
+                nxt, passed = advance(lines, state, action, air_jumps)
+                if nxt[0] >= height or (nxt, *passed) in kept:
+                    continue
+                kept.add((nxt, *passed))
+                if hazards and any(lines[r][c] in hazards for r, c in passed):
+                    continue
+                won = nxt[:2] in goals or any(cell in goals for cell in passed)
+                options.append((action, nxt, passed, won))
+            moves[state] = options
         t1 = t + 1
         p0 = state[:2]
-        for action in range(n_actions):
-            nxt, passed = advance(lines, state, action, air_jumps)
-            if nxt[0] >= height:
-                continue
+        for action, nxt, passed, won in options:
             nkey = (nxt, t1 % period)
             if nkey in parent:
                 continue
-            end = nxt[:2]
-            if hazards and any(lines[r][c] in hazards for r, c in passed):
-                continue
-            if patrols and any(caught(p0, end, passed, b, a) for b, a in zip(pairs[t], pairs[t1])):
+            if patrols and any(caught(p0, nxt[:2], passed, b, a) for b, a in zip(pairs[t], pairs[t1])):
                 continue
             parent[nkey] = (key, action)
-            if end in goals or any(cell in goals for cell in passed):
+            if won:
                 path = []
                 while parent[nkey] is not None:
                     nkey, action = parent[nkey]
@@ -177,6 +187,7 @@ class PlatformTask(ProcgenTask):
     start: tuple[int, int]
     goals: frozenset
     patrols: list[Patrol]
+    proven = False
 
     def prompt_fields(self) -> dict:
         arc = jump_arc()
@@ -191,6 +202,7 @@ class PlatformTask(ProcgenTask):
 
     # -- level ------------------------------------------------------------------------------------
     def _build(self, rng: np.random.Generator, easy: bool) -> None:
+        """Draw a level; set ``proven`` when the draw itself searched its way to the goal."""
         raise NotImplementedError
 
     def _setup(self, rng: np.random.Generator) -> None:
@@ -200,7 +212,7 @@ class PlatformTask(ProcgenTask):
             self.height, self.width = len(self._lines), len(self._lines[0])
             self.state: State = (*self.start, 0, self.air_jumps)
             self.alive, self.clock = [True] * len(self.patrols), 0
-            if self.solution() is not None:
+            if self.goals and (self.proven or self.solution() is not None):
                 break
         else:
             raise AssertionError(f"{self.task_id}: the easy level is not winnable")
@@ -208,6 +220,15 @@ class PlatformTask(ProcgenTask):
         self.clock = 0
         self.heading, self.vx, self.kills = 1, 0, 0
         self.stars: list[list[int]] = []      # shuriken in flight: [row, col, direction]
+        self._place_enemies()
+
+    def _place_enemies(self) -> None:
+        """The live enemies at the clock, once a turn: (index, row, column, column a turn ago,
+        next step)."""
+        t = self.clock
+        self.enemies = [(i, p[0], col, patrol_col(p, t - 1), patrol_col(p, t + 1) - col)
+                        for i, p in enumerate(self.patrols) if self.alive[i]
+                        for col in (patrol_col(p, t),)]
 
     def solution(self) -> list[int] | None:
         """Actions that win from here (enemies included), by ``search``; None if none found."""
@@ -223,6 +244,8 @@ class PlatformTask(ProcgenTask):
     # -- turn -------------------------------------------------------------------------------------
     def _act(self, action: int) -> None:
         self.clock += 1                 # the patrols' clock (a forfeited turn moves nothing)
+        if self.patrols:
+            self._place_enemies()
         if action == THROW:
             self.stars.append([self.pos[0], self.pos[1], self.heading])
         start = self.pos
@@ -248,12 +271,9 @@ class PlatformTask(ProcgenTask):
                     return
         if self.stars:
             self._fly()
-        for i, patrol in enumerate(self.patrols):
-            if self.alive[i]:
-                before = (patrol[0], patrol_col(patrol, self.clock - 1))
-                after = (patrol[0], patrol_col(patrol, self.clock))
-                if caught(start, self.pos, passed, before, after):
-                    return self._die("An enemy got you.")
+        for _, row, col, before, _ in self.enemies:
+            if caught(start, self.pos, passed, (row, before), (row, col)):
+                return self._die("An enemy got you.")
 
     def _touch(self, cell: tuple[int, int], ch: str) -> None:
         """The player entered a cell holding ``ch`` (a pickup or the goal)."""
@@ -283,9 +303,10 @@ class PlatformTask(ProcgenTask):
                     break
                 if ch in SOLID:
                     break
-                hit = self._enemy_at(r, c)
+                hit = next((e for e in self.enemies if e[1] == r and c in (e[2], e[3])), None)
                 if hit is not None:
-                    self.alive[hit] = False
+                    self.alive[hit[0]] = False
+                    self.enemies.remove(hit)
                     self.kills += 1
                     self._kill()
                     break
@@ -293,13 +314,6 @@ class PlatformTask(ProcgenTask):
                 star[1] = c
                 flying.append(star)
         self.stars = flying
-
-    def _enemy_at(self, r: int, c: int) -> int | None:
-        for i, patrol in enumerate(self.patrols):
-            if self.alive[i] and patrol[0] == r and c in (patrol_col(patrol, self.clock),
-                                                           patrol_col(patrol, self.clock - 1)):
-                return i
-        return None
 
     def _kill(self) -> None:
         """A shuriken killed an enemy (ninja pays for it)."""
@@ -309,21 +323,19 @@ class PlatformTask(ProcgenTask):
         return self._lines
 
     def _sprites(self):
-        out = [(p[0], patrol_col(p, self.clock), ENEMY) for p, a in zip(self.patrols, self.alive) if a]
-        out += [(r, c, SHURIKEN) for r, c, _ in self.stars]
+        out = [(r, c, ENEMY) for _, r, c, _, _ in self.enemies]
+        if self.stars:
+            out += [(r, c, SHURIKEN) for r, c, _ in self.stars]
         return out
 
     def _velocity(self) -> tuple[int, int]:
         return self.state[2], self.vx
 
     def _movers(self):
-        t = self.clock
-        for p, a in zip(self.patrols, self.alive):
-            if a:
-                col = patrol_col(p, t)
-                yield ENEMY, p[0], col, 0, patrol_col(p, t + 1) - col
-        for r, c, d in self.stars:
-            yield SHURIKEN, r, c, 0, d * SHURIKEN_SPEED
+        out = [(ENEMY, r, c, 0, d) for _, r, c, _, d in self.enemies]
+        if self.stars:
+            out += [(SHURIKEN, r, c, 0, d * SHURIKEN_SPEED) for r, c, d in self.stars]
+        return out
 
 
 def ground_level(rng: np.random.Generator, width: int, height: int, *, lo: int, hi: int,
