@@ -27,7 +27,7 @@ import numpy as np
 
 from ...core.actions import ActionSet
 from ..common.physics import fall, move_vertical
-from .engine import OPEN, ProcgenTask
+from .engine import ARROWS, MAX_MOVERS, OPEN, ProcgenTask, velocity_text
 
 GROUND, PLATFORM, BREAKABLE, ENEMY, SHURIKEN = "#", "=", "B", "E", "-"
 SOLID = frozenset(GROUND + PLATFORM + BREAKABLE)
@@ -35,6 +35,10 @@ JUMP_SPEED, GRAVITY, MAX_FALL = 2, 1, 2        # rows per turn, positive = down
 TRIES = 40                                     # level draws before the game's easy level
 SHURIKEN_SPEED = 2                             # columns per turn
 
+VEL = {(vy, vx): "Vel " + velocity_text(vy, vx) for vy in range(-JUMP_SPEED, MAX_FALL + 1)
+       for vx in (-1, 0, 1)}
+STEP = {d: velocity_text(0, d) for d in range(-SHURIKEN_SPEED, SHURIKEN_SPEED + 1)}
+_MOVER_TEXT: dict = {}            # (glyph, rows, columns, step) -> "E@+2,-3←1"
 State = tuple[int, int, int, int]              # row, column, vy, air jumps left
 Patrol = tuple[int, int, int, int]             # row, first column, last column, phase
 
@@ -120,17 +124,24 @@ def caught(start: tuple[int, int], end: tuple[int, int], passed: list, before: t
 
 def search(lines: Sequence[str], start: State, goals: frozenset, *, air_jumps: int = 0,
            hazards: str = "", patrols: Sequence[Patrol] = (), turn: int = 0,
-           n_actions: int = 6, limit: int = 400_000):
+           n_actions: int = 6, limit: int = 400_000, memo: dict | None = None):
     """Breadth-first search over the player's states (and the turn modulo the patrol period):
     the shortest action list from ``start`` at ``turn`` that touches a cell of ``goals`` without
     falling, touching a hazard or being caught. Returns (actions or None, visited keys).
 
     The player's moves do not depend on the turn, so each state's distinct safe moves are
-    worked out once (``advance`` per action) and reused at every turn of the period."""
+    worked out once (``advance`` per action) and reused at every turn of the period. ``memo``
+    (``(state, action) -> advance(...)``, for this level) is read and filled."""
     height = len(lines)
     period = period_of(patrols)
-    pairs = [[(p[0], patrol_col(p, t)) for p in patrols] for t in range(period + 1)]
+    danger = []                      # per turn t: cells enemies enter at t + 1, and where from
+    for t in range(period):
+        came: dict = {}
+        for p in patrols:
+            came.setdefault((p[0], patrol_col(p, t + 1)), []).append((p[0], patrol_col(p, t)))
+        danger.append((frozenset(came), came))
     moves: dict = {}
+    memo = {} if memo is None else memo
     key0 = (start, turn % period)
     parent: dict = {key0: None}
     queue = deque([key0])
@@ -143,7 +154,10 @@ def search(lines: Sequence[str], start: State, goals: frozenset, *, air_jumps: i
             r, c, vy, air = state
             can_jump = air or vy >= 0 and r + 1 < height and lines[r + 1][c] in SOLID
             for action in range(n_actions if can_jump else 3):   # else a jump is a step
-                nxt, passed = advance(lines, state, action, air_jumps)
+                got = memo.get((state, action))
+                if got is None:
+                    got = memo[state, action] = advance(lines, state, action, air_jumps)
+                nxt, passed = got
                 if nxt[0] >= height or (nxt, *passed) in kept:
                     continue
                 kept.add((nxt, *passed))
@@ -158,8 +172,12 @@ def search(lines: Sequence[str], start: State, goals: frozenset, *, air_jumps: i
             nkey = (nxt, t1 % period)
             if nkey in parent:
                 continue
-            if patrols and any(caught(p0, nxt[:2], passed, b, a) for b, a in zip(pairs[t], pairs[t1])):
-                continue
+            if patrols:
+                after, came = danger[t]
+                end = nxt[:2]
+                if (end in after or any(cell in after for cell in passed)
+                        or (p0 in after and any(b in passed for b in came[p0]))):
+                    continue
             parent[nkey] = (key, action)
             if won:
                 path = []
@@ -212,6 +230,8 @@ class PlatformTask(ProcgenTask):
             self.height, self.width = len(self._lines), len(self._lines[0])
             self.state: State = (*self.start, 0, self.air_jumps)
             self.alive, self.clock = [True] * len(self.patrols), 0
+            self._memo: dict = {}            # (state, action) -> advance(...) on this level
+            self._still: tuple = (None, [])  # (view origin, the still rows there)
             if self.goals and (self.proven or self.solution() is not None):
                 break
         else:
@@ -220,26 +240,36 @@ class PlatformTask(ProcgenTask):
         self.clock = 0
         self.heading, self.vx, self.kills = 1, 0, 0
         self.stars: list[list[int]] = []      # shuriken in flight: [row, col, direction]
+        self._tracks: list[tuple[int, ...]] = []
         self._place_enemies()
 
     def _place_enemies(self) -> None:
         """The live enemies at the clock, once a turn: (index, row, column, column a turn ago,
-        next step)."""
-        t = self.clock
-        self.enemies = [(i, p[0], col, patrol_col(p, t - 1), patrol_col(p, t + 1) - col)
-                        for i, p in enumerate(self.patrols) if self.alive[i]
-                        for col in (patrol_col(p, t),)]
+        next step). Each patrol's columns over its period are worked out once."""
+        if len(self._tracks) != len(self.patrols):
+            self._tracks = [tuple(patrol_col(p, t) for t in range(max(1, 2 * (p[2] - p[1]))))
+                            for p in self.patrols]
+        t, out = self.clock, []
+        for i, track in enumerate(self._tracks):
+            if self.alive[i]:
+                n = len(track)
+                col = track[t % n]
+                out.append((i, self.patrols[i][0], col, track[(t - 1) % n], track[(t + 1) % n] - col))
+        self.enemies = out
 
     def solution(self) -> list[int] | None:
         """Actions that win from here (enemies included), by ``search``; None if none found."""
         patrols = [p for p, a in zip(self.patrols, self.alive) if a]
         path, _ = search(self._lines, self.state, self.goals, air_jumps=self.air_jumps,
-                         hazards=self.hazards, patrols=patrols, turn=self.clock)
+                         hazards=self.hazards, patrols=patrols, turn=self.clock, memo=self._memo)
         return path
 
     def set_tile(self, r: int, c: int, ch: str) -> None:
+        if ch in SOLID or self.rows[r][c] in SOLID:
+            self._memo.clear()               # the physics changed
         self.rows[r][c] = ch
         self._lines[r] = "".join(self.rows[r])
+        self._still = (None, [])
 
     # -- turn -------------------------------------------------------------------------------------
     def _act(self, action: int) -> None:
@@ -249,7 +279,11 @@ class PlatformTask(ProcgenTask):
         if action == THROW:
             self.stars.append([self.pos[0], self.pos[1], self.heading])
         start = self.pos
-        self.state, passed = advance(self._lines, self.state, action, self.air_jumps)
+        got = self._memo.get((self.state, action))
+        if got is None:
+            got = self._memo[self.state, action] = advance(self._lines, self.state, action,
+                                                           self.air_jumps)
+        self.state, passed = got
         r, c = self.state[0], self.state[1]
         self.vx = c - start[1]
         if self.vx:
@@ -271,8 +305,9 @@ class PlatformTask(ProcgenTask):
                     return
         if self.stars:
             self._fly()
+        rows = (start[0], r, *(cell[0] for cell in passed))
         for _, row, col, before, _ in self.enemies:
-            if caught(start, self.pos, passed, (row, before), (row, col)):
+            if row in rows and caught(start, self.pos, passed, (row, before), (row, col)):
                 return self._die("An enemy got you.")
 
     def _touch(self, cell: tuple[int, int], ch: str) -> None:
@@ -330,6 +365,52 @@ class PlatformTask(ProcgenTask):
 
     def _velocity(self) -> tuple[int, int]:
         return self.state[2], self.vx
+
+    def _origin(self) -> tuple[int, int]:
+        """The view's top-left world cell (the engine's window, clamped to the world)."""
+        r, c = self.pos
+        return (min(max(r - self.view_h // 2, 0), max(self.height - self.view_h, 0)),
+                min(max(c - self.view_w // 2, 0), max(self.width - self.view_w, 0)))
+
+    def _grid(self) -> list[str]:
+        """The engine's view, drawing only the sprites inside it (a test holds it to the
+        engine's)."""
+        top, left = self._origin()
+        bottom, right = top + self.view_h, left + self.view_w
+        if self._still[0] != (top, left):         # the still rows in view, cut once per place
+            self._still = (top, left), [row[left:right] for row in self._lines[top:bottom]]
+        view = list(self._still[1])
+        for r, c, ch in (*self._sprites(), (*self.pos, ARROWS[self.facing])):
+            if top <= r < bottom and left <= c < right:
+                row, k = view[r - top], c - left
+                view[r - top] = row[:k] + ch + row[k + 1:]
+        return view
+
+    def _motion(self) -> str:
+        """The engine's ``Vel ... | Moving: ...`` text, made quicker for things that move along
+        rows only (a test holds it to the engine's)."""
+        r, c = self.pos
+        top, left = self._origin()
+        bottom, right = top + self.view_h, left + self.view_w
+        text = VEL[self.state[2], self.vx]
+        seen = [(abs(mr - r) + abs(mc - c), mr - r, mc - c, ENEMY, vc)
+                for _, mr, mc, _, vc in self.enemies
+                if vc and top <= mr < bottom and left <= mc < right]
+        if self.stars:
+            seen += [(abs(mr - r) + abs(mc - c), mr - r, mc - c, SHURIKEN, d * SHURIKEN_SPEED)
+                     for mr, mc, d in self.stars if top <= mr < bottom and left <= mc < right]
+        seen.sort()
+        if not seen:
+            return text
+        names = _MOVER_TEXT
+        out = []
+        for _, dr, dc, ch, vc in seen[:MAX_MOVERS]:
+            key = (ch, dr, dc, vc)
+            name = names.get(key)
+            if name is None:
+                name = names[key] = f"{ch}@{dr:+d},{dc:+d}{STEP[vc]}"
+            out.append(name)
+        return text + " | Moving: " + " ".join(out)
 
     def _movers(self):
         out = [(ENEMY, r, c, 0, d) for _, r, c, _, d in self.enemies]

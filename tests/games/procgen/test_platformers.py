@@ -207,3 +207,29 @@ def test_jumper_compass_points_at_the_carrot():
     assert task._lines[gr][gc] == "%" and abs(gr - r) + abs(gc - c) >= task.params.min_distance
     hud = task.frame.hud
     assert f"Carrot {abs(gc - c)}{'←' if gc < c else '→'} {abs(gr - r)}{'↑' if gr < r else '↓'}" in hud
+
+
+@pytest.mark.parametrize("game", ["coinrun", "ninja", "climber"])
+def test_quick_motion_text_is_the_engines(game):
+    from glyphbench_rl.games.procgen.engine import ProcgenTask
+    import numpy as np
+    rng = np.random.default_rng(1)
+    task = make(game)
+    for _ in range(300):
+        if task.done:
+            task.reset(seed=int(rng.integers(100)))
+        task.step(int(rng.integers(task.action_space.n)))
+        assert task._motion() == ProcgenTask._motion(task)
+
+
+@pytest.mark.parametrize("game", GAMES)
+def test_quick_view_is_the_engines(game):
+    from glyphbench_rl.games.procgen.engine import ProcgenTask
+    import numpy as np
+    rng = np.random.default_rng(2)
+    task = make(game)
+    for _ in range(300):
+        if task.done:
+            task.reset(seed=int(rng.integers(100)))
+        task.step(int(rng.integers(task.action_space.n)))
+        assert task._grid() == ProcgenTask._grid(task)
