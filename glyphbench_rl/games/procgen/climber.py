@@ -79,7 +79,7 @@ class ProcgenClimber(PlatformTask):
         goal = (top - 1, 6)
         rows[goal[0]][goal[1]] = GOAL
         self.start = (h - 3, int(rng.integers(1, WIDTH - 1)))
-        self.goals = frozenset([goal])
+        self.goals, self.goal_row = frozenset([goal]), goal[0]
         self.rows = rows
         self.taken = 0
 
@@ -96,7 +96,7 @@ class ProcgenClimber(PlatformTask):
             self.finish(won=True)
 
     def _extras(self) -> str:
-        return f"Stars {self.taken} | Goal {self.pos[0] - next(iter(self.goals))[0]}↑"
+        return f"Stars {self.taken} | Goal {self.pos[0] - self.goal_row}↑"
 
 
 register_variants(ProcgenClimber, "Procgen", {"glyphbench/procgen-climber-v0": dict(max_turns=500)})

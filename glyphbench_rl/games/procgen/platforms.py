@@ -245,17 +245,16 @@ class PlatformTask(ProcgenTask):
 
     def _place_enemies(self) -> None:
         """The live enemies at the clock, once a turn: (index, row, column, column a turn ago,
-        next step). Each patrol's columns over its period are worked out once."""
+        next step). Each patrol's entries over its period are worked out once."""
         if len(self._tracks) != len(self.patrols):
-            self._tracks = [tuple(patrol_col(p, t) for t in range(max(1, 2 * (p[2] - p[1]))))
-                            for p in self.patrols]
-        t, out = self.clock, []
-        for i, track in enumerate(self._tracks):
-            if self.alive[i]:
-                n = len(track)
-                col = track[t % n]
-                out.append((i, self.patrols[i][0], col, track[(t - 1) % n], track[(t + 1) % n] - col))
-        self.enemies = out
+            self._tracks = []
+            for i, p in enumerate(self.patrols):
+                n = max(1, 2 * (p[2] - p[1]))
+                cols = [patrol_col(p, t) for t in range(n)]
+                self._tracks.append(tuple((i, p[0], cols[k], cols[k - 1], cols[(k + 1) % n] - cols[k])
+                                          for k in range(n)))
+        t, alive = self.clock, self.alive
+        self.enemies = [track[t % len(track)] for track in self._tracks if alive[track[0][0]]]
 
     def solution(self) -> list[int] | None:
         """Actions that win from here (enemies included), by ``search``; None if none found."""
