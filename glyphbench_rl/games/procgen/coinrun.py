@@ -55,8 +55,9 @@ class ProcgenCoinRun(PlatformTask):
         for _ in range(n_platforms):
             c0, length = int(rng.choice(body)), int(rng.integers(3, 6))
             r = min(t for t in tops[c0:c0 + length] + [9] if t is not None) - int(rng.integers(3, 5))
-            for c in range(c0, min(c0 + length, width - 7)):
-                if rows[r][c] == OPEN and rows[r + 1][c] == OPEN:
+            span = range(c0, min(c0 + length, width - 7))
+            if all(rows[r][c] == OPEN and rows[r + 1][c] == OPEN for c in span):
+                for c in span:
                     rows[r][c] = PLATFORM
         for c, t in flats(tops, 1, 6, width - 7)[::7] if not easy else ():
             if rng.random() < 0.5:                      # a crate or two on the ground

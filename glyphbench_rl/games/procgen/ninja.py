@@ -66,8 +66,9 @@ class ProcgenNinja(PlatformTask):
         for _ in range(0 if easy else p.platforms):
             c0, length = int(rng.integers(6, w - 10)), int(rng.integers(3, 6))
             r = min([t for t in tops[c0:c0 + length] if t is not None] + [9]) - int(rng.integers(3, 5))
-            for c in range(c0, c0 + length):
-                if r > 0 and rows[r][c] == OPEN and rows[r + 1][c] == OPEN:
+            span = range(c0, c0 + length)
+            if r > 0 and all(rows[r][c] == OPEN and rows[r + 1][c] == OPEN for c in span):
+                for c in span:
                     rows[r][c] = PLATFORM
         spots = [(c, t) for c, t in flats(tops, 3, 7, w - 7) if t >= 3]
         walls = [] if easy else rng.choice(len(spots), min(p.walls, len(spots)), replace=False).tolist()

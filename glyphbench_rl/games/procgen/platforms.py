@@ -76,7 +76,7 @@ def advance(lines: Sequence[str], state: State, action: int, air_jumps: int = 0
     if vy:
         r0, step, col = r, (1 if vy > 0 else -1), c
         r, stopped = move_vertical(r, vy, lambda y: y < 0 or (y < height and lines[y][col] in SOLID))
-        passed.extend((y, c) for y in range(r0 + step, r + step, step))
+        passed += [(y, c) for y in range(r0 + step, r + step, step)]
         if stopped:
             vy = 0
     if r >= height:
@@ -142,6 +142,8 @@ def search(lines: Sequence[str], start: State, goals: frozenset, *, air_jumps: i
         danger.append((frozenset(came), came))
     moves: dict = {}
     memo = {} if memo is None else memo
+    bad = frozenset((r, c) for r, line in enumerate(lines) for c, ch in enumerate(line)
+                    if ch in hazards) if hazards else frozenset()
     key0 = (start, turn % period)
     parent: dict = {key0: None}
     queue = deque([key0])
@@ -161,9 +163,9 @@ def search(lines: Sequence[str], start: State, goals: frozenset, *, air_jumps: i
                 if nxt[0] >= height or (nxt, *passed) in kept:
                     continue
                 kept.add((nxt, *passed))
-                if hazards and any(lines[r][c] in hazards for r, c in passed):
+                if bad and not bad.isdisjoint(passed):
                     continue
-                won = nxt[:2] in goals or any(cell in goals for cell in passed)
+                won = not goals.isdisjoint(passed)
                 options.append((action, nxt, passed, won))
             moves[state] = options
         t1 = t + 1
