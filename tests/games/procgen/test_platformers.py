@@ -233,3 +233,22 @@ def test_quick_view_is_the_engines(game):
             task.reset(seed=int(rng.integers(100)))
         task.step(int(rng.integers(task.action_space.n)))
         assert task._grid() == ProcgenTask._grid(task)
+
+
+@pytest.mark.parametrize("game, hazard", [("coinrun", "S"), ("jumper", "^")])
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_a_searched_path_into_a_hazard_loses(game, hazard, seed):
+    """The search aimed at the nearest hazard instead of the goal: played, it dies there."""
+    for seed_ in range(seed, seed + 20):
+        task = make(game, seed_)
+        cells = frozenset((r, c) for r, line in enumerate(task._lines) for c, ch in enumerate(line)
+                          if ch == hazard)
+        path, _ = search(task._lines, task.state, cells, air_jumps=task.air_jumps,
+                         patrols=task.patrols)
+        if path:
+            break
+    for action in path:
+        assert not task.done
+        task.step(action)
+    assert task.done and task.won is False and task.episode_return == 0.0
+    assert "hazard" in task.frame.message
