@@ -212,12 +212,14 @@ class PlatformTask(ProcgenTask):
     def prompt_fields(self) -> dict:
         arc = jump_arc()
         words = ", ".join("hang" if d == 0 else f"{abs(d)} {'up' if d < 0 else 'down'}" for d in arc)
-        air = (f", or once more in mid-air ({self.air_jumps} air jump, restored on landing)"
-               if self.air_jumps == 1 else "")
+        n = self.air_jumps
+        air = (", or once more in mid-air (restored on landing)" if n == 1 else
+               f", or {n} more times in mid-air (restored on landing)" if n else "")
+        rise = -sum(d for d in arc if d < 0)
         physics = (f"LEFT/RIGHT move you one column a turn, in the air too. You may jump only "
                    f"standing on something{air}; over flat ground a jump moves you {words} "
-                   f"({-sum(d for d in arc if d < 0)} rows up and {len(arc)} turns in the air; vertical speed "
-                   f"changes by {GRAVITY} a turn up to {MAX_FALL} down). Solid cells stop you.")
+                   f"({rise} rows up and {len(arc)} turns in the air; vertical speed changes by "
+                   f"{GRAVITY} a turn up to {MAX_FALL} down). Solid cells stop you.")
         return {**super().prompt_fields(), "physics": physics}
 
     # -- level ------------------------------------------------------------------------------------
@@ -242,7 +244,7 @@ class PlatformTask(ProcgenTask):
         self.clock = 0
         self.heading, self.vx, self.kills = 1, 0, 0
         self.stars: list[list[int]] = []      # shuriken in flight: [row, col, direction]
-        self._tracks: list[tuple[int, ...]] = []
+        self._tracks: list[tuple] = []      # per patrol: its entries over its period
         self._place_enemies()
 
     def _place_enemies(self) -> None:
