@@ -236,6 +236,7 @@ class PlatformTask(ProcgenTask):
             self.alive, self.clock = [True] * len(self.patrols), 0
             self._memo: dict = {}            # (state, action) -> advance(...) on this level
             self._still: tuple = (None, [])  # (view origin, the still rows there)
+            self._at: tuple = (None, (0, 0))  # (player's cell, view origin)
             if self.goals and (self.proven or self.solution() is not None):
                 break
         else:
@@ -370,10 +371,15 @@ class PlatformTask(ProcgenTask):
         return self.state[2], self.vx
 
     def _origin(self) -> tuple[int, int]:
-        """The view's top-left world cell (the engine's window, clamped to the world)."""
-        r, c = self.pos
-        return (min(max(r - self.view_h // 2, 0), max(self.height - self.view_h, 0)),
-                min(max(c - self.view_w // 2, 0), max(self.width - self.view_w, 0)))
+        """The view's top-left world cell (the engine's window, clamped to the world), worked
+        out once per place of the player."""
+        at, origin = self._at
+        if at != self.pos:
+            r, c = self.pos
+            origin = (min(max(r - self.view_h // 2, 0), max(self.height - self.view_h, 0)),
+                      min(max(c - self.view_w // 2, 0), max(self.width - self.view_w, 0)))
+            self._at = self.pos, origin
+        return origin
 
     def _grid(self) -> list[str]:
         """The engine's view, drawing only the sprites inside it (a test holds it to the
