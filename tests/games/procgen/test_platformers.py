@@ -1,6 +1,8 @@
+import numpy as np
 import pytest
 
 import glyphbench_rl
+from glyphbench_rl.games.procgen.engine import ProcgenTask
 from glyphbench_rl.games.procgen.platforms import (BREAKABLE, GROUND, OPEN, advance, jump_arc,
                                                    patrol_col, search)
 
@@ -218,8 +220,6 @@ def test_jumper_compass_points_at_the_carrot():
 
 @pytest.mark.parametrize("game", ["coinrun", "ninja", "climber"])
 def test_quick_motion_text_is_the_engines(game):
-    from glyphbench_rl.games.procgen.engine import ProcgenTask
-    import numpy as np
     rng = np.random.default_rng(1)
     task = make(game)
     for _ in range(300):
@@ -231,8 +231,6 @@ def test_quick_motion_text_is_the_engines(game):
 
 @pytest.mark.parametrize("game", GAMES)
 def test_quick_view_is_the_engines(game):
-    from glyphbench_rl.games.procgen.engine import ProcgenTask
-    import numpy as np
     rng = np.random.default_rng(2)
     task = make(game)
     for _ in range(300):
