@@ -257,3 +257,14 @@ def test_a_searched_path_into_a_hazard_loses(game, hazard, seed):
         task.step(action)
     assert task.done and task.won is False and task.episode_return == 0.0
     assert "hazard" in task.frame.message
+
+
+@pytest.mark.parametrize("game", GAMES)
+def test_the_fallback_level_after_the_retries_is_winnable(game):
+    task = make(game)
+    for seed in range(5):
+        task._build(np.random.default_rng(seed), easy=True)
+        lines = ["".join(row) for row in task.rows]
+        path, _ = search(lines, (*task.start, 0, task.air_jumps), task.goals, air_jumps=task.air_jumps,
+                         hazards=task.hazards, patrols=task.patrols)
+        assert path
