@@ -25,7 +25,7 @@ STARS_PAID = 8
 @dataclass(frozen=True)
 class ClimberParams:
     height: int = param(40, 16, 80)
-    enemy_share: float = param(0.5, 0, 1)     # of the platform rows with an enemy
+    enemy_every: int = param(2, 1, 10)        # an enemy on every n-th platform row (if long enough)
     star_reward: float = param(0.1, 0, 1 / STARS_PAID)
     goal_reward: float = param(0.2, 0, lambda p: round(1 - STARS_PAID * p.star_reward, 9))
 
@@ -58,7 +58,7 @@ class ProcgenClimber(PlatformTask):
         while r - 3 > 3:
             r -= int(rng.integers(2, 4)) if not easy else 2
             band += 1
-            if easy:   # a staircase: every platform one column on from the last
+            if easy:   # a staircase, two rows a step, zigzagging across the shaft
                 c0 = 1 + (band * 4) % (WIDTH - 5)
                 rows[r][c0:c0 + 3] = [PLATFORM] * 3
                 continue
@@ -72,7 +72,7 @@ class ProcgenClimber(PlatformTask):
                 placed.append((c0, c0 + length - 1))
                 rows[r - 1][c0 + int(rng.integers(length))] = STAR
             a, b = placed[0]
-            if b - a >= span and band % 2 == 0 and rng.random() < p.enemy_share * 2:
+            if b - a >= span and band % p.enemy_every == 0:
                 self.patrols.append((r - 1, a, a + span, int(rng.integers(2 * span))))
         top = r - 3
         rows[top][5:9] = [PLATFORM] * 4
@@ -96,7 +96,8 @@ class ProcgenClimber(PlatformTask):
             self.finish(won=True)
 
     def _extras(self) -> str:
-        return f"Stars {self.taken} | Goal {self.pos[0] - self.goal_row}↑"
+        d = self.pos[0] - self.goal_row
+        return f"Stars {self.taken} | Goal {abs(d)}{'↓' if d < 0 else '↑'}"
 
 
 register_variants(ProcgenClimber, "Procgen", {"glyphbench/procgen-climber-v0": dict(max_turns=500)})

@@ -88,7 +88,8 @@ class ProcgenCoinRun(PlatformTask):
             self.finish(won=True)
 
     def _extras(self) -> str:
-        return f"Coin {self.width - 3 - self.pos[1]}→"
+        d = self.width - 3 - self.pos[1]
+        return f"Coin {abs(d)}{'←' if d < 0 else '→'}"
 
 
 register_variants(ProcgenCoinRun, "Procgen", {"glyphbench/procgen-coinrun-v0": dict(max_turns=500)})

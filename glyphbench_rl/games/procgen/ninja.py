@@ -103,7 +103,8 @@ class ProcgenNinja(PlatformTask):
             self.reward(self.params.kill_reward)
 
     def _extras(self) -> str:
-        return f"Goal {self.width - 2 - self.pos[1]}→ | Kills {self.kills}"
+        d = self.width - 2 - self.pos[1]
+        return f"Goal {abs(d)}{'←' if d < 0 else '→'} | Kills {self.kills}"
 
 
 register_variants(ProcgenNinja, "Procgen", {"glyphbench/procgen-ninja-v0": dict(max_turns=500)})
