@@ -3,7 +3,8 @@
 As upstream, the world is a cave larger than the view, the bunny may jump once more in mid-air,
 spikes kill, and a compass in the status line points at the carrot. The cave is a cellular
 automaton's; the carrot goes on a ledge the search over the game's own physics reaches, far
-from the start, so every level is winnable by construction (and checked)."""
+from the start (in cells, and at least half as many turns away as the farthest ledge), so every
+level is winnable by construction: that search is the check."""
 
 from __future__ import annotations
 
@@ -24,7 +25,7 @@ class JumperParams:
     width: int = param(40, 20, 80)
     height: int = param(24, 12, 40)
     fill: float = param(0.42, 0.2, 0.5)      # share of rock before smoothing
-    spikes: int = param(6, 0, 20)
+    spikes: int = param(8, 0, 20)
     min_distance: int = param(16, 0, 60)     # rows + columns from the start to the carrot
 
 
@@ -64,10 +65,17 @@ class ProcgenJumper(PlatformTask):
         self.rows, self.patrols = rows, []
         lines = ["".join(row) for row in rows]
         _, seen = search(lines, (*self.start, 0, 1), frozenset(), air_jumps=1, hazards=SPIKES)
-        reached = {s[:2] for s, _ in seen if s[2] == 0 and rows[s[0]][s[1]] == OPEN
-                   and rows[s[0] + 1][s[1]] in SOLID}
-        dist = {cell: abs(cell[0] - self.start[0]) + abs(cell[1] - self.start[1]) for cell in reached}
-        cands = sorted(cell for cell, d in dist.items() if d >= p.min_distance or easy and d == max(dist.values()))
+        turns: dict = {}                # standing cell -> fewest turns to reach it
+        depth: dict = {}
+        for key, link in seen.items():  # (the search's insertion order is breadth-first)
+            depth[key] = d = 0 if link is None else depth[link[0]] + 1
+            r, c, vy, _ = key[0]
+            if vy == 0 and rows[r][c] == OPEN and rows[r + 1][c] in SOLID and (r, c) not in turns:
+                turns[r, c] = d
+        far = max(turns.values())
+        cands = sorted(cell for cell, d in turns.items()
+                       if (abs(cell[0] - self.start[0]) + abs(cell[1] - self.start[1]) >= p.min_distance
+                           and 2 * d >= far) or easy and d == far)
         self.goals = frozenset()
         self.proven = bool(cands)       # the search above reached the carrot's ledge
         if cands:
