@@ -219,7 +219,8 @@ class PlatformTask(ProcgenTask):
         physics = (f"LEFT/RIGHT move you one column a turn, in the air too. You may jump only "
                    f"standing on something{air}; over flat ground a jump moves you {words} "
                    f"({rise} rows up and {len(arc)} turns in the air; vertical speed changes by "
-                   f"{GRAVITY} a turn up to {MAX_FALL} down). Solid cells stop you.")
+                   f"{GRAVITY} a turn up to {MAX_FALL} down; Vel gives the rows you move next turn "
+                   f"unless stopped, and your last sideways step). Solid cells stop you.")
         return {**super().prompt_fields(), "physics": physics}
 
     # -- level ------------------------------------------------------------------------------------
