@@ -10,3 +10,5 @@ from . import maze  # noqa: F401
 from . import heist  # noqa: F401
 from . import chaser  # noqa: F401
 from . import miner  # noqa: F401
+from . import leaper  # noqa: F401
+from . import fruitbot  # noqa: F401
