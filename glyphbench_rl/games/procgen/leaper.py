@@ -58,8 +58,10 @@ class ProcgenLeaper(ProcgenTask):
                 break
         self.place_player(start)
         self.tick = 0
-        self._still = [GOAL * p.width + EDGE if r == 0 else OPEN * p.width + EDGE
-                       for r in range(p.height)]
+        still = [(GOAL if r == 0 else OPEN) * p.width + EDGE for r in range(p.height)]
+        self._frames = [[s.lane.row(t) + s.marker if s else still[r]      # the level repeats
+                         for r, s in enumerate(self.level.strips)]         # every cycle ticks
+                        for t in range(self.level.cycle)]
 
     def _lanes(self, rng: np.random.Generator) -> list[Strip | None]:
         """Groups of one to three road or river lanes (alternating, first kind from the seed),
@@ -87,9 +89,7 @@ class ProcgenLeaper(ProcgenTask):
         return strips + [None]
 
     def _rows(self) -> list[str]:
-        t = self.tick
-        return [s.lane.row(t) + s.marker if s else self._still[r]
-                for r, s in enumerate(self.level.strips)]
+        return self._frames[self.tick % self.level.cycle]
 
     def solution(self) -> list[int] | None:
         """The shortest winning action list from here (the generator's own check)."""
