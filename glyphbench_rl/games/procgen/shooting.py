@@ -311,6 +311,11 @@ class ShooterTask(ProcgenTask):
     player: Body
     gun: Gun | None
 
+    def __init_subclass__(cls, **kwargs) -> None:
+        if "shows_motion" not in cls.__dict__:   # every shooter game gets the motion sentence
+            cls.shows_motion = cls.shows_motion
+        super().__init_subclass__(**kwargs)
+
     def start(self, rows: Sequence[str], cell: Cell, gun: Gun | None = None) -> None:
         """Call from ``_setup``: the level's still rows, the player's cell and gun."""
         self.world = World(rows, self.solid)
