@@ -13,8 +13,8 @@ import numpy as np
 
 from ...core import register_variants
 from ...core.params import param
-from ..common.palette import FLOOR, WALL
-from .engine import PLAYER_GLYPHS, ProcgenTask
+from ..common.palette import WALL
+from .engine import OPEN, PLAYER_GLYPHS, ProcgenTask
 from .mazes import DistanceMaps, maze_level, rooms
 
 PELLET, POWER, GHOST, SCARED = "o", "O", "E", "F"
@@ -41,7 +41,8 @@ class ProcgenChaser(ProcgenTask):
                "nothing but ends the game.")
     ends = "when the maze is cleared or a ghost catches you"
     Params = ChaserParams
-    glyphs = {WALL: "wall", FLOOR: "open", PELLET: "pellet", POWER: "power pellet",
+    shows_motion = True
+    glyphs = {WALL: "wall", OPEN: "open", PELLET: "pellet", POWER: "power pellet",
               GHOST: "ghost", SCARED: "scared ghost", **PLAYER_GLYPHS}
 
     def prompt_fields(self) -> dict:
@@ -57,12 +58,13 @@ class ProcgenChaser(ProcgenTask):
         lairs = [cell for cell in rooms(board) if dist[cell] >= far // 2]
         self.lairs = [lairs[i] for i in rng.choice(len(lairs), p.ghosts, replace=False).tolist()]
         self.ghosts = list(self.lairs)
+        self.moved = [(0, 0)] * p.ghosts   # each ghost's last step
         self.scared = [False] * p.ghosts
         spots = [cell for cell in rooms(board) if cell != self.pos]
-        self.rows = [[PELLET if ch == FLOOR else ch for ch in row] for row in board.rows]
+        self.rows = [[PELLET if ch == OPEN else ch for ch in row] for row in board.rows]
         for i in rng.choice(len(spots), p.powers, replace=False).tolist():
             self.rows[spots[i][0]][spots[i][1]] = POWER
-        self.rows[1][1] = FLOOR
+        self.rows[1][1] = OPEN
         self.pellets = self.total = sum(row.count(PELLET) + row.count(POWER) for row in self.rows)
         self._lines = ["".join(row) for row in self.rows]
         self.timer = self.eaten = 0
@@ -72,6 +74,10 @@ class ProcgenChaser(ProcgenTask):
 
     def _sprites(self):
         return [(r, c, SCARED if s else GHOST) for (r, c), s in zip(self.ghosts, self.scared)]
+
+    def _movers(self):
+        return [(SCARED if s else GHOST, r, c, dr, dc)
+                for (r, c), s, (dr, dc) in zip(self.ghosts, self.scared, self.moved)]
 
     def _extras(self) -> str:
         scared = f" | Scared {self.timer}" if self.timer else ""
@@ -83,7 +89,7 @@ class ProcgenChaser(ProcgenTask):
         if ch != WALL:
             self.pos = (r, c)
             if ch == PELLET or ch == POWER:
-                self.rows[r][c] = FLOOR
+                self.rows[r][c] = OPEN
                 self._lines[r] = "".join(self.rows[r])
                 self.pellets -= 1
                 self.reward(0.5 / self.total)
@@ -114,7 +120,7 @@ class ProcgenChaser(ProcgenTask):
                 self.say("A ghost caught you.")
                 self.finish(won=False)
                 return True
-            self.ghosts[i], self.scared[i] = self.lairs[i], False
+            self.ghosts[i], self.scared[i], self.moved[i] = self.lairs[i], False, (0, 0)
             self.say("You ate a ghost.")
             if self.eaten < 2:
                 self.eaten += 1
@@ -133,11 +139,12 @@ class ProcgenChaser(ProcgenTask):
                 continue
             options = nbrs[ghost]
             if rng.random() < self.params.randomness:
-                self.ghosts[i] = options[int(rng.integers(len(options)))]
+                nxt = options[int(rng.integers(len(options)))]
             elif scared:
-                self.ghosts[i] = max(options, key=dist.__getitem__)
+                nxt = max(options, key=dist.__getitem__)
             else:
-                self.ghosts[i] = min(options, key=dist.__getitem__)
+                nxt = min(options, key=dist.__getitem__)
+            self.ghosts[i], self.moved[i] = nxt, (nxt[0] - ghost[0], nxt[1] - ghost[1])
 
 
 register_variants(ProcgenChaser, "Procgen", {"glyphbench/procgen-chaser-v0": dict(max_turns=500)})

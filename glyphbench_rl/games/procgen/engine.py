@@ -5,6 +5,12 @@ Five actions (NOOP, LEFT, RIGHT, UP, DOWN), an agent-centred view window clamped
 (``@`` before any), a HUD with the score (the return so far) plus each game's extras, and a
 horizon of 500 turns. A game keeps its world as row strings or row lists (``_rows``), lists the
 things drawn on top (``_sprites``), and moves by ``target(action)``.
+
+Motion in the HUD: a game whose things move reports the player's velocity (``_velocity``) and its
+moving things (``_movers``); the HUD then carries ``Vel →1↑2`` and ``Moving: E@+2,-3←1 ...``
+(each visible mover's place relative to you, rows then columns, and its velocity per turn), and
+the rules gain one sentence saying so. Open cells are ``.``: SmolLM2 reads a run of ``.`` as a
+few tokens where a run of the shared palette's ``·`` costs one token a cell.
 """
 
 from __future__ import annotations
@@ -16,6 +22,12 @@ from ...core.actions import ActionSet
 from ..common.view import overlay, window
 
 Cell = tuple[int, int]
+OPEN = "."          # an open cell in every Procgen game
+MAX_MOVERS = 6      # the HUD lists at most this many moving things, nearest first
+MOTION_RULE = (" The status line gives the moving things in view, nearest first, with their "
+               "velocity in cells per turn (E@+2,-3←1 is an E two rows below and three columns "
+               "left of you moving one column left a turn; ↑2 is two rows up a turn), and your own "
+               "velocity as Vel where you have one.")
 
 ACTIONS = ActionSet([("NOOP", "wait a turn"), ("LEFT", "move one cell left"),
                      ("RIGHT", "move one cell right"), ("UP", "move one cell up"),
@@ -34,8 +46,16 @@ class ProcgenTask(GlyphTask):
     view_w: ClassVar[int] = 20
     extra_chars = "".join(PLAYER_GLYPHS)
 
+    shows_motion: ClassVar[bool] = False   # the HUD reports Vel and Moving (and the rules say so)
+
     pos: Cell
     facing: int
+
+    def __init_subclass__(cls, **kwargs) -> None:
+        super().__init_subclass__(**kwargs)
+        if cls.__dict__.get("shows_motion") and MOTION_RULE not in cls.rules:
+            cls.rules = cls.rules + MOTION_RULE.replace("{", "{{").replace("}", "}}")
+            cls.extra_chars = "".join(dict.fromkeys(cls.extra_chars + "←→↑↓"))
 
     def place_player(self, cell: Cell) -> None:
         self.pos = cell
@@ -59,6 +79,31 @@ class ProcgenTask(GlyphTask):
     def _extras(self) -> str:
         return ""
 
+    def _velocity(self) -> Cell | None:
+        """The player's velocity (rows, columns per turn; rows grow downward), or None for a
+        game where the player has none beyond the last move (the HUD then leaves Vel out)."""
+        return None
+
+    def _movers(self) -> Iterable[tuple[str, int, int, int, int]]:
+        """Moving things as (glyph, row, column, row velocity, column velocity), world cells."""
+        return ()
+
+    def _motion(self) -> str:
+        """``Vel ... | Moving: ...`` for the things inside the current view."""
+        rows = self._rows()
+        r, c = self.pos
+        top = min(max(r - self.view_h // 2, 0), max(len(rows) - self.view_h, 0))
+        left = min(max(c - self.view_w // 2, 0), max(len(rows[0]) - self.view_w, 0))
+        seen = sorted((abs(mr - r) + abs(mc - c), mr - r, mc - c, ch, vr, vc)
+                      for ch, mr, mc, vr, vc in self._movers()
+                      if (vr or vc) and top <= mr < top + self.view_h and left <= mc < left + self.view_w)
+        vel = self._velocity()
+        parts = [] if vel is None else ["Vel " + velocity_text(*vel)]
+        if seen:
+            parts.append("Moving: " + " ".join(f"{ch}@{dr:+d},{dc:+d}{velocity_text(vr, vc)}"
+                                               for _, dr, dc, ch, vr, vc in seen[:MAX_MOVERS]))
+        return " | ".join(parts)
+
     def _grid(self) -> list[str]:
         rows = self._rows()
         height, width = len(rows), len(rows[0])
@@ -71,6 +116,14 @@ class ProcgenTask(GlyphTask):
         return view
 
     def _hud(self) -> str:
-        extras = self._extras()
-        score = f"Score {self.episode_return:.2f}"
-        return f"{score} | {extras}" if extras else score
+        parts = [f"Score {self.episode_return:.2f}", self._extras()]
+        if self.shows_motion:
+            parts.append(self._motion())
+        return " | ".join(p for p in parts if p)
+
+
+def velocity_text(dr: int, dc: int) -> str:
+    """``→1↑2``-style velocity; ``0`` when still."""
+    text = (f"←{-dc}" if dc < 0 else f"→{dc}" if dc > 0 else "") + \
+        (f"↑{-dr}" if dr < 0 else f"↓{dr}" if dr > 0 else "")
+    return text or "0"

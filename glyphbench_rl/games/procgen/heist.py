@@ -10,8 +10,8 @@ import numpy as np
 from ...core import register_variants
 from ...core.params import param
 from ..common.grid import MOVES, bfs_distances, bfs_search, shortest_path
-from ..common.palette import FLOOR, GOAL, WALL
-from .engine import DELTAS, PLAYER_GLYPHS, ProcgenTask
+from ..common.palette import GOAL, WALL
+from .engine import DELTAS, OPEN, PLAYER_GLYPHS, ProcgenTask
 from .mazes import maze_level, rooms
 
 KEYS, DOORS = "rby", "RBY"
@@ -49,7 +49,7 @@ class ProcgenHeist(ProcgenTask):
     rewards = "+{key_reward:.3g} for each key taken, +0.6 for reaching the gem."
     ends = "when you reach the gem"
     Params = HeistParams
-    glyphs = {WALL: "wall", FLOOR: "open", GOAL: "gem",
+    glyphs = {WALL: "wall", OPEN: "open", GOAL: "gem",
               **{k: f"{n} key" for k, n in zip(KEYS, COLOURS)},
               **{d: f"{n} locked door" for d, n in zip(DOORS, COLOURS)}, **PLAYER_GLYPHS}
 
@@ -100,9 +100,9 @@ class ProcgenHeist(ProcgenTask):
     def _draw(self) -> None:
         board = self.board
         for i, cell in enumerate(self.keys):
-            board[cell] = KEYS[i] if not self.held >> i & 1 else FLOOR
+            board[cell] = KEYS[i] if not self.held >> i & 1 else OPEN
         for i, cell in enumerate(self.doors):
-            if board[cell] != FLOOR:
+            if board[cell] != OPEN:
                 board[cell] = DOORS[i]
         board[self.goal] = GOAL
         self._still = board.lines()
@@ -127,7 +127,7 @@ class ProcgenHeist(ProcgenTask):
             if not self.held >> i & 1:
                 self.say(f"The {COLOURS[i]} door is locked.")
                 return
-            self.board[r, c] = FLOOR
+            self.board[r, c] = OPEN
             self.say(f"You opened the {COLOURS[i]} door.")
             self._draw()
         self.pos = (r, c)
@@ -136,7 +136,7 @@ class ProcgenHeist(ProcgenTask):
             self.held |= 1 << i
             self.reward(0.4 / 3)
             self.say(f"You took the {COLOURS[i]} key.")
-            self.board[r, c] = FLOOR
+            self.board[r, c] = OPEN
             self._draw()
         elif ch == GOAL:
             self.reward(0.6)

@@ -9,8 +9,8 @@ import numpy as np
 from ...core import register_variants
 from ...core.params import param
 from ..common.grid import bfs_distances
-from ..common.palette import FLOOR, GOAL, WALL
-from .engine import PLAYER_GLYPHS, ProcgenTask
+from ..common.palette import GOAL, WALL
+from .engine import OPEN, PLAYER_GLYPHS, ProcgenTask
 from .mazes import maze_level
 
 
@@ -27,7 +27,7 @@ class ProcgenMaze(ProcgenTask):
     rewards = "reaching the cheese gives +1."
     ends = "when you reach the cheese"
     Params = MazeParams
-    glyphs = {WALL: "wall", FLOOR: "open", GOAL: "cheese", **PLAYER_GLYPHS}
+    glyphs = {WALL: "wall", OPEN: "open", GOAL: "cheese", **PLAYER_GLYPHS}
 
     def prompt_fields(self) -> dict:
         return {"size": 2 * self.params.cells + 1}

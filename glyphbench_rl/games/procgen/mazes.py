@@ -8,22 +8,23 @@ from __future__ import annotations
 import numpy as np
 
 from ..common.grid import DELTAS, Board, bfs_distances, carve_maze
-from ..common.palette import FLOOR, WALL
+from ..common.palette import WALL
+from .engine import OPEN
 
 Cell = tuple[int, int]
 
 
 def maze_level(cells: int, rng: np.random.Generator, braid: float = 0.0) -> Board:
-    """A (2*cells+1)-square maze of WALL and FLOOR with rooms at odd (row, column); ``braid``
+    """A (2*cells+1)-square maze of WALL and OPEN with rooms at odd (row, column); ``braid``
     is the share of the remaining inner walls between two rooms that are knocked out."""
-    board = carve_maze(cells, rng, WALL, FLOOR)
+    board = carve_maze(cells, rng, WALL, OPEN)
     if braid > 0:
         size = board.height
         walls = [(r, c) for r in range(1, size - 1) for c in range(1, size - 1)
                  if (r + c) % 2 == 1 and board[r, c] == WALL]
         count = int(round(braid * len(walls)))
         for i in rng.choice(len(walls), size=count, replace=False).tolist():
-            board[walls[i]] = FLOOR
+            board[walls[i]] = OPEN
     return board
 
 

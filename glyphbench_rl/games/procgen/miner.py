@@ -3,7 +3,8 @@
 Boulder Dash's rule: a boulder falls one cell a turn into an empty cell below it; one resting on
 you is held up, but a falling one that lands on you crushes you. Boulders cannot be pushed. A
 tunnel along the top row and the right-hand column leads to the exit, so every level is won by
-walking it; the diamonds are the reason to dig."""
+walking it; the diamonds are the reason to dig, and the generator keeps only diamonds that can be
+dug to around the resting boulders."""
 
 from __future__ import annotations
 
@@ -13,8 +14,9 @@ import numpy as np
 
 from ...core import register_variants
 from ...core.params import param
-from ..common.palette import FLOOR, GOAL, WALL
-from .engine import PLAYER_GLYPHS, ProcgenTask
+from ..common.grid import bfs_distances
+from ..common.palette import GOAL, WALL
+from .engine import OPEN, PLAYER_GLYPHS, ProcgenTask
 
 DIRT, DIAMOND, BOULDER = ":", "*", "O"
 
@@ -36,7 +38,7 @@ class ProcgenMiner(ProcgenTask):
     rewards = "+0.1 for each of the first 8 diamonds, +0.2 for the exit, -1 for being crushed."
     ends = "when you reach the exit or are crushed"
     Params = MinerParams
-    glyphs = {WALL: "wall", FLOOR: "empty", DIRT: "dirt", DIAMOND: "diamond",
+    glyphs = {WALL: "wall", OPEN: "empty", DIRT: "dirt", DIAMOND: "diamond",
               BOULDER: "boulder", GOAL: "exit", **PLAYER_GLYPHS}
     view_h = view_w = 20
 
@@ -48,14 +50,9 @@ class ProcgenMiner(ProcgenTask):
             for c in range(1, n - 1):
                 x = draws[r - 1, c - 1]
                 rows[r][c] = (DIRT if x < p.dirt else DIAMOND if x < p.dirt + p.diamonds
-                              else BOULDER if x < p.dirt + p.diamonds + p.boulders else FLOOR)
+                              else BOULDER if x < p.dirt + p.diamonds + p.boulders else OPEN)
         for i in range(1, n - 1):   # the tunnel: top row and right-hand column
-            rows[1][i] = rows[i][n - 2] = FLOOR
-        spots = [(r, c) for r in range(2, n - 1) for c in range(1, n - 2) if rows[r][c] == DIRT]
-        missing = 8 - sum(row.count(DIAMOND) for row in rows)
-        if missing > 0:
-            for i in rng.choice(len(spots), missing, replace=False).tolist():
-                rows[spots[i][0]][spots[i][1]] = DIAMOND
+            rows[1][i] = rows[i][n - 2] = OPEN
         rows[n - 2][n - 2] = GOAL
         self.rows = rows
         self.place_player((1, 1))
@@ -63,6 +60,18 @@ class ProcgenMiner(ProcgenTask):
         while self._settle():   # boulders come to rest before the first turn
             pass
         self.falling = set()
+        # Every diamond is reachable by digging around the resting boulders; any other becomes
+        # dirt, and dirt that can be reached is turned into diamonds until there are at least 8.
+        reach = bfs_distances(self.pos, lambda r, c: rows[r][c] != WALL and rows[r][c] != BOULDER)
+        for r in range(2, n - 1):
+            for c in range(1, n - 2):
+                if rows[r][c] == DIAMOND and (r, c) not in reach:
+                    rows[r][c] = DIRT
+        spots = sorted(cell for cell in reach if rows[cell[0]][cell[1]] == DIRT)
+        missing = 8 - sum(row.count(DIAMOND) for row in rows)
+        if missing > 0:
+            for i in rng.choice(len(spots), min(missing, len(spots)), replace=False).tolist():
+                rows[spots[i][0]][spots[i][1]] = DIAMOND
         self.taken = 0
         self.left = sum(row.count(DIAMOND) for row in rows)
         self._lines = ["".join(row) for row in rows]
@@ -80,8 +89,8 @@ class ProcgenMiner(ProcgenTask):
                         self.falling = set()
                         self._crush()
                         return False
-                elif below[c] == FLOOR:
-                    row[c], below[c] = FLOOR, BOULDER
+                elif below[c] == OPEN:
+                    row[c], below[c] = OPEN, BOULDER
                     falling.add((r + 1, c))
                     moved = True
         self.falling = falling
@@ -114,8 +123,8 @@ class ProcgenMiner(ProcgenTask):
                 self.say("You reached the exit.")
                 self.finish(won=True)
                 return
-            if ch != FLOOR:
-                self.rows[r][c] = FLOOR
+            if ch != OPEN:
+                self.rows[r][c] = OPEN
         if self._settle() or ch == DIRT or ch == DIAMOND:
             self._lines = ["".join(row) for row in self.rows]
 

@@ -67,7 +67,7 @@ def test_miner_falling_boulder_crushes():
     task.reset(seed=0)
     rows = task.rows
     for r in range(2, 6):
-        rows[r][3] = "·"
+        rows[r][3] = "."
     rows[2][3] = "O"
     task.pos = (3, 3)               # holding up the boulder
     task.step("NOOP")
@@ -96,3 +96,40 @@ def test_chaser_scared_ghost_is_eaten_and_sent_home_and_a_hunting_one_catches():
     task.ghosts[1], task.scared[1] = (r, c), False          # a hunting ghost where you step next
     _, reward, term, _, info = task.step(back)
     assert term and info["won"] is False and "A ghost caught you." in task.frame.message
+
+
+def _miner_collect_all(task):
+    """Dig to the nearest diamond, then the exit, re-planning every turn; a move is taken only
+    if the real game (a copy of it) survives it and some move of the next turn."""
+    import copy
+
+    from glyphbench_rl.games.common.grid import DELTAS
+    names = {(0, -1): "LEFT", (0, 1): "RIGHT", (-1, 0): "UP", (1, 0): "DOWN"}
+    while not task.done and task.turn < 400:
+        def neighbours(cell):
+            for dr, dc in DELTAS:
+                nxt = (cell[0] + dr, cell[1] + dc)
+                if task.rows[nxt[0]][nxt[1]] not in "█O":
+                    yield names[(dr, dc)], nxt
+        target = "*" if task.left else "◎"
+        plan = bfs_search(task.pos, neighbours, lambda c: task.rows[c[0]][c[1]] == target)
+        assert plan, f"no way to a {target!r} from {task.pos}"
+        def survives(game, move, depth):
+            trial = copy.deepcopy(game)
+            trial.step(move)
+            if trial.done or depth == 1:
+                return trial.won is not False
+            return any(survives(trial, nxt, depth - 1) for nxt in ("NOOP", *names.values()))
+        move = next(m for m in (plan[0], "NOOP", *names.values()) if survives(task, m, 2))
+        task.step(move)
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2, 3])
+def test_miner_every_diamond_can_be_dug_out(seed):
+    task = glyphbench_rl.make("glyphbench/procgen-miner-v0")
+    task.reset(seed=seed)
+    diamonds = task.left
+    assert diamonds >= 8
+    _miner_collect_all(task)
+    assert task.won and task.taken == diamonds
+    assert task.episode_return == pytest.approx(0.1 * 8 + 0.2)

@@ -1,0 +1,395 @@
+"""The free-flying / shooter engine: bodies that move by a velocity each turn, swept collisions,
+guns with cooldown and range, and spawners (starpilot, bossfight, plunder, caveflyer, bigfish,
+dodgeball).
+
+A game is thin: it builds a ``World`` from its level rows in ``_setup`` (``self.start``), adds
+``Body`` objects, spawns and steers them in ``_think`` and applies its rules in ``_hit``.
+
+**Bodies** (``Body``): a glyph, a cell (``r``, ``c``), a velocity (``vr``, ``vc``: rows and
+columns per move; rows grow downward), ``hp`` (hit points, or a fish's size), ``side`` (one bit:
+``PLAYER``, ``SHOT``, ``FOE``, ``FOE_SHOT``, ``ITEM``, ``FRIEND``, or a game's own bit) and
+``hits`` (the sides it collides with; a pair collides when either one's ``hits`` names the
+other's side), ``reach`` (cells it may still travel: a shot's range), ``period``/``phase`` (it
+moves on turns where ``turn % period == phase``: slow bodies), ``edge`` (what the world's edge
+does: ``GONE`` removes it, ``WRAP`` wraps columns, ``STOP`` blocks like a wall) and ``data`` (the
+game's own). ``alive`` false removes it at the end of the turn.
+
+**Movement is swept** (``World.step``): a body moving ``n`` cells a turn visits every cell on
+its way, one cell per ``1/n`` of the turn. Two colliding bodies meet when they share a cell at the
+same moment of the turn, or swap cells at the same moment (crossing heads-on); still bodies hold
+their cell the whole turn. So a shot moving 2 cells cannot jump over an enemy, and two bodies
+that cross in one turn collide; a body following another at the same speed does not. A body
+whose next cell is solid (a ``World.solid`` character of the rows) stops before it, with
+``bump`` set to that cell. ``World.step`` returns the turn's events in time order: ``(a, b)``
+for a collision (in the order the two were added: ``pair(a, b, side)`` sorts them),
+``(a, None)`` for ``a`` bumping into a wall (or a ``STOP`` edge).
+
+**Shooter tasks** (``ShooterTask``): the five Procgen actions plus ``FIRE`` (``FIRE_ACTIONS``);
+the player is a ``Body`` (``self.player``) whose velocity is the move of this turn; it is drawn
+as the Procgen arrow (``self.pos`` follows it). One turn (``_act``) is: the player's move or
+shot, ``_think()`` (spawn, steer, enemy fire), the world's swept step, ``_hit(a, b)`` for each
+event whose bodies still live (in time order, stopping when the episode ends), ``_left(body)``
+for each body that left the world, and ``_after()``. The HUD reports the player's velocity and
+the moving bodies (``shows_motion``).
+
+**Spawners** (``Spawner``): a period with per-spawn jitter drawn from a named stream
+(``self.stream("name")``), and lane picks from it; the level generator (``_setup``'s rng)
+chooses the periods per seed.
+"""
+
+from __future__ import annotations
+
+from math import lcm
+from typing import Any, ClassVar, Iterable, Sequence
+
+import numpy as np
+
+from ...core.actions import ActionSet
+from .engine import ACTIONS, DELTAS, ProcgenTask
+
+Cell = tuple[int, int]
+
+# sides: one bit each (games may define more bits above FRIEND)
+PLAYER, SHOT, FOE, FOE_SHOT, ITEM, FRIEND = 1, 2, 4, 8, 16, 32
+# what the world's edge does to a body
+GONE, WRAP, STOP = 0, 1, 2
+FAR = 1 << 30   # the reach of a body that flies forever
+FIRE = len(ACTIONS)   # the FIRE action's index
+
+FIRE_ACTIONS = ActionSet([(a.name, a.description) for a in ACTIONS] + [("FIRE", "shoot")],
+                         noop="NOOP")
+
+
+def with_fire(description: str) -> ActionSet:
+    """The five Procgen actions plus FIRE described as ``description``."""
+    return ActionSet([(a.name, a.description) for a in ACTIONS] + [("FIRE", description)], noop="NOOP")
+
+
+def only(actions: ActionSet, names: Sequence[str], **described: str) -> ActionSet:
+    """``actions`` restricted to ``names`` (new descriptions by name in ``described``). The
+    game maps the smaller set's indices back (``ShooterTask.action_map``)."""
+    kept = [(a.name, described.get(a.name, a.description)) for a in actions if a.name in names]
+    return ActionSet(kept, noop="NOOP" if "NOOP" in names else None)
+
+
+class Body:
+    """A moving (or still) thing of the world; see the module notes for the fields."""
+
+    __slots__ = ("glyph", "r", "c", "vr", "vc", "hp", "side", "hits", "reach", "period",
+                 "phase", "edge", "alive", "bump", "data")
+
+    def __init__(self, glyph: str, r: int, c: int, vr: int = 0, vc: int = 0, *, side: int = FOE,
+                 hits: int = 0, hp: int = 1, reach: int = FAR, period: int = 1, phase: int = 0,
+                 edge: int = GONE, data: Any = None) -> None:
+        self.glyph, self.r, self.c, self.vr, self.vc = glyph, r, c, vr, vc
+        self.side, self.hits, self.hp, self.reach = side, hits, hp, reach
+        self.period, self.phase, self.edge, self.data = period, phase, edge, data
+        self.alive = True
+        self.bump: Cell | None = None
+
+    @property
+    def cell(self) -> Cell:
+        return self.r, self.c
+
+    def moves_on(self, turn: int) -> bool:
+        return (self.vr or self.vc) and (self.period == 1 or turn % self.period == self.phase)
+
+    def meets(self, other: "Body") -> bool:
+        return bool(self.hits & other.side or other.hits & self.side)
+
+    def __repr__(self) -> str:
+        return f"Body({self.glyph!r}, {self.r}, {self.c}, v={self.vr},{self.vc}, hp={self.hp})"
+
+
+def pair(a: Body, b: Body | None, side: int) -> tuple[Body, Body] | None:
+    """A collision event's bodies as (the one on ``side``, the other), or None when neither
+    is on ``side`` (or ``b`` is None: a bump). Events list bodies in the order they were added,
+    so a game's ``_hit`` asks ``pair(a, b, SHOT)`` rather than trusting the order."""
+    if b is None:
+        return None
+    if a.side & side:
+        return a, b
+    if b.side & side:
+        return b, a
+    return None
+
+
+class World:
+    """Still rows (strings; ``solid`` characters stop bodies) and the bodies moving over them."""
+
+    def __init__(self, rows: Sequence[str], solid: str) -> None:
+        self.rows = list(rows)
+        self.height, self.width = len(self.rows), len(self.rows[0])
+        self.solid = frozenset(solid)
+        self.bodies: list[Body] = []
+
+    # -- cells ------------------------------------------------------------------------------------
+    def inside(self, r: int, c: int) -> bool:
+        return 0 <= r < self.height and 0 <= c < self.width
+
+    def is_solid(self, r: int, c: int) -> bool:
+        return self.rows[r][c] in self.solid
+
+    def put(self, r: int, c: int, ch: str) -> None:
+        """Change one still cell (a wall shot away, a door)."""
+        row = self.rows[r]
+        self.rows[r] = row[:c] + ch + row[c + 1:]
+
+    def at(self, r: int, c: int) -> list[Body]:
+        return [b for b in self.bodies if b.alive and b.r == r and b.c == c]
+
+    def free(self, r: int, c: int) -> bool:
+        """Inside, not solid and holding no live body."""
+        return self.inside(r, c) and not self.is_solid(r, c) and not self.at(r, c)
+
+    # -- bodies -----------------------------------------------------------------------------------
+    def add(self, body: Body) -> Body:
+        self.bodies.append(body)
+        return body
+
+    def count(self, side: int) -> int:
+        return sum(1 for b in self.bodies if b.alive and b.side & side)
+
+    def cull(self) -> list[Body]:
+        """Drop dead bodies; returns those that left over a ``GONE`` edge this turn."""
+        gone = [b for b in self.bodies if not b.alive and not self.inside(b.r, b.c)]
+        self.bodies = [b for b in self.bodies if b.alive]
+        return gone
+
+    def track(self, body: Body, turn: int) -> tuple[list[Cell], int]:
+        """The cells ``body`` visits this turn (its own first) and the step (1-based) at which
+        it bumped into something solid or the edge (0 if none); sets ``bump``, ``alive``
+        (off a ``GONE`` edge) and uses up ``reach``."""
+        r, c = body.r, body.c
+        path = [(r, c)]
+        body.bump = None
+        if not body.moves_on(turn):
+            return path, 0
+        vr, vc = body.vr, body.vc
+        n = max(abs(vr), abs(vc))
+        steps = min(n, body.reach)
+        rows, solid, width = self.rows, self.solid, self.width
+        for k in range(1, steps + 1):
+            nr = r + int(vr * k / n)
+            nc = c + int(vc * k / n)
+            if not 0 <= nc < width:
+                if body.edge == WRAP:
+                    nc %= width
+                elif body.edge == GONE:
+                    body.alive = False
+                    path.append((nr, nc))
+                    break
+                else:
+                    body.bump = (nr, nc)
+                    return path, k
+            if not 0 <= nr < self.height:
+                if body.edge == STOP:
+                    body.bump = (nr, nc)
+                    return path, k
+                body.alive = False
+                path.append((nr, nc))
+                break
+            if rows[nr][nc] in solid:
+                body.bump = (nr, nc)
+                return path, k
+            path.append((nr, nc))
+        body.reach -= len(path) - 1
+        if body.reach <= 0:
+            body.alive = False
+        return path, 0
+
+    def step(self, turn: int) -> list[tuple[Body, Body | None]]:
+        """Move every live body by its velocity, swept; returns the turn's collisions and
+        bumps in time order (see the module notes)."""
+        bodies = [b for b in self.bodies if b.alive]
+        tracks = []
+        speeds = {1}
+        for b in bodies:
+            path, bumped = self.track(b, turn)
+            n = max(abs(b.vr), abs(b.vc)) if len(path) > 1 or bumped else 1
+            speeds.add(n)
+            tracks.append((b, path, n, bumped))
+        sub = lcm(*speeds)
+        timed: list[tuple[int, int, int, Body, Body | None]] = []
+        cells: dict[tuple[int, int, int], list[int]] = {}
+        moves: dict[tuple[int, Cell, Cell], list[int]] = {}
+        for i, (b, path, n, bumped) in enumerate(tracks):
+            last = len(path) - 1
+            if bumped:
+                timed.append((bumped * sub // n, i, i, b, None))
+            prev = path[0]
+            for s in range(1, sub + 1):
+                cell = path[min(s * n // sub, last)]
+                cells.setdefault((s, *cell), []).append(i)
+                if cell != prev:
+                    moves.setdefault((s, prev, cell), []).append(i)
+                    prev = cell
+            b.r, b.c = path[last]
+        seen: set[tuple[int, int]] = set()
+        for (s, _, _), here in cells.items():
+            if len(here) > 1:
+                for k, i in enumerate(here):
+                    for j in here[k + 1:]:
+                        if (i, j) not in seen and bodies[i].meets(bodies[j]):
+                            seen.add((i, j))
+                            timed.append((s, i, j, bodies[i], bodies[j]))
+        for (s, p, q), here in moves.items():
+            for j in moves.get((s, q, p), ()):
+                for i in here:
+                    if i < j and (i, j) not in seen and bodies[i].meets(bodies[j]):
+                        seen.add((i, j))
+                        timed.append((s, i, j, bodies[i], bodies[j]))
+        timed.sort(key=lambda e: e[:3])   # by moment, then by the order bodies were added
+        return [(a, b) for *_, a, b in timed]
+
+    def sprites(self, skip: Body | None = None) -> list[tuple[int, int, str]]:
+        return [(b.r, b.c, b.glyph) for b in self.bodies if b.alive and b is not skip]
+
+    def movers(self, skip: Body | None = None) -> list[tuple[str, int, int, int, int]]:
+        return [(b.glyph, b.r, b.c, b.vr, b.vc) for b in self.bodies
+                if b.alive and b is not skip and (b.vr or b.vc)]
+
+
+class Gun:
+    """Shots of ``glyph`` flying ``speed`` cells a turn for ``reach`` cells, one every
+    ``cooldown`` turns at most."""
+
+    __slots__ = ("glyph", "speed", "reach", "cooldown", "ready", "side", "hits")
+
+    def __init__(self, glyph: str, speed: int, reach: int, cooldown: int, *, side: int = SHOT,
+                 hits: int = FOE) -> None:
+        self.glyph, self.speed, self.reach, self.cooldown = glyph, speed, reach, cooldown
+        self.side, self.hits = side, hits
+        self.ready = 0   # the first turn it may fire
+
+    def fire(self, world: World, r: int, c: int, dr: int, dc: int, turn: int) -> Body | None:
+        """A shot from (r, c) heading (dr, dc) (unit steps), or None while cooling down. The
+        shot starts on the shooter's cell and moves this same turn."""
+        if turn < self.ready:
+            return None
+        self.ready = turn + self.cooldown
+        return world.add(Body(self.glyph, r, c, dr * self.speed, dc * self.speed, side=self.side,
+                              hits=self.hits, reach=self.reach))
+
+
+class Spawner:
+    """Says when to spawn: every ``period`` turns, each gap shifted by up to ``jitter`` either
+    way, from its own random stream (which it also lends for lane and kind picks)."""
+
+    __slots__ = ("rng", "period", "jitter", "next")
+
+    def __init__(self, rng: np.random.Generator, period: int, jitter: int = 0, first: int = 1) -> None:
+        self.rng, self.period, self.jitter, self.next = rng, period, jitter, first
+
+    def due(self, turn: int) -> bool:
+        if turn < self.next:
+            return False
+        gap = self.period + (int(self.rng.integers(-self.jitter, self.jitter + 1)) if self.jitter else 0)
+        self.next = turn + max(1, gap)
+        return True
+
+    def pick(self, options: Sequence[Any]) -> Any:
+        return options[int(self.rng.integers(len(options)))]
+
+    def chance(self, p: float) -> bool:
+        return bool(self.rng.random() < p)
+
+
+class ShooterTask(ProcgenTask):
+    """A Procgen game of free-moving bodies and shots (see the module notes)."""
+
+    ACTIONS = FIRE_ACTIONS
+    shows_motion = True
+    solid: ClassVar[str] = ""              # still characters that stop bodies
+    player_hits: ClassVar[int] = FOE | FOE_SHOT | ITEM | FRIEND
+    player_edge: ClassVar[int] = STOP
+    fire_dir: ClassVar[Cell | None] = None   # a fixed shot direction, or None: the facing one
+    start_dir: ClassVar[Cell] = (-1, 0)      # the facing direction before any move
+    action_map: ClassVar[tuple[int, ...] | None] = None   # own action index -> 0..4 or FIRE
+
+    world: World
+    player: Body
+    gun: Gun | None
+
+    def __init_subclass__(cls, **kwargs) -> None:
+        if "shows_motion" not in cls.__dict__:   # every shooter game gets the motion sentence
+            cls.shows_motion = cls.shows_motion
+        super().__init_subclass__(**kwargs)
+
+    def start(self, rows: Sequence[str], cell: Cell, gun: Gun | None = None) -> None:
+        """Call from ``_setup``: the level's still rows, the player's cell and gun."""
+        self.world = World(rows, self.solid)
+        self.player = self.world.add(Body("@", *cell, side=PLAYER, hits=self.player_hits,
+                                          edge=self.player_edge))
+        self.place_player(cell)
+        self.gun = gun
+        self.aim = self.start_dir
+        self.shots = 0
+
+    # -- hooks ------------------------------------------------------------------------------------
+    def _think(self) -> None:
+        """Spawn, steer and let enemies fire (before the world moves)."""
+
+    def _hit(self, a: Body, b: Body | None) -> None:
+        """``a`` met ``b`` (or bumped into ``a.bump`` when ``b`` is None)."""
+
+    def _left(self, body: Body) -> None:
+        """``body`` left the world over a ``GONE`` edge."""
+
+    def _after(self) -> None:
+        """After the turn's events."""
+
+    # -- the turn ----------------------------------------------------------------------------------
+    def _act(self, action: int) -> None:
+        if self.action_map is not None:
+            action = self.action_map[action]
+        p = self.player
+        if action == FIRE:
+            p.vr = p.vc = 0
+            self.shoot()
+        else:
+            if action:
+                self.facing = action
+                self.aim = DELTAS[action]
+            p.vr, p.vc = DELTAS[action]
+        self._think()
+        for a, b in self.world.step(self.turn):
+            if a.alive and (b is None or b.alive):
+                self._hit(a, b)
+                if self._terminated:
+                    break
+        for body in self.world.cull():
+            self._left(body)
+        self.pos = (p.r, p.c)
+        if not self._terminated:
+            self._after()
+
+    def shoot(self) -> Body | None:
+        """Fire the gun from the player's cell (in ``fire_dir`` or the facing direction)."""
+        if self.gun is None:
+            return None
+        dr, dc = self.fire_dir or self.aim
+        shot = self.gun.fire(self.world, self.player.r, self.player.c, dr, dc, self.turn)
+        if shot is not None:
+            self.shots += 1
+        return shot
+
+    # -- drawing -----------------------------------------------------------------------------------
+    def _rows(self) -> Sequence[str]:
+        return self.world.rows
+
+    def _sprites(self) -> Iterable[tuple[int, int, str]]:
+        return self.world.sprites(self.player)
+
+    def _velocity(self) -> Cell:
+        return self.player.vr, self.player.vc
+
+    def _movers(self) -> Iterable[tuple[str, int, int, int, int]]:
+        return self.world.movers(self.player)
+
+    def _extras(self) -> str:
+        gun = self.gun
+        if gun is None or gun.cooldown <= 1:
+            return ""
+        wait = gun.ready - self.turn - 1   # turns to wait before FIRE works again
+        return f"Gun {'ready' if wait <= 0 else f'wait {wait}'}"
