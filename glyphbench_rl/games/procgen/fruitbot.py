@@ -58,6 +58,7 @@ class ProcgenFruitbot(LeadView):
     glyphs = {OPEN: "empty", WALL: "wall", FRUIT: "fruit", JUNK: "junk", FINISH: "finish line",
               **PLAYER_GLYPHS}
     view_h, view_w, lead = 20, 14, 4
+    shows_motion = True
 
     def prompt_fields(self) -> dict:
         return {**super().prompt_fields(), "wall": WALL}
@@ -73,6 +74,7 @@ class ProcgenFruitbot(LeadView):
         self.place_player(start)
         self._lines = ["".join(row) for row in rows]
         self.fruit = self.junk = self.bumps = 0
+        self.vel = (1, 0)
 
     def _course(self, rng: np.random.Generator) -> list[list[str]]:
         p = self.params
@@ -107,6 +109,9 @@ class ProcgenFruitbot(LeadView):
     def _rows(self) -> list[str]:
         return self._lines
 
+    def _velocity(self) -> tuple[int, int]:
+        return self.vel
+
     def _extras(self) -> str:
         return f"Row {self.pos[0]}/{self.params.length - 1}"
 
@@ -115,6 +120,7 @@ class ProcgenFruitbot(LeadView):
         _, dc, fall = MOVES[action]
         self.facing = ARROW[action]
         r, c, bumped, entered = fall_turn(self._wall, p.length, p.width, *self.pos, dc, fall)
+        self.vel = (r - self.pos[0], c - self.pos[1])
         self.pos = (r, c)
         if bumped:
             self.bumps += 1

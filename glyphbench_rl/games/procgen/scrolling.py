@@ -19,9 +19,9 @@ from typing import Callable, ClassVar, Sequence
 
 from ..common.lanes import Lane
 from ..common.view import overlay, window
-from .engine import ARROWS, DELTAS, ProcgenTask
+from .engine import ARROWS, DELTAS, OPEN, ProcgenTask
 
-OPEN = "."          # an open cell (the Procgen convention)
+__all__ = ["OPEN", "Strip", "LaneLevel", "fall_turn", "fall_route", "LeadView"]
 Cell = tuple[int, int]
 
 
