@@ -12,3 +12,4 @@ from . import chaser  # noqa: F401
 from . import miner  # noqa: F401
 from . import leaper  # noqa: F401
 from . import fruitbot  # noqa: F401
+from . import bigfish  # noqa: F401
