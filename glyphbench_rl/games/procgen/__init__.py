@@ -13,3 +13,4 @@ from . import miner  # noqa: F401
 from . import leaper  # noqa: F401
 from . import fruitbot  # noqa: F401
 from . import bigfish  # noqa: F401
+from . import dodgeball  # noqa: F401
