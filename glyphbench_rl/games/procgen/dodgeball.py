@@ -75,8 +75,11 @@ class ProcgenDodgeball(ShooterTask):
                    Gun(BALL, 2, p.reach, p.cooldown, side=SHOT, hits=FOE))
         self.exit = exit_
         picks = rng.choice(len(spots), p.enemies, replace=False).tolist()
-        for i in picks:
-            self.world.add(Body(ENEMY, *spots[i], side=FOE, data=0))   # data: turn it may throw
+        self.enemies = [self.world.add(Body(ENEMY, *spots[i], side=FOE, data=0))   # data: the
+                        for i in picks]                                          # turn it may throw
+        rows = self.world.rows
+        self.exits = {(r, c): [(dr, dc) for dr, dc in DELTAS[1:] if rows[r + dr][c + dc] == OPEN]
+                      for r in range(1, p.height - 1) for c in range(1, p.width - 1)}
         self.left, self.rng = p.enemies, self.stream("enemies")
 
     def _arena(self, rng: np.random.Generator):
@@ -114,20 +117,19 @@ class ProcgenDodgeball(ShooterTask):
 
     # -- the turn ----------------------------------------------------------------------------------
     def _think(self) -> None:
-        p, rng, world, me = self.params, self.rng, self.world, self.player
-        taken = {b.cell for b in world.bodies if b.alive and b.side & FOE}
-        for e in world.bodies:
-            if not (e.alive and e.glyph == ENEMY):
-                continue
+        p, rng, world, me, turn = self.params, self.rng, self.world, self.player, self.turn
+        enemies = self.enemies = [e for e in self.enemies if e.alive]
+        taken = {(e.r, e.c) for e in enemies}
+        for e in enemies:
             e.vr = e.vc = 0
-            line = self._line(e, me)
-            if line and self.turn >= e.data and rng.random() < p.throw_chance:
-                e.data = self.turn + p.enemy_cooldown
+            line = (e.r == me.r or e.c == me.c) and turn >= e.data and self._line(e, me)
+            if line and rng.random() < p.throw_chance:
+                e.data = turn + p.enemy_cooldown
                 world.add(Body(THEIR_BALL, e.r, e.c, *line, side=FOE_SHOT, hits=PLAYER,
                                reach=p.reach))
-            elif self.turn % 2 == 0:
-                options = [(dr, dc) for dr, dc in DELTAS[1:]
-                           if world.rows[e.r + dr][e.c + dc] == OPEN and (e.r + dr, e.c + dc) not in taken]
+            elif turn % 2 == 0:
+                options = [(dr, dc) for dr, dc in self.exits[e.r, e.c]
+                           if (e.r + dr, e.c + dc) not in taken]
                 if options:
                     e.vr, e.vc = options[int(rng.integers(len(options)))]
                     taken.add((e.r + e.vr, e.c + e.vc))
