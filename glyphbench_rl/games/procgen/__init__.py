@@ -10,3 +10,4 @@ from . import maze  # noqa: F401
 from . import heist  # noqa: F401
 from . import chaser  # noqa: F401
 from . import miner  # noqa: F401
+from . import starpilot  # noqa: F401
