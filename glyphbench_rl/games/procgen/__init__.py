@@ -11,3 +11,4 @@ from . import heist  # noqa: F401
 from . import chaser  # noqa: F401
 from . import miner  # noqa: F401
 from . import starpilot  # noqa: F401
+from . import bossfight  # noqa: F401

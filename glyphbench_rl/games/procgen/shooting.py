@@ -12,7 +12,8 @@ columns per move; rows grow downward), ``hp`` (hit points, or a fish's size), ``
 other's side), ``reach`` (cells it may still travel: a shot's range), ``period``/``phase`` (it
 moves on turns where ``turn % period == phase``: slow bodies), ``edge`` (what the world's edge
 does: ``GONE`` removes it, ``WRAP`` wraps columns, ``STOP`` blocks like a wall) and ``data`` (the
-game's own). ``alive`` false removes it at the end of the turn.
+game's own). ``alive`` false (a game's verdict) or ``spent`` (its flight ended: off the world
+or out of reach; its events this turn still count) removes it at the end of the turn.
 
 **Movement is swept** (``World.step``): a body moving ``n`` cells a turn visits every cell on
 its way, one cell per ``1/n`` of the turn. Two colliding bodies meet when they share a cell at the
@@ -76,7 +77,7 @@ class Body:
     """A moving (or still) thing of the world; see the module notes for the fields."""
 
     __slots__ = ("glyph", "r", "c", "vr", "vc", "hp", "side", "hits", "reach", "period",
-                 "phase", "edge", "alive", "bump", "data")
+                 "phase", "edge", "alive", "spent", "bump", "data")
 
     def __init__(self, glyph: str, r: int, c: int, vr: int = 0, vc: int = 0, *, side: int = FOE,
                  hits: int = 0, hp: int = 1, reach: int = FAR, period: int = 1, phase: int = 0,
@@ -85,6 +86,7 @@ class Body:
         self.side, self.hits, self.hp, self.reach = side, hits, hp, reach
         self.period, self.phase, self.edge, self.data = period, phase, edge, data
         self.alive = True
+        self.spent = False   # its flight ends this turn (off a GONE edge, or out of reach)
         self.bump: Cell | None = None
 
     @property
@@ -151,15 +153,17 @@ class World:
         return sum(1 for b in self.bodies if b.alive and b.side & side)
 
     def cull(self) -> list[Body]:
-        """Drop dead bodies; returns those that left over a ``GONE`` edge this turn."""
-        gone = [b for b in self.bodies if not b.alive and not self.inside(b.r, b.c)]
-        self.bodies = [b for b in self.bodies if b.alive]
+        """Drop dead and spent bodies (after the turn's events: a shot that flies off the
+        world still hits what it met on the way); returns the live ones that left over a
+        ``GONE`` edge this turn."""
+        gone = [b for b in self.bodies if b.spent and b.alive and not self.inside(b.r, b.c)]
+        self.bodies = [b for b in self.bodies if b.alive and not b.spent]
         return gone
 
     def track(self, body: Body) -> tuple[list[Cell], int]:
         """The cells a moving ``body`` visits this turn (its own first) and the step (1-based)
         at which it bumped into something solid or a ``STOP`` edge (0 if none); sets ``bump``
-        and ``alive`` (off a ``GONE`` edge) and uses up ``reach``."""
+        and ``spent`` (off a ``GONE`` edge, or out of reach) and uses up ``reach``."""
         r, c = body.r, body.c
         path = [(r, c)]
         vr, vc = body.vr, body.vc
@@ -172,7 +176,7 @@ class World:
                 if body.edge == WRAP:
                     nc %= width
                 elif body.edge == GONE:
-                    body.alive = False
+                    body.spent = True
                     path.append((nr, nc))
                     break
                 else:
@@ -182,7 +186,7 @@ class World:
                 if body.edge == STOP:
                     body.bump = (nr, nc)
                     return path, k
-                body.alive = False
+                body.spent = True
                 path.append((nr, nc))
                 break
             if rows[nr][nc] in solid:
@@ -191,7 +195,7 @@ class World:
             path.append((nr, nc))
         body.reach -= len(path) - 1
         if body.reach <= 0:
-            body.alive = False
+            body.spent = True
         return path, 0
 
     def step(self, turn: int) -> list[tuple[Body, Body | None]]:
@@ -200,7 +204,7 @@ class World:
         timed: list[tuple[float, int, int, Body, Body | None]] = []
         where: dict[Cell, int] = {}           # cell -> the first body on it this turn
         crowd: dict[Cell, list[int]] = {}     # cells more than one body visits
-        bodies = [b for b in self.bodies if b.alive]
+        bodies = [b for b in self.bodies if b.alive and not b.spent]
         paths: list[tuple[Sequence[Cell], int]] = []
         rows, solid, height, width = self.rows, self.solid, self.height, self.width
         for i, b in enumerate(bodies):

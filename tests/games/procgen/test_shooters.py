@@ -110,3 +110,66 @@ def test_starpilot_fast_enemy_cannot_jump_over_you_or_a_bolt():
     task.world.add(Body("V", r, c + 3, 0, -2, side=FOE, hits=1))
     _, reward, *_ = task.step("FIRE")          # bolt c -> c+2, ship c+3 -> c+1: they cross
     assert reward == pytest.approx(0.8 / 12) and not task.done and task.world.count(FOE | SHOT) == 0
+
+
+# -- BossFight --------------------------------------------------------------------------------------
+def boss_aim(task, action):
+    """Stay low, under where the boss will be when a bolt gets there; fire when lined up."""
+    boss, (r, c) = task.boss, task.pos
+    eta = (r - boss.r + 1) // 2
+    col = boss.c + boss.vc * (eta // 2)
+    col = min(max(col, 0), task.params.width - 1)
+    if action == "FIRE":
+        return 3 if abs(col - c) <= 0 and task.gun.ready <= task.turn + 1 else -2
+    dc = {"LEFT": -1, "RIGHT": 1}.get(action, 0)
+    dr = {"UP": -1, "DOWN": 1}.get(action, 0)
+    return -abs(col - (c + dc)) - 0.5 * abs(task.params.height - 1 - (r + dr))
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_bossfight_scripted_fighter_wins(seed):
+    task = make("bossfight")
+    task.reset(seed=seed)
+    while not task.done:
+        task.step(lookahead(task, task.actions.names, boss_aim))
+    assert task.won and task.episode_return == pytest.approx(1.0)
+
+
+def test_bossfight_standing_still_gets_you_hit():
+    task = make("bossfight")
+    task.reset(seed=0)
+    while not task.done:
+        task.step("NOOP")
+    assert task.won is False and task.episode_return == -1.0 and "You were hit." in task.frame.message
+
+
+def test_bossfight_cover_stops_shots_and_a_fast_shot_cannot_skip_you():
+    task = make("bossfight", covers=0)
+    task.reset(seed=5)
+    task.rhythm = [10 ** 6] * 3                      # (the boss holds its fire)
+    r, c = task.pos
+    task.world.put(r - 2, c, "#")
+    task.world.add(Body("!", r - 4, c, 2, 0, side=8, hits=1))
+    task.step("NOOP")                                 # r-4 -> r-2 is cover: stopped at r-3
+    task.step("NOOP")
+    assert not task.done and task.world.count(8) == 0
+    task.world.put(r - 2, c, ".")
+    task.step("FIRE")                                 # your bolt is stopped by nothing now...
+    task.world.add(Body("!", r - 1, c, 2, 0, side=8, hits=1))
+    _, reward, term, *_ = task.step("UP")             # you r -> r-1, the shot r-1 -> r+1: crossing
+    assert term and reward == -1.0
+
+
+def test_bossfight_phases_follow_the_boss_hit_points():
+    task = make("bossfight")
+    task.reset(seed=3)
+    seen = []
+    for hp in (5, 4, 3, 2, 1):
+        task.boss.hp = hp
+        seen.append(task.phase)
+    assert seen == [0, 0, 1, 1, 2] and sorted(task.order) == ["aimed", "spread", "straight"]
+    orders = set()
+    for seed in range(12):
+        task.reset(seed=seed)
+        orders.add(tuple(task.order))
+    assert len(orders) >= 4
