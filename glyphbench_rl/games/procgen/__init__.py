@@ -14,3 +14,5 @@ from . import leaper  # noqa: F401
 from . import fruitbot  # noqa: F401
 from . import bigfish  # noqa: F401
 from . import dodgeball  # noqa: F401
+from . import starpilot  # noqa: F401
+from . import bossfight  # noqa: F401

@@ -12,7 +12,8 @@ columns per move; rows grow downward), ``hp`` (hit points, or a fish's size), ``
 other's side), ``reach`` (cells it may still travel: a shot's range), ``period``/``phase`` (it
 moves on turns where ``turn % period == phase``: slow bodies), ``edge`` (what the world's edge
 does: ``GONE`` removes it, ``WRAP`` wraps columns, ``STOP`` blocks like a wall) and ``data`` (the
-game's own). ``alive`` false removes it at the end of the turn.
+game's own). ``alive`` false (a game's verdict) or ``spent`` (its flight ended: off the world
+or out of reach; its events this turn still count) removes it at the end of the turn.
 
 **Movement is swept** (``World.step``): a body moving ``n`` cells a turn visits every cell on
 its way, one cell per ``1/n`` of the turn. Two colliding bodies meet when they share a cell at the
@@ -45,7 +46,7 @@ from typing import Any, ClassVar, Iterable, Sequence
 import numpy as np
 
 from ...core.actions import ActionSet
-from .engine import ACTIONS, DELTAS, ProcgenTask
+from .engine import ACTIONS, ARROWS, DELTAS, ProcgenTask
 
 Cell = tuple[int, int]
 
@@ -76,7 +77,7 @@ class Body:
     """A moving (or still) thing of the world; see the module notes for the fields."""
 
     __slots__ = ("glyph", "r", "c", "vr", "vc", "hp", "side", "hits", "reach", "period",
-                 "phase", "edge", "alive", "bump", "data")
+                 "phase", "edge", "alive", "spent", "bump", "data")
 
     def __init__(self, glyph: str, r: int, c: int, vr: int = 0, vc: int = 0, *, side: int = FOE,
                  hits: int = 0, hp: int = 1, reach: int = FAR, period: int = 1, phase: int = 0,
@@ -85,6 +86,7 @@ class Body:
         self.side, self.hits, self.hp, self.reach = side, hits, hp, reach
         self.period, self.phase, self.edge, self.data = period, phase, edge, data
         self.alive = True
+        self.spent = False   # its flight ends this turn (off a GONE edge, or out of reach)
         self.bump: Cell | None = None
 
     @property
@@ -151,42 +153,40 @@ class World:
         return sum(1 for b in self.bodies if b.alive and b.side & side)
 
     def cull(self) -> list[Body]:
-        """Drop dead bodies; returns those that left over a ``GONE`` edge this turn."""
-        gone = [b for b in self.bodies if not b.alive and not self.inside(b.r, b.c)]
-        self.bodies = [b for b in self.bodies if b.alive]
+        """Drop dead and spent bodies (after the turn's events: a shot that flies off the
+        world still hits what it met on the way); returns the live ones that left over a
+        ``GONE`` edge this turn."""
+        gone = [b for b in self.bodies if b.spent and b.alive and not self.inside(b.r, b.c)]
+        self.bodies = [b for b in self.bodies if b.alive and not b.spent]
         return gone
 
-    def track(self, body: Body, turn: int) -> tuple[list[Cell], int]:
-        """The cells ``body`` visits this turn (its own first) and the step (1-based) at which
-        it bumped into something solid or the edge (0 if none); sets ``bump``, ``alive``
-        (off a ``GONE`` edge) and uses up ``reach``."""
+    def track(self, body: Body) -> tuple[list[Cell], int]:
+        """The cells a moving ``body`` visits this turn (its own first) and the step (1-based)
+        at which it bumped into something solid or a ``STOP`` edge (0 if none); sets ``bump``
+        and ``spent`` (off a ``GONE`` edge, or out of reach) and uses up ``reach``."""
         r, c = body.r, body.c
         path = [(r, c)]
-        body.bump = None
-        if not body.moves_on(turn):
-            return path, 0
         vr, vc = body.vr, body.vc
         n = max(abs(vr), abs(vc))
-        steps = min(n, body.reach)
-        rows, solid, width = self.rows, self.solid, self.width
-        for k in range(1, steps + 1):
+        rows, solid, width, height = self.rows, self.solid, self.width, self.height
+        for k in range(1, min(n, body.reach) + 1):
             nr = r + int(vr * k / n)
             nc = c + int(vc * k / n)
             if not 0 <= nc < width:
                 if body.edge == WRAP:
                     nc %= width
                 elif body.edge == GONE:
-                    body.alive = False
+                    body.spent = True
                     path.append((nr, nc))
                     break
                 else:
                     body.bump = (nr, nc)
                     return path, k
-            if not 0 <= nr < self.height:
+            if not 0 <= nr < height:
                 if body.edge == STOP:
                     body.bump = (nr, nc)
                     return path, k
-                body.alive = False
+                body.spent = True
                 path.append((nr, nc))
                 break
             if rows[nr][nc] in solid:
@@ -195,51 +195,55 @@ class World:
             path.append((nr, nc))
         body.reach -= len(path) - 1
         if body.reach <= 0:
-            body.alive = False
+            body.spent = True
         return path, 0
 
     def step(self, turn: int) -> list[tuple[Body, Body | None]]:
         """Move every live body by its velocity, swept; returns the turn's collisions and
         bumps in time order (see the module notes)."""
-        bodies = [b for b in self.bodies if b.alive]
-        tracks = []
-        speeds = {1}
-        for b in bodies:
-            path, bumped = self.track(b, turn)
-            n = max(abs(b.vr), abs(b.vc)) if len(path) > 1 or bumped else 1
-            speeds.add(n)
-            tracks.append((b, path, n, bumped))
-        sub = lcm(*speeds)
-        timed: list[tuple[int, int, int, Body, Body | None]] = []
-        cells: dict[tuple[int, int, int], list[int]] = {}
-        moves: dict[tuple[int, Cell, Cell], list[int]] = {}
-        for i, (b, path, n, bumped) in enumerate(tracks):
-            last = len(path) - 1
-            if bumped:
-                timed.append((bumped * sub // n, i, i, b, None))
-            prev = path[0]
-            for s in range(1, sub + 1):
-                cell = path[min(s * n // sub, last)]
-                cells.setdefault((s, *cell), []).append(i)
-                if cell != prev:
-                    moves.setdefault((s, prev, cell), []).append(i)
-                    prev = cell
-            b.r, b.c = path[last]
-        seen: set[tuple[int, int]] = set()
-        for (s, _, _), here in cells.items():
-            if len(here) > 1:
-                for k, i in enumerate(here):
-                    for j in here[k + 1:]:
-                        if (i, j) not in seen and bodies[i].meets(bodies[j]):
-                            seen.add((i, j))
-                            timed.append((s, i, j, bodies[i], bodies[j]))
-        for (s, p, q), here in moves.items():
-            for j in moves.get((s, q, p), ()):
-                for i in here:
-                    if i < j and (i, j) not in seen and bodies[i].meets(bodies[j]):
-                        seen.add((i, j))
-                        timed.append((s, i, j, bodies[i], bodies[j]))
-        timed.sort(key=lambda e: e[:3])   # by moment, then by the order bodies were added
+        timed: list[tuple[float, int, int, Body, Body | None]] = []
+        where: dict[Cell, int] = {}           # cell -> the first body on it this turn
+        crowd: dict[Cell, list[int]] = {}     # cells more than one body visits
+        bodies = [b for b in self.bodies if b.alive and not b.spent]
+        paths: list[tuple[Sequence[Cell], int]] = []
+        rows, solid, height, width = self.rows, self.solid, self.height, self.width
+        for i, b in enumerate(bodies):
+            b.bump = None
+            r, c, vr, vc = b.r, b.c, b.vr, b.vc
+            if (vr or vc) and (b.period == 1 or turn % b.period == b.phase):
+                nr, nc = r + vr, c + vc
+                if (vr == 0 or vc == 0) and -1 <= vr + vc <= 1 and b.reach > 1 \
+                        and 0 <= nr < height and 0 <= nc < width and rows[nr][nc] not in solid:
+                    path, n = ((r, c), (nr, nc)), 1          # the usual one-cell move
+                    b.reach -= 1
+                else:
+                    path, bumped = self.track(b)
+                    n = max(abs(vr), abs(vc))
+                    if bumped:
+                        timed.append((bumped / n, i, i, b, None))
+                b.r, b.c = path[-1]
+                for cell in path:
+                    j = where.setdefault(cell, i)
+                    if j != i:
+                        crowd.setdefault(cell, [j]).append(i)
+            else:
+                path, n = ((r, c),), 1
+                j = where.setdefault(path[0], i)
+                if j != i:
+                    crowd.setdefault(path[0], [j]).append(i)
+            paths.append((path, n))
+        pairs = set()
+        for here in crowd.values():
+            for k, i in enumerate(here):
+                for j in here[k + 1:]:
+                    if bodies[i].meets(bodies[j]):
+                        pairs.add((i, j))
+        for i, j in pairs:
+            moment = _meeting(*paths[i], *paths[j])
+            if moment is not None:
+                timed.append((moment, i, j, bodies[i], bodies[j]))
+        if len(timed) > 1:
+            timed.sort(key=lambda e: e[:3])   # by moment, then by the order bodies were added
         return [(a, b) for *_, a, b in timed]
 
     def sprites(self, skip: Body | None = None) -> list[tuple[int, int, str]]:
@@ -248,6 +252,21 @@ class World:
     def movers(self, skip: Body | None = None) -> list[tuple[str, int, int, int, int]]:
         return [(b.glyph, b.r, b.c, b.vr, b.vc) for b in self.bodies
                 if b.alive and b is not skip and (b.vr or b.vc)]
+
+
+def _meeting(pa: Sequence[Cell], na: int, pb: Sequence[Cell], nb: int) -> float | None:
+    """The first moment (a share of the turn) two tracks meet, or None: the same cell at the
+    same moment, or swapped cells at the same moment. A track of ``n`` cells a turn is at its
+    k-th cell from moment k/n (and stays at its last)."""
+    sub = lcm(na, nb)
+    la, lb = len(pa) - 1, len(pb) - 1
+    a0, b0 = pa[0], pb[0]
+    for s in range(1, sub + 1):
+        a1, b1 = pa[min(s * na // sub, la)], pb[min(s * nb // sub, lb)]
+        if a1 == b1 or (a1 == b0 and b1 == a0 and a1 != a0):
+            return s / sub
+        a0, b0 = a1, b1
+    return None
 
 
 class Gun:
@@ -381,11 +400,48 @@ class ShooterTask(ProcgenTask):
     def _sprites(self) -> Iterable[tuple[int, int, str]]:
         return self.world.sprites(self.player)
 
+    def _grid(self) -> list[str]:
+        """The engine's view, drawn a row at a time (bodies grouped by row)."""
+        rows = self.world.rows
+        vh, vw = self.view_h, self.view_w
+        r, c = self.pos
+        top, left = self._corner()
+        view = [row[left:left + vw] for row in rows[top:top + vh]]
+        marks: dict[int, list[tuple[int, str]]] = {}
+        for b in self.world.bodies:
+            vr, vc = b.r - top, b.c - left
+            if 0 <= vr < vh and 0 <= vc < vw and b.alive and b is not self.player:
+                marks.setdefault(vr, []).append((vc, b.glyph))
+        marks.setdefault(r - top, []).append((c - left, ARROWS[self.facing]))
+        for vr, cells in marks.items():
+            if len(cells) == 1:
+                vc, ch = cells[0]
+                row = view[vr]
+                view[vr] = row[:vc] + ch + row[vc + 1:]
+            else:
+                line = list(view[vr])
+                for vc, ch in cells:
+                    line[vc] = ch
+                view[vr] = "".join(line)
+        return view
+
     def _velocity(self) -> Cell:
         return self.player.vr, self.player.vc
 
+    def _corner(self) -> Cell:
+        """The view's top-left world cell (the engine's clamped window)."""
+        r, c = self.pos
+        w = self.world
+        return (min(max(r - self.view_h // 2, 0), max(w.height - self.view_h, 0)),
+                min(max(c - self.view_w // 2, 0), max(w.width - self.view_w, 0)))
+
     def _movers(self) -> Iterable[tuple[str, int, int, int, int]]:
-        return self.world.movers(self.player)
+        """The moving bodies in view (the HUD lists no others), the player left out."""
+        top, left = self._corner()
+        vh, vw, me = self.view_h, self.view_w, self.player
+        return [(b.glyph, b.r, b.c, b.vr, b.vc) for b in self.world.bodies
+                if (b.vr or b.vc) and 0 <= b.r - top < vh and 0 <= b.c - left < vw
+                and b.alive and b is not me]
 
     def _extras(self) -> str:
         gun = self.gun

@@ -83,8 +83,15 @@ def test_reach_ends_a_shot():
     world.step(1)
     assert s.alive and s.cell == (0, 2) and s.reach == 1
     world.step(2)
-    assert not s.alive and s.cell == (0, 3)
+    assert s.spent and s.cell == (0, 3)
     assert world.cull() == [] and world.bodies == []   # spent, not gone off the world
+
+
+def test_a_shot_leaving_the_world_still_hits_on_its_way_out():
+    world = World(OPEN_ROWS, "#")
+    s, e = world.add(shot(1, 2, -2, 0)), world.add(foe(0, 2))
+    assert world.step(1) == [(s, e)] and s.alive and s.spent
+    assert world.cull() == [s] and world.bodies == [e]
 
 
 def test_edges_gone_wrap_stop():
