@@ -8,6 +8,7 @@ open cell (the exit's inner neighbour included) is connected."""
 
 from __future__ import annotations
 
+import random
 from dataclasses import dataclass
 
 import numpy as np
@@ -80,7 +81,8 @@ class ProcgenDodgeball(ShooterTask):
         rows = self.world.rows
         self.exits = {(r, c): [(dr, dc) for dr, dc in DELTAS[1:] if rows[r + dr][c + dc] == OPEN]
                       for r in range(1, p.height - 1) for c in range(1, p.width - 1)}
-        self.left, self.rng = p.enemies, self.stream("enemies")
+        # the enemies' per-turn draws: a Python generator seeded from the episode's stream
+        self.left, self.rng = p.enemies, random.Random(int(self.stream("enemies").integers(2 ** 63)))
 
     def _arena(self, rng: np.random.Generator):
         """Border walls, inner wall segments, an exit in the border, the player's start, and
@@ -131,7 +133,7 @@ class ProcgenDodgeball(ShooterTask):
                 options = [(dr, dc) for dr, dc in self.exits[e.r, e.c]
                            if (e.r + dr, e.c + dc) not in taken]
                 if options:
-                    e.vr, e.vc = options[int(rng.integers(len(options)))]
+                    e.vr, e.vc = options[rng.randrange(len(options))]
                     taken.add((e.r + e.vr, e.c + e.vc))
 
     def _line(self, e: Body, me: Body) -> tuple[int, int] | None:
