@@ -3,8 +3,10 @@
 Fish (drawn as the digit of their size, 1 to 6) swim across the water from one side to the
 other, one or two cells a turn, and leave; new ones keep coming from both sides, their sizes
 drawn around yours. You start at size 1 and grow one size per ``per_size`` fish eaten; the fish
-that makes you full grown wins (upstream has no win, only a long horizon). Built on the shooting engine (bodies, swept collisions, spawners):
-a fish that crosses your path in a turn meets you even if you never share a cell at a turn's end."""
+that makes you full grown wins (as upstream, where outgrowing the other fish ends the level).
+Upstream eats only smaller fish; here equal sizes are eaten too. Built on the shooting engine
+(bodies, swept collisions, spawners): a fish that crosses your path in a turn meets you even if
+you never share a cell at a turn's end."""
 
 from __future__ import annotations
 
