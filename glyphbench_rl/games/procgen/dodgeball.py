@@ -24,6 +24,7 @@ from .shooting import FOE, FOE_SHOT, PLAYER, SHOT, Body, Gun, ShooterTask, pair
 ENEMY, BALL, THEIR_BALL, CLOSED = "E", "*", "o", "X"
 DEATH = -1.0
 SIDESTEP = 3        # enemies throw from this far or farther
+BALL_SPEED = 2      # your ball's cells a turn (an enemy's ball flies one)
 THROW_ACTIONS = ActionSet([(a.name, a.description) for a in ACTIONS]
                           + [("THROW", "throw a ball the way you face")], noop="NOOP")
 
@@ -45,10 +46,10 @@ class ProcgenDodgeball(ShooterTask):
     title = "Procgen Dodgeball"
     rules = ("A {width}x{height} walled arena holds {enemies} enemies (E) who wander, one step "
              "every second turn, and throw balls (o), one cell a turn, at you along a clear row or "
-             "column from {sidestep} or more cells away. THROW sends your ball (*) the way you last moved (up before you move), two cells a turn "
-             "for {reach} cells, once every {cooldown} turns; a ball stops at a wall. Hit every "
-             "enemy and the exit (X) opens; walk into it. An enemy or an enemy's ball touching "
-             "you ends the game.")
+             "column from {sidestep} or more cells away. THROW sends your ball (*) the way you "
+             "last moved (up before you move), {speed} cells a turn for {reach} cells, once every "
+             "{cooldown} turns; a ball stops at a wall. Hit every enemy and the exit (X) opens; "
+             "walk into it. An enemy or an enemy's ball touching you ends the game.")
     rewards = ("+{hit_reward} for each enemy hit, +{exit_reward} for leaving by the open exit, "
                "{death} for being hit or caught.")
     ends = "when you leave by the exit or are hit or caught"
@@ -64,7 +65,7 @@ class ProcgenDodgeball(ShooterTask):
         p = self.params
         return {**super().prompt_fields(), "hit_reward": round(p.hit_share / p.enemies, 4),
                 "exit_reward": round(1 - p.hit_share, 4), "death": DEATH,
-                "sidestep": SIDESTEP}
+                "sidestep": SIDESTEP, "speed": BALL_SPEED}
 
     def _setup(self, rng: np.random.Generator) -> None:
         p = self.params
@@ -73,7 +74,7 @@ class ProcgenDodgeball(ShooterTask):
             if spots is not None:
                 break
         self.start(["".join(row) for row in rows], start,
-                   Gun(BALL, 2, p.reach, p.cooldown, side=SHOT, hits=FOE))
+                   Gun(BALL, BALL_SPEED, p.reach, p.cooldown, side=SHOT, hits=FOE))
         self.exit = exit_
         picks = rng.choice(len(spots), p.enemies, replace=False).tolist()
         self.enemies = [self.world.add(Body(ENEMY, *spots[i], side=FOE, data=0))   # data: the

@@ -19,6 +19,7 @@ from .scrolling import OPEN, LaneLevel, Strip
 
 CAR, LOG, WATER, GOAL, EDGE = "C", "=", "~", "G", "|"
 MARKERS = {(-1, 1): "«", (1, 1): "»", (-1, 2): "<", (1, 2): ">"}   # (direction, period)
+GOAL_REWARD = 1.0
 DEATHS = {"car": "A car hit you.", "water": "You fell into the water.",
           "edge": "A log carried you off the edge."}
 
@@ -39,7 +40,7 @@ class ProcgenLeaper(ProcgenTask):
              "every second turn; | is a still, safe row. Standing on a log carries you along with "
              "it. Moves happen first, then the lanes slide. Walking into a car or a car driving "
              "into you, stepping onto water, or being carried off the edge ends the game.")
-    rewards = "+1 for reaching the goal row; dying costs nothing but ends the game."
+    rewards = "+{goal_reward} for reaching the goal row; dying costs nothing but ends the game."
     ends = "when you reach the goal row or die"
     Params = LeaperParams
     glyphs = {OPEN: "road or safe ground", CAR: "car", LOG: "log", WATER: "water",
@@ -48,6 +49,9 @@ class ProcgenLeaper(ProcgenTask):
               ">": "lane moving right every second turn", **PLAYER_GLYPHS}
     extra_chars = "".join(PLAYER_GLYPHS) + "«»"
     view_h, view_w = 12, 14
+
+    def prompt_fields(self) -> dict:
+        return {**super().prompt_fields(), "goal_reward": GOAL_REWARD}
 
     def _setup(self, rng: np.random.Generator) -> None:
         p = self.params
@@ -104,7 +108,7 @@ class ProcgenLeaper(ProcgenTask):
             self.say(DEATHS[death])
             self.finish(won=False)
         elif r == 0:
-            self.reward(1.0)
+            self.reward(GOAL_REWARD)
             self.say("You reached the goal.")
             self.finish(won=True)
 
