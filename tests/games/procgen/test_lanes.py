@@ -136,3 +136,18 @@ def test_fruitbot_collects_fruit_and_junk_when_falling_through():
     assert reward == pytest.approx(0.0) and task.fruit == 1 and task.junk == 1
     _, reward, _, _, _ = task.step("NOOP")
     assert reward == pytest.approx(0.1) and task.rows[r + 3][c] == "."
+
+
+def test_fruitbot_sitting_on_a_wall_runs_out_the_clock_with_the_bump_cap():
+    task = glyphbench_rl.make("glyphbench/procgen-fruitbot-v0")
+    for seed in range(20):                 # a seed whose start column runs into a wall
+        task.reset(seed=seed)
+        c = task.pos[1]
+        column = [row[c] for row in task.rows]
+        if "█" in column and not {"%", "x"} & set(column[:column.index("█")]):
+            break
+    while not task.done:
+        task.step("NOOP")
+    assert not task.won and task.turn == task.max_turns
+    assert task.bumps == task.max_turns - column.index("█") + 1
+    assert task.episode_return == pytest.approx(-0.05 * 8)
