@@ -12,3 +12,4 @@ from . import chaser  # noqa: F401
 from . import miner  # noqa: F401
 from . import starpilot  # noqa: F401
 from . import bossfight  # noqa: F401
+from . import plunder  # noqa: F401

@@ -173,3 +173,64 @@ def test_bossfight_phases_follow_the_boss_hit_points():
         task.reset(seed=seed)
         orders.add(tuple(task.order))
     assert len(orders) >= 4
+
+
+# -- Plunder ----------------------------------------------------------------------------------------
+def outlook(task, action, turns):
+    """The reward of ``action`` followed by ``turns`` NOOPs (the real future: streams are copied)."""
+    task._legends = None
+    sim = copy.deepcopy(task)
+    total = 0.0
+    for move in [action] + ["NOOP"] * turns:
+        _, r, term, trunc, _ = sim.step(move)
+        total += r
+        if term or trunc:
+            break
+    return total
+
+
+def plunder_gunner(task):
+    """Fire when the shot would sink an enemy (and no friend); else move under the enemy ship
+    that will be nearest above you."""
+    if task.gun.ready <= task.turn + 1 and outlook(task, "FIRE", 6) > 0:
+        return "FIRE"
+    r, c = task.pos
+    foes = [b for b in task.world.bodies if b.side == FOE]
+    if not foes:
+        return "NOOP"
+    # where a ship will be when a ball fired from here reaches its lane (2 rows a turn)
+    def landing(b):
+        eta = (r - b.r + 1) // 2
+        return b.c + b.vc * (eta // b.period)
+    col = min((landing(b) for b in foes), key=lambda x: abs(x - c))
+    return "LEFT" if col < c else "RIGHT" if col > c else "NOOP"
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_plunder_scripted_gunner_scores(seed):
+    task = make("plunder")
+    task.reset(seed=seed)
+    while not task.done:
+        task.step(plunder_gunner(task))
+    assert task.sunk >= 3 and task.friendly == 0 and task.episode_return >= 0.3
+
+
+def test_plunder_wasting_shots_runs_out_the_clock():
+    task = make("plunder")
+    task.reset(seed=0)
+    while not task.done:
+        task.step("FIRE")
+    assert task.done and task.clock == 0 and task.turn < task.params.timer
+    assert "Time is up." in task.frame.message
+
+
+def test_plunder_friendly_fire_costs_and_a_ball_cannot_skip_a_ship():
+    task = make("plunder", rocks=0)
+    task.reset(seed=4)
+    task.world.bodies[1:] = []
+    r, c = task.pos
+    friend = "B" if task.target == "A" else "A"
+    task.world.add(Body(friend, r - 2, c + 1, 0, -1, side=32))   # sails into your column
+    _, reward, *_ = task.step("FIRE")        # the ball r -> r-2 meets it arriving at (r-2, c)
+    assert reward == pytest.approx(-0.1) and task.friendly == 1
+    assert "You hit a friendly ship." in task.frame.message
