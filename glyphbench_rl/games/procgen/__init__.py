@@ -13,3 +13,4 @@ from . import miner  # noqa: F401
 from . import starpilot  # noqa: F401
 from . import bossfight  # noqa: F401
 from . import plunder  # noqa: F401
+from . import caveflyer  # noqa: F401

@@ -234,3 +234,59 @@ def test_plunder_friendly_fire_costs_and_a_ball_cannot_skip_a_ship():
     _, reward, *_ = task.step("FIRE")        # the ball r -> r-2 meets it arriving at (r-2, c)
     assert reward == pytest.approx(-0.1) and task.friendly == 1
     assert "You hit a friendly ship." in task.frame.message
+
+
+# -- CaveFlyer --------------------------------------------------------------------------------------
+def cave_pilot(dist):
+    """Head down the distance map to the exit."""
+    def heuristic(task, action):
+        r, c = task.pos
+        if action == "FIRE":                  # (a shot that hits shows in the look-ahead's gain)
+            return -dist.get((r, c), 999) - 1
+        dr, dc = {"NOOP": (0, 0), "LEFT": (0, -1), "RIGHT": (0, 1), "UP": (-1, 0), "DOWN": (1, 0)}[action]
+        return -dist.get((r + dr, c + dc), 999)
+    return heuristic
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2, 3])
+def test_caveflyer_scripted_flight_reaches_the_exit(seed):
+    task = make("caveflyer")
+    task.reset(seed=seed)
+    dist = bfs_distances(task.exit, lambda r, c: task.world.rows[r][c] != "#")
+    while not task.done:
+        task.step(lookahead(task, task.actions.names, cave_pilot(dist)))
+    assert task.won and task.episode_return >= 0.6 - 1e-9
+
+
+def test_caveflyer_flying_into_the_wall_is_fatal():
+    task = make("caveflyer")
+    task.reset(seed=0)
+    while not task.done:
+        task.step("UP")
+    assert task.won is False and task.episode_return == -1.0
+    assert "You crashed into the cave wall." in task.frame.message
+
+
+def test_caveflyer_enemy_crossing_your_path_and_bolt_hits():
+    task = make("caveflyer")
+    task.reset(seed=2)
+    task.world.bodies[1:] = []
+    r, c = task.pos
+    task.world.add(Body("E", r - 1, c + 1, 1, 0, side=FOE))     # moves down into (r, c+1)...
+    _, reward, term, *_ = task.step("RIGHT")                    # ...as you move there
+    assert term and reward == -1.0 and "An enemy got you." in task.frame.message
+    task.reset(seed=2)
+    task.world.bodies[1:] = []
+    r, c = task.pos
+    foe = task.world.add(Body("E", r, c + 3, 0, -1, side=FOE))  # coming at you
+    _, reward, term, *_ = task.step("FIRE")                      # bolt c -> c+2 meets it at c+2
+    assert not term and not foe.alive and reward == pytest.approx(0.1)
+
+
+def test_caveflyer_every_cave_connects_start_and_exit():
+    task = make("caveflyer")
+    for seed in range(30):
+        task.reset(seed=seed)
+        targets = {b.cell for b in task.world.bodies if b.glyph == "o"}
+        dist = bfs_distances(task.pos, lambda r, c: task.world.rows[r][c] != "#" and (r, c) not in targets)
+        assert task.exit in dist
