@@ -46,7 +46,7 @@ from typing import Any, ClassVar, Iterable, Sequence
 import numpy as np
 
 from ...core.actions import ActionSet
-from .engine import ACTIONS, ARROWS, DELTAS, ProcgenTask
+from .engine import ACTIONS, ARROWS, DELTAS, MAX_MOVERS, ProcgenTask, velocity_text
 
 Cell = tuple[int, int]
 
@@ -59,6 +59,16 @@ FIRE = len(ACTIONS)   # the FIRE action's index
 
 FIRE_ACTIONS = ActionSet([(a.name, a.description) for a in ACTIONS] + [("FIRE", "shoot")],
                          noop="NOOP")
+
+
+_VELOCITY_TEXT: dict[tuple[int, int], str] = {}
+
+
+def _velocity_text(vr: int, vc: int) -> str:
+    text = _VELOCITY_TEXT.get((vr, vc))
+    if text is None:
+        text = _VELOCITY_TEXT[vr, vc] = velocity_text(vr, vc)
+    return text
 
 
 def with_fire(description: str) -> ActionSet:
@@ -434,6 +444,27 @@ class ShooterTask(ProcgenTask):
         w = self.world
         return (min(max(r - self.view_h // 2, 0), max(w.height - self.view_h, 0)),
                 min(max(c - self.view_w // 2, 0), max(w.width - self.view_w, 0)))
+
+    def _motion(self) -> str:
+        """The engine's ``Vel ... | Moving: ...`` text, read from the bodies directly (the same
+        text, faster; a game that overrides ``_movers`` gets the engine's own)."""
+        if type(self)._movers is not ShooterTask._movers:
+            return super()._motion()
+        me = self.player
+        r, c = me.r, me.c
+        top, left = self._corner()
+        vh, vw = self.view_h, self.view_w
+        seen = []
+        for b in self.world.bodies:
+            if (b.vr or b.vc) and b is not me and b.alive and 0 <= b.r - top < vh and 0 <= b.c - left < vw:
+                dr, dc = b.r - r, b.c - c
+                seen.append((abs(dr) + abs(dc), dr, dc, b.glyph, b.vr, b.vc))
+        text = "Vel " + _velocity_text(me.vr, me.vc)
+        if seen:
+            seen.sort()
+            text += " | Moving: " + " ".join([f"{ch}@{dr:+d},{dc:+d}{_velocity_text(vr, vc)}"
+                                              for _, dr, dc, ch, vr, vc in seen[:MAX_MOVERS]])
+        return text
 
     def _movers(self) -> Iterable[tuple[str, int, int, int, int]]:
         """The moving bodies in view (the HUD lists no others), the player left out."""

@@ -215,3 +215,16 @@ def test_pair_sorts_an_event_by_side():
     s, e = shot(0, 0, 0, 1), foe(0, 1)
     assert pair(e, s, SHOT) == (s, e) and pair(s, e, FOE) == (e, s)
     assert pair(s, e, PLAYER) is None and pair(s, None, SHOT) is None
+
+
+@pytest.mark.parametrize("game", ["starpilot", "bossfight", "plunder", "caveflyer"])
+def test_the_fast_motion_text_is_the_engines(game):
+    import glyphbench_rl
+    from glyphbench_rl.games.procgen.engine import ProcgenTask
+    task = glyphbench_rl.make(f"glyphbench/procgen-{game}-v0")
+    rng = np.random.default_rng(0)
+    task.reset(seed=0)
+    for _ in range(150):
+        assert task._motion() == ProcgenTask._motion(task)
+        if task.step(int(rng.integers(task.action_space.n)))[2]:
+            task.reset(seed=int(rng.integers(100)))
