@@ -71,6 +71,13 @@ def _velocity_text(vr: int, vc: int) -> str:
     return text
 
 
+_SIGNED = [f"{i:+d}" for i in range(-64, 65)]
+
+
+def _signed(i: int) -> str:
+    return _SIGNED[i + 64] if -64 <= i <= 64 else f"{i:+d}"
+
+
 def with_fire(description: str) -> ActionSet:
     """The five Procgen actions plus FIRE described as ``description``."""
     return ActionSet([(a.name, a.description) for a in ACTIONS] + [("FIRE", description)], noop="NOOP")
@@ -214,34 +221,47 @@ class World:
         timed: list[tuple[float, int, int, Body, Body | None]] = []
         where: dict[Cell, int] = {}           # cell -> the first body on it this turn
         crowd: dict[Cell, list[int]] = {}     # cells more than one body visits
-        bodies = [b for b in self.bodies if b.alive and not b.spent]
+        bodies = self.bodies
         paths: list[tuple[Sequence[Cell], int]] = []
+        add = paths.append
         rows, solid, height, width = self.rows, self.solid, self.height, self.width
         for i, b in enumerate(bodies):
+            if not b.alive or b.spent:
+                add(((), 1))
+                continue
             b.bump = None
             r, c, vr, vc = b.r, b.c, b.vr, b.vc
             if (vr or vc) and (b.period == 1 or turn % b.period == b.phase):
                 nr, nc = r + vr, c + vc
                 if (vr == 0 or vc == 0) and -1 <= vr + vc <= 1 and b.reach > 1 \
                         and 0 <= nr < height and 0 <= nc < width and rows[nr][nc] not in solid:
-                    path, n = ((r, c), (nr, nc)), 1          # the usual one-cell move
+                    b.r, b.c = nr, nc                        # the usual one-cell move
                     b.reach -= 1
+                    path: Sequence[Cell] = ((r, c), (nr, nc))
+                    add((path, 1))
                 else:
                     path, bumped = self.track(b)
                     n = max(abs(vr), abs(vc))
                     if bumped:
                         timed.append((bumped / n, i, i, b, None))
-                b.r, b.c = path[-1]
+                    b.r, b.c = path[-1]
+                    add((path, n))
                 for cell in path:
                     j = where.setdefault(cell, i)
                     if j != i:
-                        crowd.setdefault(cell, [j]).append(i)
+                        if cell in crowd:
+                            crowd[cell].append(i)
+                        else:
+                            crowd[cell] = [j, i]
             else:
-                path, n = ((r, c),), 1
-                j = where.setdefault(path[0], i)
+                cell = (r, c)
+                add(((cell,), 1))
+                j = where.setdefault(cell, i)
                 if j != i:
-                    crowd.setdefault(path[0], [j]).append(i)
-            paths.append((path, n))
+                    if cell in crowd:
+                        crowd[cell].append(i)
+                    else:
+                        crowd[cell] = [j, i]
         pairs = set()
         for here in crowd.values():
             for k, i in enumerate(here):
@@ -389,6 +409,8 @@ class ShooterTask(ProcgenTask):
                     break
         for body in self.world.cull():
             self._left(body)
+        if p.bump:
+            p.vr = p.vc = 0          # blocked: the HUD's Vel says you did not move
         self.pos = (p.r, p.c)
         if not self._terminated:
             self._after()
@@ -462,7 +484,8 @@ class ShooterTask(ProcgenTask):
         text = "Vel " + _velocity_text(me.vr, me.vc)
         if seen:
             seen.sort()
-            text += " | Moving: " + " ".join([f"{ch}@{dr:+d},{dc:+d}{_velocity_text(vr, vc)}"
+            sign = _signed
+            text += " | Moving: " + " ".join([ch + "@" + sign(dr) + "," + sign(dc) + _velocity_text(vr, vc)
                                               for _, dr, dc, ch, vr, vc in seen[:MAX_MOVERS]])
         return text
 
