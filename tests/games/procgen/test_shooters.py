@@ -7,7 +7,7 @@ import pytest
 
 import glyphbench_rl
 from glyphbench_rl.games.common.grid import bfs_distances
-from glyphbench_rl.games.procgen.shooting import FOE, SHOT, Body
+from glyphbench_rl.games.procgen.shooting import FOE, FOE_SHOT, FRIEND, PLAYER, SHOT, Body
 
 GAMES = ["starpilot", "bossfight", "plunder", "caveflyer"]
 
@@ -100,14 +100,14 @@ def test_starpilot_fast_enemy_cannot_jump_over_you_or_a_bolt():
     task.world.bodies[1:] = []
     task.wobble = 0                            # (no drifting out of the row)
     r, c = task.pos
-    fast = task.world.add(Body("V", r, c + 2, 0, -2, side=FOE, hits=1))
+    fast = task.world.add(Body("V", r, c + 2, 0, -2, side=FOE, hits=PLAYER))
     task.step("NOOP")                          # the ship at c+2 moves to c: through your cell
     assert task.done and task.won is False and fast.alive
     task.reset(seed=3)
     task.world.bodies[1:] = []
     task.wobble = 0
     r, c = task.pos
-    task.world.add(Body("V", r, c + 3, 0, -2, side=FOE, hits=1))
+    task.world.add(Body("V", r, c + 3, 0, -2, side=FOE, hits=PLAYER))
     _, reward, *_ = task.step("FIRE")          # bolt c -> c+2, ship c+3 -> c+1: they cross
     assert reward == pytest.approx(0.8 / 12) and not task.done and task.world.count(FOE | SHOT) == 0
 
@@ -149,13 +149,13 @@ def test_bossfight_cover_stops_shots_and_a_fast_shot_cannot_skip_you():
     task.rhythm = [10 ** 6] * 3                      # (the boss holds its fire)
     r, c = task.pos
     task.world.put(r - 2, c, "#")
-    task.world.add(Body("!", r - 4, c, 2, 0, side=8, hits=1))
+    task.world.add(Body("!", r - 4, c, 2, 0, side=FOE_SHOT, hits=PLAYER))
     task.step("NOOP")                                 # r-4 -> r-2 is cover: stopped at r-3
     task.step("NOOP")
-    assert not task.done and task.world.count(8) == 0
+    assert not task.done and task.world.count(FOE_SHOT) == 0
     task.world.put(r - 2, c, ".")
     task.step("FIRE")                                 # your bolt is stopped by nothing now...
-    task.world.add(Body("!", r - 1, c, 2, 0, side=8, hits=1))
+    task.world.add(Body("!", r - 1, c, 2, 0, side=FOE_SHOT, hits=PLAYER))
     _, reward, term, *_ = task.step("UP")             # you r -> r-1, the shot r-1 -> r+1: crossing
     assert term and reward == -1.0
 
@@ -230,7 +230,7 @@ def test_plunder_friendly_fire_costs_and_a_ball_cannot_skip_a_ship():
     task.world.bodies[1:] = []
     r, c = task.pos
     friend = "B" if task.target == "A" else "A"
-    task.world.add(Body(friend, r - 2, c + 1, 0, -1, side=32))   # sails into your column
+    task.world.add(Body(friend, r - 2, c + 1, 0, -1, side=FRIEND))   # sails into your column
     _, reward, *_ = task.step("FIRE")        # the ball r -> r-2 meets it arriving at (r-2, c)
     assert reward == pytest.approx(-0.1) and task.friendly == 1
     assert "You hit a friendly ship." in task.frame.message
