@@ -25,7 +25,9 @@ whose next cell is solid (a ``World.solid`` character of the rows) stops before 
 for a collision (in the order the two were added: ``pair(a, b, side)`` sorts them),
 ``(a, None)`` for ``a`` bumping into a wall (or a ``STOP`` edge).
 
-**Shooter tasks** (``ShooterTask``): the five Procgen actions plus ``FIRE`` (``FIRE_ACTIONS``);
+**Shooter tasks** (``ShooterTask``): the five Procgen actions plus ``FIRE`` (``FIRE_ACTIONS``,
+or ``with_fire(description)``; a game without a gun sets ``ACTIONS`` to the engine's five, and
+one with fewer moves uses ``only(...)`` with an ``action_map`` back to these indices);
 the player is a ``Body`` (``self.player``) whose velocity is the move of this turn; it is drawn
 as the Procgen arrow (``self.pos`` follows it). One turn (``_act``) is: the player's move or
 shot, ``_think()`` (spawn, steer, enemy fire), the world's swept step, ``_hit(a, b)`` for each
@@ -36,6 +38,22 @@ the moving bodies (``shows_motion``).
 **Spawners** (``Spawner``): a period with per-spawn jitter drawn from a named stream
 (``self.stream("name")``), and lane picks from it; the level generator (``_setup``'s rng)
 chooses the periods per seed.
+
+A sketch (the four games here are full examples)::
+
+    class Game(ShooterTask):
+        solid = "#"                  # still characters that stop bodies
+        fire_dir = (0, 1)            # or None: the way the player last moved (start_dir at first)
+        player_hits = FOE | ITEM     # what touching the player means something
+        def _setup(self, rng):
+            self.start(rows, (r, c), Gun("-", speed=2, reach=8, cooldown=2))
+            self.world.add(Body("E", r, 19, 0, -1, side=FOE, hits=PLAYER))
+            self.waves = Spawner(self.stream("waves"), period=int(rng.integers(3, 6)), jitter=1)
+        def _think(self):
+            if self.waves.due(self.turn): ...     # add bodies in self.waves.pick(lanes)
+        def _hit(self, a, b):
+            if (shot := pair(a, b, SHOT)): ...    # shot[0] the shot, shot[1] what it hit
+            elif pair(a, b, PLAYER): ...          # something touched the player
 """
 
 from __future__ import annotations
@@ -437,13 +455,15 @@ class ShooterTask(ProcgenTask):
         rows = self.world.rows
         vh, vw = self.view_h, self.view_w
         r, c = self.pos
-        top, left = self._corner()
+        memo, self._memo = self._memo, None
+        top, left, seen = memo if memo is not None else self._in_view()
         view = [row[left:left + vw] for row in rows[top:top + vh]]
         marks: dict[int, list[tuple[int, str]]] = {}
-        for b in self.world.bodies:
-            vr, vc = b.r - top, b.c - left
-            if 0 <= vr < vh and 0 <= vc < vw and b.alive and b is not self.player:
-                marks.setdefault(vr, []).append((vc, b.glyph))
+        for b in seen:
+            if b.r - top in marks:
+                marks[b.r - top].append((b.c - left, b.glyph))
+            else:
+                marks[b.r - top] = [(b.c - left, b.glyph)]
         marks.setdefault(r - top, []).append((c - left, ARROWS[self.facing]))
         for vr, cells in marks.items():
             if len(cells) == 1:
@@ -460,6 +480,15 @@ class ShooterTask(ProcgenTask):
     def _velocity(self) -> Cell:
         return self.player.vr, self.player.vc
 
+    _memo: tuple[int, int, list[Body]] | None = None
+
+    def _in_view(self) -> tuple[int, int, list[Body]]:
+        """The view's corner and the live bodies inside it, the player left out."""
+        top, left = self._corner()
+        vh, vw, me = self.view_h, self.view_w, self.player
+        return top, left, [b for b in self.world.bodies if 0 <= b.r - top < vh and 0 <= b.c - left < vw
+                           and b.alive and b is not me]
+
     def _corner(self) -> Cell:
         """The view's top-left world cell (the engine's clamped window)."""
         r, c = self.pos
@@ -473,12 +502,11 @@ class ShooterTask(ProcgenTask):
         if type(self)._movers is not ShooterTask._movers:
             return super()._motion()
         me = self.player
-        r, c = me.r, me.c
-        top, left = self._corner()
-        vh, vw = self.view_h, self.view_w
+        r, c = self.pos
+        memo = self._memo = self._in_view()     # (the frame's _grid, drawn next, reuses it)
         seen = []
-        for b in self.world.bodies:
-            if (b.vr or b.vc) and b is not me and b.alive and 0 <= b.r - top < vh and 0 <= b.c - left < vw:
+        for b in memo[2]:
+            if b.vr or b.vc:
                 dr, dc = b.r - r, b.c - c
                 seen.append((abs(dr) + abs(dc), dr, dc, b.glyph, b.vr, b.vc))
         text = "Vel " + _velocity_text(me.vr, me.vc)
