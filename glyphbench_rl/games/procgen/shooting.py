@@ -204,9 +204,13 @@ class World:
         vr, vc = body.vr, body.vc
         n = max(abs(vr), abs(vc))
         rows, solid, width, height = self.rows, self.solid, self.width, self.height
+        straight = vr in (0, n, -n) and vc in (0, n, -n)    # along an axis or a diagonal
+        ur, uc = vr // n, vc // n
         for k in range(1, min(n, body.reach) + 1):
-            nr = r + int(vr * k / n)
-            nc = c + int(vc * k / n)
+            if straight:
+                nr, nc = r + ur * k, c + uc * k
+            else:
+                nr, nc = r + int(vr * k / n), c + int(vc * k / n)
             if not 0 <= nc < width:
                 if body.edge == WRAP:
                     nc %= width
