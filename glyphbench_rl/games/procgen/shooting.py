@@ -89,11 +89,7 @@ def _velocity_text(vr: int, vc: int) -> str:
     return text
 
 
-_SIGNED = [f"{i:+d}" for i in range(-64, 65)]
-
-
-def _signed(i: int) -> str:
-    return _SIGNED[i + 64] if -64 <= i <= 64 else f"{i:+d}"
+_WORDS: dict[tuple[int, int, str, int, int], str] = {}   # HUD words of movers, remembered
 
 
 def with_fire(description: str) -> ActionSet:
@@ -516,9 +512,17 @@ class ShooterTask(ProcgenTask):
         text = "Vel " + _velocity_text(me.vr, me.vc)
         if seen:
             seen.sort()
-            sign = _signed
-            text += " | Moving: " + " ".join([ch + "@" + sign(dr) + "," + sign(dc) + _velocity_text(vr, vc)
-                                              for _, dr, dc, ch, vr, vc in seen[:MAX_MOVERS]])
+            words = []
+            for entry in seen[:MAX_MOVERS]:
+                key = entry[1:]
+                word = _WORDS.get(key)
+                if word is None:
+                    if len(_WORDS) > 8192:
+                        _WORDS.clear()
+                    _, dr, dc, ch, vr, vc = entry
+                    word = _WORDS[key] = f"{ch}@{dr:+d},{dc:+d}{velocity_text(vr, vc)}"
+                words.append(word)
+            text += " | Moving: " + " ".join(words)
         return text
 
     def _movers(self) -> Iterable[tuple[str, int, int, int, int]]:

@@ -169,6 +169,9 @@ class Toy(ShooterTask):
         elif pair(a, b, PLAYER):
             self.finish(won=False)
 
+    def _left(self, body):
+        self.log.append(("left", body.glyph))
+
 
 def test_shooter_task_fire_kills_the_incoming_enemy_and_reports_motion():
     task = Toy()
@@ -228,3 +231,12 @@ def test_the_fast_motion_text_is_the_engines(game):
         assert task._motion() == ProcgenTask._motion(task)
         if task.step(int(rng.integers(task.action_space.n)))[2]:
             task.reset(seed=int(rng.integers(100)))
+
+
+def test_shooter_task_reports_bodies_leaving_the_world():
+    task = Toy()
+    task.reset(seed=0)
+    task.world.put(2, 11, ".")                       # a gap in the right wall
+    task.world.add(Body("z", 2, 10, 0, 2, side=FOE))
+    task.step("NOOP")
+    assert ("left", "z") in task.log and all(b.glyph != "z" for b in task.world.bodies)
