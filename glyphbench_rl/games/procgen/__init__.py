@@ -16,3 +16,5 @@ from . import bigfish  # noqa: F401
 from . import dodgeball  # noqa: F401
 from . import starpilot  # noqa: F401
 from . import bossfight  # noqa: F401
+from . import plunder  # noqa: F401
+from . import caveflyer  # noqa: F401

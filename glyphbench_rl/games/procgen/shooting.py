@@ -25,7 +25,9 @@ whose next cell is solid (a ``World.solid`` character of the rows) stops before 
 for a collision (in the order the two were added: ``pair(a, b, side)`` sorts them),
 ``(a, None)`` for ``a`` bumping into a wall (or a ``STOP`` edge).
 
-**Shooter tasks** (``ShooterTask``): the five Procgen actions plus ``FIRE`` (``FIRE_ACTIONS``);
+**Shooter tasks** (``ShooterTask``): the five Procgen actions plus ``FIRE`` (``FIRE_ACTIONS``,
+or ``with_fire(description)``; a game without a gun sets ``ACTIONS`` to the engine's five, and
+one with fewer moves uses ``only(...)`` with an ``action_map`` back to these indices);
 the player is a ``Body`` (``self.player``) whose velocity is the move of this turn; it is drawn
 as the Procgen arrow (``self.pos`` follows it). One turn (``_act``) is: the player's move or
 shot, ``_think()`` (spawn, steer, enemy fire), the world's swept step, ``_hit(a, b)`` for each
@@ -36,6 +38,22 @@ the moving bodies (``shows_motion``).
 **Spawners** (``Spawner``): a period with per-spawn jitter drawn from a named stream
 (``self.stream("name")``), and lane picks from it; the level generator (``_setup``'s rng)
 chooses the periods per seed.
+
+A sketch (the four games here are full examples)::
+
+    class Game(ShooterTask):
+        solid = "#"                  # still characters that stop bodies
+        fire_dir = (0, 1)            # or None: the way the player last moved (start_dir at first)
+        player_hits = FOE | ITEM     # what touching the player means something
+        def _setup(self, rng):
+            self.start(rows, (r, c), Gun("-", speed=2, reach=8, cooldown=2))
+            self.world.add(Body("E", r, 19, 0, -1, side=FOE, hits=PLAYER))
+            self.waves = Spawner(self.stream("waves"), period=int(rng.integers(3, 6)), jitter=1)
+        def _think(self):
+            if self.waves.due(self.turn): ...     # add bodies in self.waves.pick(lanes)
+        def _hit(self, a, b):
+            if (shot := pair(a, b, SHOT)): ...    # shot[0] the shot, shot[1] what it hit
+            elif pair(a, b, PLAYER): ...          # something touched the player
 """
 
 from __future__ import annotations
@@ -46,7 +64,7 @@ from typing import Any, ClassVar, Iterable, Sequence
 import numpy as np
 
 from ...core.actions import ActionSet
-from .engine import ACTIONS, ARROWS, DELTAS, ProcgenTask
+from .engine import ACTIONS, ARROWS, DELTAS, MAX_MOVERS, ProcgenTask, velocity_text
 
 Cell = tuple[int, int]
 
@@ -59,6 +77,19 @@ FIRE = len(ACTIONS)   # the FIRE action's index
 
 FIRE_ACTIONS = ActionSet([(a.name, a.description) for a in ACTIONS] + [("FIRE", "shoot")],
                          noop="NOOP")
+
+
+_VELOCITY_TEXT: dict[tuple[int, int], str] = {}
+
+
+def _velocity_text(vr: int, vc: int) -> str:
+    text = _VELOCITY_TEXT.get((vr, vc))
+    if text is None:
+        text = _VELOCITY_TEXT[vr, vc] = velocity_text(vr, vc)
+    return text
+
+
+_WORDS: dict[tuple[int, int, str, int, int], str] = {}   # HUD words of movers, remembered
 
 
 def with_fire(description: str) -> ActionSet:
@@ -169,9 +200,13 @@ class World:
         vr, vc = body.vr, body.vc
         n = max(abs(vr), abs(vc))
         rows, solid, width, height = self.rows, self.solid, self.width, self.height
+        straight = vr in (0, n, -n) and vc in (0, n, -n)    # along an axis or a diagonal
+        ur, uc = vr // n, vc // n
         for k in range(1, min(n, body.reach) + 1):
-            nr = r + int(vr * k / n)
-            nc = c + int(vc * k / n)
+            if straight:
+                nr, nc = r + ur * k, c + uc * k
+            else:
+                nr, nc = r + int(vr * k / n), c + int(vc * k / n)
             if not 0 <= nc < width:
                 if body.edge == WRAP:
                     nc %= width
@@ -204,34 +239,47 @@ class World:
         timed: list[tuple[float, int, int, Body, Body | None]] = []
         where: dict[Cell, int] = {}           # cell -> the first body on it this turn
         crowd: dict[Cell, list[int]] = {}     # cells more than one body visits
-        bodies = [b for b in self.bodies if b.alive and not b.spent]
+        bodies = self.bodies
         paths: list[tuple[Sequence[Cell], int]] = []
+        add = paths.append
         rows, solid, height, width = self.rows, self.solid, self.height, self.width
         for i, b in enumerate(bodies):
+            if not b.alive or b.spent:
+                add(((), 1))
+                continue
             b.bump = None
             r, c, vr, vc = b.r, b.c, b.vr, b.vc
             if (vr or vc) and (b.period == 1 or turn % b.period == b.phase):
                 nr, nc = r + vr, c + vc
                 if (vr == 0 or vc == 0) and -1 <= vr + vc <= 1 and b.reach > 1 \
                         and 0 <= nr < height and 0 <= nc < width and rows[nr][nc] not in solid:
-                    path, n = ((r, c), (nr, nc)), 1          # the usual one-cell move
+                    b.r, b.c = nr, nc                        # the usual one-cell move
                     b.reach -= 1
+                    path: Sequence[Cell] = ((r, c), (nr, nc))
+                    add((path, 1))
                 else:
                     path, bumped = self.track(b)
                     n = max(abs(vr), abs(vc))
                     if bumped:
                         timed.append((bumped / n, i, i, b, None))
-                b.r, b.c = path[-1]
+                    b.r, b.c = path[-1]
+                    add((path, n))
                 for cell in path:
                     j = where.setdefault(cell, i)
                     if j != i:
-                        crowd.setdefault(cell, [j]).append(i)
+                        if cell in crowd:
+                            crowd[cell].append(i)
+                        else:
+                            crowd[cell] = [j, i]
             else:
-                path, n = ((r, c),), 1
-                j = where.setdefault(path[0], i)
+                cell = (r, c)
+                add(((cell,), 1))
+                j = where.setdefault(cell, i)
                 if j != i:
-                    crowd.setdefault(path[0], [j]).append(i)
-            paths.append((path, n))
+                    if cell in crowd:
+                        crowd[cell].append(i)
+                    else:
+                        crowd[cell] = [j, i]
         pairs = set()
         for here in crowd.values():
             for k, i in enumerate(here):
@@ -379,6 +427,8 @@ class ShooterTask(ProcgenTask):
                     break
         for body in self.world.cull():
             self._left(body)
+        if p.bump:
+            p.vr = p.vc = 0          # blocked: the HUD's Vel says you did not move
         self.pos = (p.r, p.c)
         if not self._terminated:
             self._after()
@@ -405,13 +455,15 @@ class ShooterTask(ProcgenTask):
         rows = self.world.rows
         vh, vw = self.view_h, self.view_w
         r, c = self.pos
-        top, left = self._corner()
+        memo, self._memo = self._memo, None
+        top, left, seen = memo if memo is not None else self._in_view()
         view = [row[left:left + vw] for row in rows[top:top + vh]]
         marks: dict[int, list[tuple[int, str]]] = {}
-        for b in self.world.bodies:
-            vr, vc = b.r - top, b.c - left
-            if 0 <= vr < vh and 0 <= vc < vw and b.alive and b is not self.player:
-                marks.setdefault(vr, []).append((vc, b.glyph))
+        for b in seen:
+            if b.r - top in marks:
+                marks[b.r - top].append((b.c - left, b.glyph))
+            else:
+                marks[b.r - top] = [(b.c - left, b.glyph)]
         marks.setdefault(r - top, []).append((c - left, ARROWS[self.facing]))
         for vr, cells in marks.items():
             if len(cells) == 1:
@@ -428,12 +480,50 @@ class ShooterTask(ProcgenTask):
     def _velocity(self) -> Cell:
         return self.player.vr, self.player.vc
 
+    _memo: tuple[int, int, list[Body]] | None = None
+
+    def _in_view(self) -> tuple[int, int, list[Body]]:
+        """The view's corner and the live bodies inside it, the player left out."""
+        top, left = self._corner()
+        vh, vw, me = self.view_h, self.view_w, self.player
+        return top, left, [b for b in self.world.bodies if 0 <= b.r - top < vh and 0 <= b.c - left < vw
+                           and b.alive and b is not me]
+
     def _corner(self) -> Cell:
         """The view's top-left world cell (the engine's clamped window)."""
         r, c = self.pos
         w = self.world
         return (min(max(r - self.view_h // 2, 0), max(w.height - self.view_h, 0)),
                 min(max(c - self.view_w // 2, 0), max(w.width - self.view_w, 0)))
+
+    def _motion(self) -> str:
+        """The engine's ``Vel ... | Moving: ...`` text, read from the bodies directly (the same
+        text, faster; a game that overrides ``_movers`` gets the engine's own)."""
+        if type(self)._movers is not ShooterTask._movers:
+            return super()._motion()
+        me = self.player
+        r, c = self.pos
+        memo = self._memo = self._in_view()     # (the frame's _grid, drawn next, reuses it)
+        seen = []
+        for b in memo[2]:
+            if b.vr or b.vc:
+                dr, dc = b.r - r, b.c - c
+                seen.append((abs(dr) + abs(dc), dr, dc, b.glyph, b.vr, b.vc))
+        text = "Vel " + _velocity_text(me.vr, me.vc)
+        if seen:
+            seen.sort()
+            words = []
+            for entry in seen[:MAX_MOVERS]:
+                key = entry[1:]
+                word = _WORDS.get(key)
+                if word is None:
+                    if len(_WORDS) > 8192:
+                        _WORDS.clear()
+                    _, dr, dc, ch, vr, vc = entry
+                    word = _WORDS[key] = f"{ch}@{dr:+d},{dc:+d}{velocity_text(vr, vc)}"
+                words.append(word)
+            text += " | Moving: " + " ".join(words)
+        return text
 
     def _movers(self) -> Iterable[tuple[str, int, int, int, int]]:
         """The moving bodies in view (the HUD lists no others), the player left out."""

@@ -7,7 +7,7 @@ import pytest
 
 import glyphbench_rl
 from glyphbench_rl.games.common.grid import bfs_distances
-from glyphbench_rl.games.procgen.shooting import FOE, SHOT, Body
+from glyphbench_rl.games.procgen.shooting import FOE, FOE_SHOT, FRIEND, PLAYER, SHOT, Body
 
 GAMES = ["starpilot", "bossfight", "plunder", "caveflyer"]
 
@@ -100,14 +100,14 @@ def test_starpilot_fast_enemy_cannot_jump_over_you_or_a_bolt():
     task.world.bodies[1:] = []
     task.wobble = 0                            # (no drifting out of the row)
     r, c = task.pos
-    fast = task.world.add(Body("V", r, c + 2, 0, -2, side=FOE, hits=1))
+    fast = task.world.add(Body("V", r, c + 2, 0, -2, side=FOE, hits=PLAYER))
     task.step("NOOP")                          # the ship at c+2 moves to c: through your cell
     assert task.done and task.won is False and fast.alive
     task.reset(seed=3)
     task.world.bodies[1:] = []
     task.wobble = 0
     r, c = task.pos
-    task.world.add(Body("V", r, c + 3, 0, -2, side=FOE, hits=1))
+    task.world.add(Body("V", r, c + 3, 0, -2, side=FOE, hits=PLAYER))
     _, reward, *_ = task.step("FIRE")          # bolt c -> c+2, ship c+3 -> c+1: they cross
     assert reward == pytest.approx(0.8 / 12) and not task.done and task.world.count(FOE | SHOT) == 0
 
@@ -149,13 +149,13 @@ def test_bossfight_cover_stops_shots_and_a_fast_shot_cannot_skip_you():
     task.rhythm = [10 ** 6] * 3                      # (the boss holds its fire)
     r, c = task.pos
     task.world.put(r - 2, c, "#")
-    task.world.add(Body("!", r - 4, c, 2, 0, side=8, hits=1))
+    task.world.add(Body("!", r - 4, c, 2, 0, side=FOE_SHOT, hits=PLAYER))
     task.step("NOOP")                                 # r-4 -> r-2 is cover: stopped at r-3
     task.step("NOOP")
-    assert not task.done and task.world.count(8) == 0
+    assert not task.done and task.world.count(FOE_SHOT) == 0
     task.world.put(r - 2, c, ".")
     task.step("FIRE")                                 # your bolt is stopped by nothing now...
-    task.world.add(Body("!", r - 1, c, 2, 0, side=8, hits=1))
+    task.world.add(Body("!", r - 1, c, 2, 0, side=FOE_SHOT, hits=PLAYER))
     _, reward, term, *_ = task.step("UP")             # you r -> r-1, the shot r-1 -> r+1: crossing
     assert term and reward == -1.0
 
@@ -173,3 +173,120 @@ def test_bossfight_phases_follow_the_boss_hit_points():
         task.reset(seed=seed)
         orders.add(tuple(task.order))
     assert len(orders) >= 4
+
+
+# -- Plunder ----------------------------------------------------------------------------------------
+def outlook(task, action, turns):
+    """The reward of ``action`` followed by ``turns`` NOOPs (the real future: streams are copied)."""
+    task._legends = None
+    sim = copy.deepcopy(task)
+    total = 0.0
+    for move in [action] + ["NOOP"] * turns:
+        _, r, term, trunc, _ = sim.step(move)
+        total += r
+        if term or trunc:
+            break
+    return total
+
+
+def plunder_gunner(task):
+    """Fire when the shot would sink an enemy (and no friend); else move under the enemy ship
+    that will be nearest above you."""
+    if task.gun.ready <= task.turn + 1 and outlook(task, "FIRE", 6) > 0:
+        return "FIRE"
+    r, c = task.pos
+    foes = [b for b in task.world.bodies if b.side == FOE]
+    if not foes:
+        return "NOOP"
+    # where a ship will be when a ball fired from here reaches its lane (2 rows a turn)
+    def landing(b):
+        eta = (r - b.r + 1) // 2
+        return b.c + b.vc * (eta // b.period)
+    col = min((landing(b) for b in foes), key=lambda x: abs(x - c))
+    return "LEFT" if col < c else "RIGHT" if col > c else "NOOP"
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_plunder_scripted_gunner_scores(seed):
+    task = make("plunder")
+    task.reset(seed=seed)
+    while not task.done:
+        task.step(plunder_gunner(task))
+    assert task.sunk >= 3 and task.friendly == 0 and task.episode_return >= 0.3
+
+
+def test_plunder_wasting_shots_runs_out_the_clock():
+    task = make("plunder")
+    task.reset(seed=0)
+    while not task.done:
+        task.step("FIRE")
+    assert task.done and task.clock == 0 and task.turn < task.params.timer
+    assert "Time is up." in task.frame.message
+
+
+def test_plunder_friendly_fire_costs_and_a_ball_cannot_skip_a_ship():
+    task = make("plunder", rocks=0)
+    task.reset(seed=4)
+    task.world.bodies[1:] = []
+    r, c = task.pos
+    friend = "B" if task.target == "A" else "A"
+    task.world.add(Body(friend, r - 2, c + 1, 0, -1, side=FRIEND))   # sails into your column
+    _, reward, *_ = task.step("FIRE")        # the ball r -> r-2 meets it arriving at (r-2, c)
+    assert reward == pytest.approx(-0.1) and task.friendly == 1
+    assert "You hit a friendly ship." in task.frame.message
+
+
+# -- CaveFlyer --------------------------------------------------------------------------------------
+def cave_pilot(dist):
+    """Head down the distance map to the exit."""
+    def heuristic(task, action):
+        r, c = task.pos
+        if action == "FIRE":                  # (a shot that hits shows in the look-ahead's gain)
+            return -dist.get((r, c), 999) - 1
+        dr, dc = {"NOOP": (0, 0), "LEFT": (0, -1), "RIGHT": (0, 1), "UP": (-1, 0), "DOWN": (1, 0)}[action]
+        return -dist.get((r + dr, c + dc), 999)
+    return heuristic
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2, 3])
+def test_caveflyer_scripted_flight_reaches_the_exit(seed):
+    task = make("caveflyer")
+    task.reset(seed=seed)
+    dist = bfs_distances(task.exit, lambda r, c: task.world.rows[r][c] != "#")
+    while not task.done:
+        task.step(lookahead(task, task.actions.names, cave_pilot(dist)))
+    assert task.won and task.episode_return >= 0.6 - 1e-9
+
+
+def test_caveflyer_flying_into_the_wall_is_fatal():
+    task = make("caveflyer")
+    task.reset(seed=0)
+    while not task.done:
+        task.step("UP")
+    assert task.won is False and task.episode_return == -1.0
+    assert "You crashed into the cave wall." in task.frame.message
+
+
+def test_caveflyer_enemy_crossing_your_path_and_bolt_hits():
+    task = make("caveflyer")
+    task.reset(seed=2)
+    task.world.bodies[1:] = []
+    r, c = task.pos
+    task.world.add(Body("E", r - 1, c + 1, 1, 0, side=FOE))     # moves down into (r, c+1)...
+    _, reward, term, *_ = task.step("RIGHT")                    # ...as you move there
+    assert term and reward == -1.0 and "An enemy got you." in task.frame.message
+    task.reset(seed=2)
+    task.world.bodies[1:] = []
+    r, c = task.pos
+    foe = task.world.add(Body("E", r, c + 3, 0, -1, side=FOE))  # coming at you
+    _, reward, term, *_ = task.step("FIRE")                      # bolt c -> c+2 meets it at c+2
+    assert not term and not foe.alive and reward == pytest.approx(0.1)
+
+
+def test_caveflyer_every_cave_connects_start_and_exit():
+    task = make("caveflyer")
+    for seed in range(30):
+        task.reset(seed=seed)
+        targets = {b.cell for b in task.world.bodies if b.glyph == "o"}
+        dist = bfs_distances(task.pos, lambda r, c: task.world.rows[r][c] != "#" and (r, c) not in targets)
+        assert task.exit in dist

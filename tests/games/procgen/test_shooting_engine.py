@@ -169,6 +169,9 @@ class Toy(ShooterTask):
         elif pair(a, b, PLAYER):
             self.finish(won=False)
 
+    def _left(self, body):
+        self.log.append(("left", body.glyph))
+
 
 def test_shooter_task_fire_kills_the_incoming_enemy_and_reports_motion():
     task = Toy()
@@ -215,3 +218,25 @@ def test_pair_sorts_an_event_by_side():
     s, e = shot(0, 0, 0, 1), foe(0, 1)
     assert pair(e, s, SHOT) == (s, e) and pair(s, e, FOE) == (e, s)
     assert pair(s, e, PLAYER) is None and pair(s, None, SHOT) is None
+
+
+@pytest.mark.parametrize("game", ["starpilot", "bossfight", "plunder", "caveflyer"])
+def test_the_fast_motion_text_is_the_engines(game):
+    import glyphbench_rl
+    from glyphbench_rl.games.procgen.engine import ProcgenTask
+    task = glyphbench_rl.make(f"glyphbench/procgen-{game}-v0")
+    rng = np.random.default_rng(0)
+    task.reset(seed=0)
+    for _ in range(150):
+        assert task._motion() == ProcgenTask._motion(task)
+        if task.step(int(rng.integers(task.action_space.n)))[2]:
+            task.reset(seed=int(rng.integers(100)))
+
+
+def test_shooter_task_reports_bodies_leaving_the_world():
+    task = Toy()
+    task.reset(seed=0)
+    task.world.put(2, 11, ".")                       # a gap in the right wall
+    task.world.add(Body("z", 2, 10, 0, 2, side=FOE))
+    task.step("NOOP")
+    assert ("left", "z") in task.log and all(b.glyph != "z" for b in task.world.bodies)
