@@ -75,7 +75,7 @@ class ProcgenBigfish(ShooterTask):
 
     def _think(self) -> None:
         p, rng = self.params, self.spawner.rng
-        if self.spawner.due(self.turn) or self.world.count(FOE) < p.min_fish:
+        if self.spawner.due(self.turn) or len(self.world.bodies) - 1 < p.min_fish:   # fish + you
             r, heading = int(rng.integers(p.height)), (1 if rng.random() < 0.5 else -1)
             edge = -1 if heading == 1 else p.width
             near = abs(self.player.c - edge) <= 6

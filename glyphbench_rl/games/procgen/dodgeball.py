@@ -83,14 +83,17 @@ class ProcgenDodgeball(ShooterTask):
         self.exits = {(r, c): [(dr, dc) for dr, dc in DELTAS[1:] if rows[r + dr][c + dc] == OPEN]
                       for r in range(1, p.height - 1) for c in range(1, p.width - 1)}
         # the enemies' per-turn draws: a Python generator seeded from the episode's stream
-        self.left, self.rng = p.enemies, random.Random(int(self.stream("enemies").integers(2 ** 63)))
+        self.left = p.enemies
+        self.rng = random.Random(int(self.stream("enemies").integers(2 ** 63)))
 
     def _arena(self, rng: np.random.Generator):
         """Border walls, inner wall segments, an exit in the border, the player's start, and
         the enemy spots (open cells at least 5 steps from the start), or None spots when the
         open cells are not all connected."""
         p, h, w = self.params, self.params.height, self.params.width
-        rows = [[WALL] * w] + [[WALL] + [OPEN] * (w - 2) + [WALL] for _ in range(h - 2)] + [[WALL] * w]
+        rows = [[WALL] * w for _ in range(h)]
+        for r in range(1, h - 1):
+            rows[r][1:w - 1] = [OPEN] * (w - 2)
         for _ in range(p.walls):
             length = int(rng.integers(2, 5))
             if rng.random() < 0.5:

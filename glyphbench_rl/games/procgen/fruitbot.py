@@ -31,7 +31,7 @@ ARROW = (3, 1, 2, 4)                                     # the arrow drawn after
 class FruitbotParams:
     width: int = param(14, 8, 20)
     length: int = param(40, 16, 120)      # rows, the finish line included
-    spacing: tuple[int, int] = param((4, 7), 3, 12)  # rows from one wall to the next (inclusive range)
+    spacing: tuple[int, int] = param((4, 7), 3, 12)  # rows from a wall to the next (lo, hi)
     items: float = param(0.5, 0, 1)       # chance that a row between walls holds fruit or junk
     fruit_reward: float = param(0.1, 0, 0.2)
     fruit_cap: int = param(7, 0, 10)

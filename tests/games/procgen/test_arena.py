@@ -16,7 +16,8 @@ def test_fifty_seeds_give_distinct_levels(game):
     levels = set()
     for seed in range(50):
         task.reset(seed=seed)
-        levels.add((tuple(task._rows()), tuple(sorted(task._sprites())), tuple(sorted(task._movers()))))
+        levels.add((tuple(task._rows()), tuple(sorted(task._sprites())),
+                    tuple(sorted(task._movers()))))
     assert len(levels) >= 45
 
 
@@ -163,7 +164,8 @@ def test_dodgeball_throw_hits_and_the_last_hit_opens_the_exit():
     task.turn = 1                              # an odd turn: the enemy stands still
     _, reward, _, _, _ = task.step("THROW")
     assert reward == pytest.approx(0.6) and task.left == 0 and not enemy.alive
-    assert task.world.rows[task.exit[0]][task.exit[1]] == "◎" and "exit is open" in task.frame.message
+    assert task.world.rows[task.exit[0]][task.exit[1]] == "◎"
+    assert "exit is open" in task.frame.message
     path = shortest_path(task.pos, task.exit, lambda r, c: task.world.rows[r][c] in ".◎")
     for move in path:
         task.step(move)

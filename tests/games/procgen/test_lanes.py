@@ -93,7 +93,8 @@ def test_fall_turn_rules():
     assert fall_turn(is_wall, 5, 4, 1, 2, 1, 1) == (2, 2, True, [(2, 2)])    # wall beside
     assert fall_turn(is_wall, 5, 4, 0, 2, 0, 2) == (2, 2, False, [(1, 2), (2, 2)])
     assert fall_turn(is_wall, 5, 4, 0, 0, -1, 1) == (1, 0, False, [(1, 0)])  # the edge stops
-    route = fall_route(is_wall, lambda r, c: False, 5, 4, (0, 0), ((0, 0, 1), (1, -1, 1), (2, 1, 1)))
+    moves = ((0, 0, 1), (1, -1, 1), (2, 1, 1))
+    route = fall_route(is_wall, lambda r, c: False, 5, 4, (0, 0), moves)
     assert route is not None and len(route) == 4 and 2 in route
 
 
