@@ -4,6 +4,7 @@ import pytest
 
 import glyphbench_rl
 from glyphbench_rl.games.common.lanes import Lane
+from glyphbench_rl.games.procgen.engine import ARROWS
 from glyphbench_rl.games.procgen.scrolling import LaneLevel, Strip, fall_route, fall_turn
 
 GAMES = ["leaper", "fruitbot"]
@@ -152,3 +153,15 @@ def test_fruitbot_sitting_on_a_wall_runs_out_the_clock_with_the_bump_cap():
     assert not task.won and task.turn == task.max_turns
     assert task.bumps == task.max_turns - column.index("█") + 1
     assert task.episode_return == pytest.approx(-0.05 * 8)
+
+
+def test_fruitbot_view_keeps_the_robot_near_its_top():
+    task = glyphbench_rl.make("glyphbench/procgen-fruitbot-v0")
+    task.reset(seed=1)
+    for action in task.solution()[:6]:
+        task.step(action)
+    r, c = task.pos
+    grid = task._grid()
+    assert len(grid) == 20 and all(len(row) == 14 for row in grid) and r > task.lead
+    assert grid[task.lead][c] == ARROWS[task.facing]
+    assert grid[task.lead + 1:] == task._rows()[r + 1:r + 20 - task.lead]
