@@ -22,7 +22,7 @@ GAMES = Path(glyphbench_rl.__file__).parent / "games"
 ENGINE_LEVEL = {
     "classics": {"versus"},
     "minigrid": {"engine", "world", "grid", "rooms", "solver"},
-    "procgen": {"engine", "mazes", "platforms"},
+    "procgen": {"engine", "mazes", "platforms", "scrolling", "shooting"},
     "nethack": {"engine", "render", "levels", "boxoban", "boxoban_env", "custom", "lean", "rawstep"},
 }
 SHARED = "common"

@@ -14,3 +14,11 @@ from . import coinrun  # noqa: F401
 from . import jumper  # noqa: F401
 from . import ninja  # noqa: F401
 from . import climber  # noqa: F401
+from . import leaper  # noqa: F401
+from . import fruitbot  # noqa: F401
+from . import bigfish  # noqa: F401
+from . import dodgeball  # noqa: F401
+from . import starpilot  # noqa: F401
+from . import bossfight  # noqa: F401
+from . import plunder  # noqa: F401
+from . import caveflyer  # noqa: F401
