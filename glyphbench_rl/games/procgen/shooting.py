@@ -125,7 +125,7 @@ class Body:
         return self.r, self.c
 
     def moves_on(self, turn: int) -> bool:
-        return (self.vr or self.vc) and (self.period == 1 or turn % self.period == self.phase)
+        return bool(self.vr or self.vc) and (self.period == 1 or turn % self.period == self.phase)
 
     def meets(self, other: "Body") -> bool:
         return bool(self.hits & other.side or other.hits & self.side)
