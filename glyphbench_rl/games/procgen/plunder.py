@@ -82,7 +82,7 @@ class ProcgenPlunder(ShooterTask):
 
     def _think(self) -> None:
         if self.ships.due(self.turn):
-            lane = int(self.ships.rng.integers(len(self.lane_moves)))
+            lane = self.ships.below(len(self.lane_moves))
             d = self.lane_moves[lane][1]
             fleet = self.target if self.ships.chance(0.55) else FLEETS[FLEETS.index(self.target) ^ 1]
             col = 0 if d > 0 else self.params.width - 1

@@ -80,7 +80,7 @@ class ProcgenStarPilot(ShooterTask):
             self._spawn(ENEMY, rng, int(rng.integers(w // 2, w)))
 
     def _spawn(self, glyph: str, rng: np.random.Generator, col: int) -> None:
-        r = int(rng.integers(self.params.height))
+        r = int(rng.random() * self.params.height)
         if self.world.is_solid(r, col) or (r, col) == self.pos:
             return
         speed = 2 if glyph == FAST else 1
@@ -95,7 +95,7 @@ class ProcgenStarPilot(ShooterTask):
         if rng.random() < self.wobble:          # and now and then one enemy drifts a row
             foes = [b for b in self.world.bodies if b.side == FOE]
             if foes:
-                b = self.drifter = foes[int(rng.integers(len(foes)))]
+                b = self.drifter = foes[int(rng.random() * len(foes))]
                 b.vr = 1 if (rng.random() < 0.5 and b.r + 1 < self.params.height) or b.r == 0 else -1
         if self.enemies.due(self.turn):
             self._spawn(FAST if self.enemies.chance(self.fast) else ENEMY, rng, w - 1)

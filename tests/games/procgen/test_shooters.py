@@ -192,8 +192,8 @@ def outlook(task, action, turns):
 def plunder_gunner(task):
     """Fire when the shot would sink an enemy (and no friend); else move under the enemy ship
     that will be nearest above you."""
-    if task.gun.ready <= task.turn + 1 and outlook(task, "FIRE", 6) > 0:
-        return "FIRE"
+    if task.gun.ready <= task.turn + 1 and outlook(task, "FIRE", 6) > outlook(task, "NOOP", 6):
+        return "FIRE"                         # (what this shot adds, not what earlier ones do)
     r, c = task.pos
     foes = [b for b in task.world.bodies if b.side == FOE]
     if not foes:
