@@ -15,6 +15,7 @@ few tokens where a run of the shared palette's ``·`` costs one token a cell.
 
 from __future__ import annotations
 
+from functools import lru_cache
 from typing import ClassVar, Iterable, Sequence
 
 from ...core import GlyphTask
@@ -88,29 +89,39 @@ class ProcgenTask(GlyphTask):
         """Moving things as (glyph, row, column, row velocity, column velocity), world cells."""
         return ()
 
+    def _origin(self) -> Cell:
+        """The view's top-left world cell: centred on the player, clamped to the world."""
+        rows = self._rows()
+        r, c = self.pos
+        return (min(max(r - self.view_h // 2, 0), max(len(rows) - self.view_h, 0)),
+                min(max(c - self.view_w // 2, 0), max(len(rows[0]) - self.view_w, 0)))
+
     def _motion(self) -> str:
         """``Vel ... | Moving: ...`` for the things inside the current view."""
-        rows = self._rows()
         r, c = self.pos
-        top = min(max(r - self.view_h // 2, 0), max(len(rows) - self.view_h, 0))
-        left = min(max(c - self.view_w // 2, 0), max(len(rows[0]) - self.view_w, 0))
+        top, left = self._origin()
+        bottom, right = top + self.view_h, left + self.view_w
         seen = sorted((abs(mr - r) + abs(mc - c), mr - r, mc - c, ch, vr, vc)
                       for ch, mr, mc, vr, vc in self._movers()
-                      if (vr or vc) and top <= mr < top + self.view_h and left <= mc < left + self.view_w)
+                      if (vr or vc) and top <= mr < bottom and left <= mc < right)
         vel = self._velocity()
-        parts = [] if vel is None else ["Vel " + velocity_text(*vel)]
+        text = "" if vel is None else "Vel " + velocity_text(*vel)
         if seen:
-            parts.append("Moving: " + " ".join(f"{ch}@{dr:+d},{dc:+d}{velocity_text(vr, vc)}"
-                                               for _, dr, dc, ch, vr, vc in seen[:MAX_MOVERS]))
-        return " | ".join(parts)
+            words = _MOVER_WORDS
+            out = []
+            for entry in seen[:MAX_MOVERS]:
+                word = words.get(entry)
+                if word is None:
+                    _, dr, dc, ch, vr, vc = entry
+                    word = words[entry] = f"{ch}@{dr:+d},{dc:+d}{velocity_text(vr, vc)}"
+                out.append(word)
+            text += (" | Moving: " if text else "Moving: ") + " ".join(out)
+        return text
 
     def _grid(self) -> list[str]:
-        rows = self._rows()
-        height, width = len(rows), len(rows[0])
+        top, left = self._origin()
+        view = window(self._rows(), top, left, self.view_h, self.view_w)
         r, c = self.pos
-        top = min(max(r - self.view_h // 2, 0), max(height - self.view_h, 0))
-        left = min(max(c - self.view_w // 2, 0), max(width - self.view_w, 0))
-        view = window(rows, top, left, self.view_h, self.view_w)
         for sr, sc, ch in (*self._sprites(), (r, c, ARROWS[self.facing])):
             overlay(view, sr - top, sc - left, ch)
         return view
@@ -122,8 +133,14 @@ class ProcgenTask(GlyphTask):
         return " | ".join(p for p in parts if p)
 
 
+@lru_cache(maxsize=None)
 def velocity_text(dr: int, dc: int) -> str:
     """``→1↑2``-style velocity; ``0`` when still."""
     text = (f"←{-dc}" if dc < 0 else f"→{dc}" if dc > 0 else "") + \
         (f"↑{-dr}" if dr < 0 else f"↓{dr}" if dr > 0 else "")
     return text or "0"
+
+
+# HUD words of movers, by (distance, rows, columns, glyph, row velocity, column velocity):
+# a bounded set (positions within a view, a few glyphs and speeds), shared by all games
+_MOVER_WORDS: dict[tuple, str] = {}

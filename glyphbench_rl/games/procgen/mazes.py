@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..common.grid import DELTAS, Board, bfs_distances, carve_maze
+from ..common.grid import DELTAS, Board, carve_maze
 from ..common.palette import WALL
 from .engine import OPEN
 
@@ -48,5 +48,16 @@ class DistanceMaps:
     def from_(self, source: Cell) -> dict[Cell, int]:
         dist = self._maps.get(source)
         if dist is None:
-            dist = self._maps[source] = bfs_distances(source, lambda r, c: (r, c) in self.neighbours)
+            # breadth-first, a frontier at a time, over the neighbour table built once
+            nbrs, dist, frontier, d = self.neighbours, {source: 0}, [source], 0
+            while frontier:
+                d += 1
+                nxt = []
+                for cell in frontier:
+                    for n in nbrs[cell]:
+                        if n not in dist:
+                            dist[n] = d
+                            nxt.append(n)
+                frontier = nxt
+            self._maps[source] = dist
         return dist

@@ -18,8 +18,7 @@ from math import lcm
 from typing import Callable, ClassVar, Sequence
 
 from ..common.lanes import Lane
-from ..common.view import overlay, window
-from .engine import ARROWS, DELTAS, OPEN, ProcgenTask
+from .engine import DELTAS, OPEN, ProcgenTask
 
 __all__ = ["OPEN", "Strip", "LaneLevel", "fall_turn", "fall_route", "LeadView"]
 Cell = tuple[int, int]
@@ -140,12 +139,8 @@ class LeadView(ProcgenTask):
 
     lead: ClassVar[int] = 3
 
-    def _grid(self) -> list[str]:
+    def _origin(self) -> tuple[int, int]:
         rows = self._rows()
         r, c = self.pos
-        top = min(max(r - self.lead, 0), max(len(rows) - self.view_h, 0))
-        left = min(max(c - self.view_w // 2, 0), max(len(rows[0]) - self.view_w, 0))
-        view = window(rows, top, left, self.view_h, self.view_w)
-        for sr, sc, ch in (*self._sprites(), (r, c, ARROWS[self.facing])):
-            overlay(view, sr - top, sc - left, ch)
-        return view
+        return (min(max(r - self.lead, 0), max(len(rows) - self.view_h, 0)),
+                min(max(c - self.view_w // 2, 0), max(len(rows[0]) - self.view_w, 0)))
