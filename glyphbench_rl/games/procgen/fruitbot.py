@@ -24,7 +24,7 @@ ACTIONS = ActionSet([("NOOP", "fall one row"), ("LEFT", "step left, then fall on
                      ("RIGHT", "step right, then fall one row"), ("DOWN", "fall two rows")],
                     noop="NOOP")
 MOVES = ((0, 0, 1), (1, -1, 1), (2, 1, 1), (3, 0, 2))   # action, sideways step, rows fallen
-ARROW = (3, 1, 2, 4)                                     # the arrow drawn after each action
+ARROW = (4, 1, 2, 4)       # the arrow drawn after each action: every turn falls, so NOOP is ▼
 
 
 @dataclass(frozen=True)
