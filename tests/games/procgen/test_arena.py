@@ -160,8 +160,8 @@ def test_dodgeball_throw_hits_and_the_last_hit_opens_the_exit():
     task.reset(seed=5)
     enemy = next(b for b in task.world.bodies if b.glyph == "E")
     task.player.r, task.player.c = task.pos = r, c = (10, 5)
-    enemy.r, enemy.c = r - 3, c               # three cells above you (you face up at first)
-    task.turn = 1                              # an odd turn: the enemy stands still
+    enemy.r, enemy.c = r - 2, c               # two cells above you (you face up at first)
+    task.turn = 0                              # the throw is turn 1, odd: the enemy stands still
     _, reward, _, _, _ = task.step("THROW")
     assert reward == pytest.approx(0.6) and task.left == 0 and not enemy.alive
     assert task.world.rows[task.exit[0]][task.exit[1]] == "◎"
