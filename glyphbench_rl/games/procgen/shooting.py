@@ -73,6 +73,8 @@ PLAYER, SHOT, FOE, FOE_SHOT, ITEM, FRIEND = 1, 2, 4, 8, 16, 32
 # what the world's edge does to a body
 GONE, WRAP, STOP = 0, 1, 2
 FAR = 1 << 30   # the reach of a body that flies forever
+_KEY = 1 << 16  # a cell's int key is r * _KEY + c (World.step)
+_NO_TRACK: tuple[tuple[int, ...], int] = ((), 1)   # a dead body's track
 FIRE = len(ACTIONS)   # the FIRE action's index
 
 FIRE_ACTIONS = ActionSet([(a.name, a.description) for a in ACTIONS] + [("FIRE", "shoot")],
@@ -236,60 +238,68 @@ class World:
     def step(self, turn: int) -> list[tuple[Body, Body | None]]:
         """Move every live body by its velocity, swept; returns the turn's collisions and
         bumps in time order (see the module notes)."""
+        # Cells are keyed as one int (``r * _KEY + c``): cheaper to build and hash than a
+        # (row, column) tuple, and unique for any cell a body can reach (one step off the world
+        # at most). Only cells visited by two bodies lead to the exact (slower) meeting test.
         timed: list[tuple[float, int, int, Body, Body | None]] = []
-        where: dict[Cell, int] = {}           # cell -> the first body on it this turn
-        crowd: dict[Cell, list[int]] = {}     # cells more than one body visits
+        where: dict[int, int] = {}            # cell -> the first body on it this turn
+        crowd: dict[int, list[int]] = {}      # cells more than one body visits
         bodies = self.bodies
-        paths: list[tuple[Sequence[Cell], int]] = []
-        add = paths.append
+        tracks: list[tuple[Sequence[int], int]] = []
+        add = tracks.append
+        setdefault = where.setdefault
         rows, solid, height, width = self.rows, self.solid, self.height, self.width
         for i, b in enumerate(bodies):
             if not b.alive or b.spent:
-                add(((), 1))
+                add(_NO_TRACK)
                 continue
             b.bump = None
             r, c, vr, vc = b.r, b.c, b.vr, b.vc
+            here = r * _KEY + c
             if (vr or vc) and (b.period == 1 or turn % b.period == b.phase):
                 nr, nc = r + vr, c + vc
                 if (vr == 0 or vc == 0) and -1 <= vr + vc <= 1 and b.reach > 1 \
                         and 0 <= nr < height and 0 <= nc < width and rows[nr][nc] not in solid:
                     b.r, b.c = nr, nc                        # the usual one-cell move
                     b.reach -= 1
-                    path: Sequence[Cell] = ((r, c), (nr, nc))
-                    add((path, 1))
-                else:
-                    path, bumped = self.track(b)
-                    n = max(abs(vr), abs(vc))
-                    if bumped:
-                        timed.append((bumped / n, i, i, b, None))
-                    b.r, b.c = path[-1]
-                    add((path, n))
-                for cell in path:
-                    j = where.setdefault(cell, i)
+                    there = nr * _KEY + nc
+                    add(((here, there), 1))
+                    j = setdefault(here, i)
                     if j != i:
-                        if cell in crowd:
-                            crowd[cell].append(i)
-                        else:
-                            crowd[cell] = [j, i]
+                        crowd.setdefault(here, [j]).append(i)
+                    j = setdefault(there, i)
+                    if j != i:
+                        crowd.setdefault(there, [j]).append(i)
+                    continue
+                path, bumped = self.track(b)
+                n = max(abs(vr), abs(vc))
+                if bumped:
+                    timed.append((bumped / n, i, i, b, None))
+                b.r, b.c = path[-1]
+                keys = [pr * _KEY + pc for pr, pc in path]
+                add((keys, n))
+                for key in keys:
+                    j = setdefault(key, i)
+                    if j != i:
+                        crowd.setdefault(key, [j]).append(i)
             else:
-                cell = (r, c)
-                add(((cell,), 1))
-                j = where.setdefault(cell, i)
+                add(((here,), 1))
+                j = setdefault(here, i)
                 if j != i:
-                    if cell in crowd:
-                        crowd[cell].append(i)
-                    else:
-                        crowd[cell] = [j, i]
-        pairs = set()
-        for here in crowd.values():
-            for k, i in enumerate(here):
-                for j in here[k + 1:]:
-                    if bodies[i].meets(bodies[j]):
-                        pairs.add((i, j))
-        for i, j in pairs:
-            moment = _meeting(*paths[i], *paths[j])
-            if moment is not None:
-                timed.append((moment, i, j, bodies[i], bodies[j]))
+                    crowd.setdefault(here, [j]).append(i)
+        if crowd:
+            pairs = set()
+            for here in crowd.values():
+                for k, i in enumerate(here):
+                    for j in here[k + 1:]:
+                        if bodies[i].meets(bodies[j]):
+                            pairs.add((i, j))
+            for i, j in pairs:
+                moment = _meeting(*tracks[i], *tracks[j])
+                if moment is not None:
+                    timed.append((moment, i, j, bodies[i], bodies[j]))
+        if not timed:
+            return []
         if len(timed) > 1:
             timed.sort(key=lambda e: e[:3])   # by moment, then by the order bodies were added
         return [(a, b) for *_, a, b in timed]
