@@ -465,43 +465,59 @@ class ShooterTask(ProcgenTask):
         return self.world.sprites(self.player)
 
     def _grid(self) -> list[str]:
-        """The engine's view, drawn a row at a time (bodies grouped by row)."""
-        rows = self.world.rows
-        vh, vw = self.view_h, self.view_w
-        r, c = self.pos
+        """The engine's view: the still rows' window, then the bodies in view, a row at a time
+        (a row holding one body is two slices; one holding more is rebuilt once)."""
         memo, self._memo = self._memo, None
-        top, left, seen = memo if memo is not None else self._in_view()
-        view = [row[left:left + vw] for row in rows[top:top + vh]]
-        marks: dict[int, list[tuple[int, str]]] = {}
-        for b in seen:
-            if b.r - top in marks:
-                marks[b.r - top].append((b.c - left, b.glyph))
-            else:
-                marks[b.r - top] = [(b.c - left, b.glyph)]
-        marks.setdefault(r - top, []).append((c - left, ARROWS[self.facing]))
-        for vr, cells in marks.items():
+        top, left, marks, _ = memo if memo is not None else self._in_view()
+        vw = self.view_w
+        view = [row[left:left + vw] for row in self.world.rows[top:top + self.view_h]]
+        r, c = self.pos
+        me = (c - left, ARROWS[self.facing])     # the player, drawn over everything
+        if r - top in marks:
+            marks[r - top].append(me)
+        else:
+            marks[r - top] = [me]
+        for y, cells in marks.items():
             if len(cells) == 1:
-                vc, ch = cells[0]
-                row = view[vr]
-                view[vr] = row[:vc] + ch + row[vc + 1:]
+                x, ch = cells[0]
+                row = view[y]
+                view[y] = row[:x] + ch + row[x + 1:]
             else:
-                line = list(view[vr])
-                for vc, ch in cells:
-                    line[vc] = ch
-                view[vr] = "".join(line)
+                line = list(view[y])
+                for x, ch in cells:
+                    line[x] = ch
+                view[y] = "".join(line)
         return view
 
     def _velocity(self) -> Cell:
         return self.player.vr, self.player.vc
 
-    _memo: tuple[int, int, list[Body]] | None = None
+    # the frame's one pass over the bodies (``_in_view``), made by ``_motion`` for ``_grid``
+    _memo: tuple[int, int, dict[int, list[tuple[int, str]]], list[tuple]] | None = None
 
-    def _in_view(self) -> tuple[int, int, list[Body]]:
-        """The view's corner and the live bodies inside it, the player left out."""
+    def _in_view(self) -> tuple[int, int, dict[int, list[tuple[int, str]]], list[tuple]]:
+        """One pass over the live bodies inside the view, the player left out: the view's
+        corner, the glyphs to draw per view row (``{row: [(column, glyph), ...]}``, in body
+        order so later bodies draw over earlier ones) and the moving ones as HUD entries
+        ``(distance, dr, dc, glyph, vr, vc)`` relative to the player."""
         top, left = self._corner()
         vh, vw, me = self.view_h, self.view_w, self.player
-        return top, left, [b for b in self.world.bodies if 0 <= b.r - top < vh and 0 <= b.c - left < vw
-                           and b.alive and b is not me]
+        pr, pc = self.pos
+        marks: dict[int, list[tuple[int, str]]] = {}
+        moving = []
+        for b in self.world.bodies:
+            y = b.r - top
+            if 0 <= y < vh:
+                x = b.c - left
+                if 0 <= x < vw and b.alive and b is not me:
+                    if y in marks:
+                        marks[y].append((x, b.glyph))
+                    else:
+                        marks[y] = [(x, b.glyph)]
+                    if b.vr or b.vc:
+                        dr, dc = b.r - pr, b.c - pc
+                        moving.append((abs(dr) + abs(dc), dr, dc, b.glyph, b.vr, b.vc))
+        return top, left, marks, moving
 
     def _corner(self) -> Cell:
         """The view's top-left world cell (the engine's clamped window)."""
@@ -516,13 +532,8 @@ class ShooterTask(ProcgenTask):
         if type(self)._movers is not ShooterTask._movers:
             return super()._motion()
         me = self.player
-        r, c = self.pos
         memo = self._memo = self._in_view()     # (the frame's _grid, drawn next, reuses it)
-        seen = []
-        for b in memo[2]:
-            if b.vr or b.vc:
-                dr, dc = b.r - r, b.c - c
-                seen.append((abs(dr) + abs(dc), dr, dc, b.glyph, b.vr, b.vc))
+        seen = memo[3]
         text = "Vel " + _velocity_text(me.vr, me.vc)
         if seen:
             seen.sort()
