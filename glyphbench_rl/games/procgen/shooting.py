@@ -91,7 +91,8 @@ def _velocity_text(vr: int, vc: int) -> str:
     return text
 
 
-_WORDS: dict[tuple[int, int, str, int, int], str] = {}   # HUD words of movers, remembered
+# HUD words of movers, remembered by their (distance, dr, dc, glyph, vr, vc) entry
+_WORDS: dict[tuple[int, int, int, str, int, int], str] = {}
 
 
 def with_fire(description: str) -> ActionSet:
@@ -189,6 +190,11 @@ class World:
         """Drop dead and spent bodies (after the turn's events: a shot that flies off the
         world still hits what it met on the way); returns the live ones that left over a
         ``GONE`` edge this turn."""
+        for b in self.bodies:
+            if b.spent or not b.alive:
+                break
+        else:
+            return []          # (most turns end none: keep the list)
         gone = [b for b in self.bodies if b.spent and b.alive and not self.inside(b.r, b.c)]
         self.bodies = [b for b in self.bodies if b.alive and not b.spent]
         return gone
@@ -539,13 +545,12 @@ class ShooterTask(ProcgenTask):
             seen.sort()
             words = []
             for entry in seen[:MAX_MOVERS]:
-                key = entry[1:]
-                word = _WORDS.get(key)
+                word = _WORDS.get(entry)
                 if word is None:
                     if len(_WORDS) > 8192:
                         _WORDS.clear()
                     _, dr, dc, ch, vr, vc = entry
-                    word = _WORDS[key] = f"{ch}@{dr:+d},{dc:+d}{velocity_text(vr, vc)}"
+                    word = _WORDS[entry] = f"{ch}@{dr:+d},{dc:+d}{velocity_text(vr, vc)}"
                 words.append(word)
             text += " | Moving: " + " ".join(words)
         return text
