@@ -277,12 +277,28 @@ class World:
                     if j != i:
                         crowd.setdefault(there, [j]).append(i)
                     continue
-                path, bumped = self.track(b)
                 n = max(abs(vr), abs(vc))
-                if bumped:
-                    timed.append((bumped / n, i, i, b, None))
-                b.r, b.c = path[-1]
-                keys = [pr * _KEY + pc for pr, pc in path]
+                keys = None
+                if vr in (0, n, -n) and vc in (0, n, -n) and b.reach > n \
+                        and 0 <= nr < height and 0 <= nc < width:
+                    # a straight move of n cells (a fast shot) ending inside the world: its
+                    # cells, unless one on the way is solid (then ``track`` finds the bump)
+                    ur, uc = vr // n, vc // n
+                    keys = [here]
+                    for k in range(1, n + 1):
+                        if rows[r + ur * k][c + uc * k] in solid:
+                            keys = None
+                            break
+                        keys.append(here + (ur * k) * _KEY + uc * k)
+                if keys is not None:
+                    b.r, b.c = nr, nc
+                    b.reach -= n
+                else:
+                    path, bumped = self.track(b)
+                    if bumped:
+                        timed.append((bumped / n, i, i, b, None))
+                    b.r, b.c = path[-1]
+                    keys = [pr * _KEY + pc for pr, pc in path]
                 add((keys, n))
                 for key in keys:
                     j = setdefault(key, i)
@@ -528,9 +544,16 @@ class ShooterTask(ProcgenTask):
     def _corner(self) -> Cell:
         """The view's top-left world cell (the engine's clamped window)."""
         r, c = self.pos
-        w = self.world
-        return (min(max(r - self.view_h // 2, 0), max(w.height - self.view_h, 0)),
-                min(max(c - self.view_w // 2, 0), max(w.width - self.view_w, 0)))
+        span = self._span
+        if span is None or span[0] is not self.world:   # (the world's size, once per level)
+            w, vh, vw = self.world, self.view_h, self.view_w
+            span = self._span = (w, vh // 2, max(w.height - vh, 0), vw // 2, max(w.width - vw, 0))
+        _, half_h, low, half_w, right = span
+        top, left = r - half_h, c - half_w
+        return (0 if top < 0 else low if top > low else top,
+                0 if left < 0 else right if left > right else left)
+
+    _span: tuple[World, int, int, int, int] | None = None
 
     def _motion(self) -> str:
         """The engine's ``Vel ... | Moving: ...`` text, read from the bodies directly (the same
