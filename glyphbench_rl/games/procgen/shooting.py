@@ -491,8 +491,16 @@ class ShooterTask(ProcgenTask):
         (a row holding one body is two slices; one holding more is rebuilt once)."""
         memo, self._memo = self._memo, None
         top, left, marks, _ = memo if memo is not None else self._in_view()
-        vw = self.view_w
-        view = [row[left:left + vw] for row in self.world.rows[top:top + self.view_h]]
+        # the still rows' window, reused while the corner and the rows under it are unchanged
+        # (the slice of the world's rows compares fast: the same string objects)
+        still = self.world.rows[top:top + self.view_h]
+        cache = self._still
+        if cache is not None and cache[0] == top and cache[1] == left and cache[2] == still:
+            view = list(cache[3])
+        else:
+            vw = self.view_w
+            view = [row[left:left + vw] for row in still]
+            self._still = (top, left, still, tuple(view))
         r, c = self.pos
         me = (c - left, ARROWS[self.facing])     # the player, drawn over everything
         if r - top in marks:
@@ -511,8 +519,29 @@ class ShooterTask(ProcgenTask):
                 view[y] = "".join(line)
         return view
 
+    _still: tuple[int, int, list[str], tuple[str, ...]] | None = None
+
     def _velocity(self) -> Cell:
         return self.player.vr, self.player.vc
+
+    def _hud(self) -> str:
+        """The engine's HUD text (score, extras, motion: the non-empty ones joined by " | "),
+        the score's words remembered while the return stays (most turns pay nothing)."""
+        ret = self.episode_return
+        score = self._score
+        if score is None or score[0] != ret:
+            score = self._score = (ret, f"Score {ret:.2f}")
+        text = score[1]
+        extras = self._extras()
+        if extras:
+            text += " | " + extras
+        if self.shows_motion:
+            motion = self._motion()
+            if motion:
+                text += " | " + motion
+        return text
+
+    _score: tuple[float, str] | None = None
 
     # the frame's one pass over the bodies (``_in_view``), made by ``_motion`` for ``_grid``
     _memo: tuple[int, int, dict[int, list[tuple[int, str]]], list[tuple]] | None = None
