@@ -280,9 +280,10 @@ class World:
                 n = max(abs(vr), abs(vc))
                 keys = None
                 if vr in (0, n, -n) and vc in (0, n, -n) and b.reach > n \
-                        and 0 <= nr < height and 0 <= nc < width:
-                    # a straight move of n cells (a fast shot) ending inside the world: its
-                    # cells, unless one on the way is solid (then ``track`` finds the bump)
+                        and 0 <= nr < height and 0 <= nc < width and 0 <= r < height and 0 <= c < width:
+                    # a straight move of n cells (a fast shot) from and to cells inside the
+                    # world (so all between are inside): its cells, unless one on the way is
+                    # solid (then ``track`` finds the bump)
                     ur, uc = vr // n, vc // n
                     keys = [here]
                     for k in range(1, n + 1):
