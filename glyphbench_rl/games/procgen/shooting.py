@@ -251,7 +251,9 @@ class World:
         where: dict[int, int] = {}            # cell -> the first body on it this turn
         crowd: dict[int, list[int]] = {}      # cells more than one body visits
         bodies = self.bodies
-        tracks: list[tuple[Sequence[int], int]] = []
+        # per body: (its cell keys this turn, cells a turn), or just its start key when it
+        # moves at most one cell (built only for the few pairs that share a cell)
+        tracks: list[tuple[Sequence[int], int] | int] = []
         add = tracks.append
         setdefault = where.setdefault
         rows, solid, height, width = self.rows, self.solid, self.height, self.width
@@ -269,7 +271,7 @@ class World:
                     b.r, b.c = nr, nc                        # the usual one-cell move
                     b.reach -= 1
                     there = nr * _KEY + nc
-                    add(((here, there), 1))
+                    add(here)
                     j = setdefault(here, i)
                     if j != i:
                         crowd.setdefault(here, [j]).append(i)
@@ -306,7 +308,7 @@ class World:
                     if j != i:
                         crowd.setdefault(key, [j]).append(i)
             else:
-                add(((here,), 1))
+                add(here)
                 j = setdefault(here, i)
                 if j != i:
                     crowd.setdefault(here, [j]).append(i)
@@ -318,7 +320,13 @@ class World:
                         if bodies[i].meets(bodies[j]):
                             pairs.add((i, j))
             for i, j in pairs:
-                moment = _meeting(*tracks[i], *tracks[j])
+                ti, tj = tracks[i], tracks[j]
+                # (a one-cell or still body's track is its start key: it ends where it is now)
+                if type(ti) is int:
+                    ti = (ti, bodies[i].r * _KEY + bodies[i].c), 1
+                if type(tj) is int:
+                    tj = (tj, bodies[j].r * _KEY + bodies[j].c), 1
+                moment = _meeting(*ti, *tj)
                 if moment is not None:
                     timed.append((moment, i, j, bodies[i], bodies[j]))
         if not timed:
