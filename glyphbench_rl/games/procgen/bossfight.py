@@ -70,6 +70,7 @@ class ProcgenBossFight(ShooterTask):
         self.rhythm = [int(x) for x in rng.integers(2, 5, size=3)]  # turns between attacks per phase
         self.bullet_speed = [int(x) for x in rng.integers(1, 3, size=3)]
         self.summon = int(rng.integers(4, 7))
+        self.boss_rng = self.stream("boss")     # its moods (held: _think draws every turn)
 
     @property
     def phase(self) -> int:
@@ -77,7 +78,7 @@ class ProcgenBossFight(ShooterTask):
         return 0 if 3 * hp > 2 * full else 1 if 3 * hp > full else 2
 
     def _think(self) -> None:
-        boss, rng = self.boss, self.stream("boss")
+        boss, rng = self.boss, self.boss_rng
         if self.turn % 2 == 0 and rng.random() < 0.15:   # it changes its mind now and then
             boss.vc = -boss.vc
         k = self.phase

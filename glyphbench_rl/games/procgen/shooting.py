@@ -73,6 +73,8 @@ PLAYER, SHOT, FOE, FOE_SHOT, ITEM, FRIEND = 1, 2, 4, 8, 16, 32
 # what the world's edge does to a body
 GONE, WRAP, STOP = 0, 1, 2
 FAR = 1 << 30   # the reach of a body that flies forever
+_KEY = 1 << 16  # a cell's int key is r * _KEY + c (World.step)
+_NO_TRACK: tuple[tuple[int, ...], int] = ((), 1)   # a dead body's track
 FIRE = len(ACTIONS)   # the FIRE action's index
 
 FIRE_ACTIONS = ActionSet([(a.name, a.description) for a in ACTIONS] + [("FIRE", "shoot")],
@@ -89,7 +91,8 @@ def _velocity_text(vr: int, vc: int) -> str:
     return text
 
 
-_WORDS: dict[tuple[int, int, str, int, int], str] = {}   # HUD words of movers, remembered
+# HUD words of movers, remembered by their (distance, dr, dc, glyph, vr, vc) entry
+_WORDS: dict[tuple[int, int, int, str, int, int], str] = {}
 
 
 def with_fire(description: str) -> ActionSet:
@@ -187,6 +190,11 @@ class World:
         """Drop dead and spent bodies (after the turn's events: a shot that flies off the
         world still hits what it met on the way); returns the live ones that left over a
         ``GONE`` edge this turn."""
+        for b in self.bodies:
+            if b.spent or not b.alive:
+                break
+        else:
+            return []          # (most turns end none: keep the list)
         gone = [b for b in self.bodies if b.spent and b.alive and not self.inside(b.r, b.c)]
         self.bodies = [b for b in self.bodies if b.alive and not b.spent]
         return gone
@@ -236,60 +244,93 @@ class World:
     def step(self, turn: int) -> list[tuple[Body, Body | None]]:
         """Move every live body by its velocity, swept; returns the turn's collisions and
         bumps in time order (see the module notes)."""
+        # Cells are keyed as one int (``r * _KEY + c``): cheaper to build and hash than a
+        # (row, column) tuple, and unique for any cell a body can reach (one step off the world
+        # at most). Only cells visited by two bodies lead to the exact (slower) meeting test.
         timed: list[tuple[float, int, int, Body, Body | None]] = []
-        where: dict[Cell, int] = {}           # cell -> the first body on it this turn
-        crowd: dict[Cell, list[int]] = {}     # cells more than one body visits
+        where: dict[int, int] = {}            # cell -> the first body on it this turn
+        crowd: dict[int, list[int]] = {}      # cells more than one body visits
         bodies = self.bodies
-        paths: list[tuple[Sequence[Cell], int]] = []
-        add = paths.append
+        # per body: (its cell keys this turn, cells a turn), or just its start key when it
+        # moves at most one cell (built only for the few pairs that share a cell)
+        tracks: list[tuple[Sequence[int], int] | int] = []
+        add = tracks.append
+        setdefault = where.setdefault
         rows, solid, height, width = self.rows, self.solid, self.height, self.width
         for i, b in enumerate(bodies):
             if not b.alive or b.spent:
-                add(((), 1))
+                add(_NO_TRACK)
                 continue
             b.bump = None
             r, c, vr, vc = b.r, b.c, b.vr, b.vc
+            here = r * _KEY + c
             if (vr or vc) and (b.period == 1 or turn % b.period == b.phase):
                 nr, nc = r + vr, c + vc
                 if (vr == 0 or vc == 0) and -1 <= vr + vc <= 1 and b.reach > 1 \
                         and 0 <= nr < height and 0 <= nc < width and rows[nr][nc] not in solid:
                     b.r, b.c = nr, nc                        # the usual one-cell move
                     b.reach -= 1
-                    path: Sequence[Cell] = ((r, c), (nr, nc))
-                    add((path, 1))
+                    there = nr * _KEY + nc
+                    add(here)
+                    j = setdefault(here, i)
+                    if j != i:
+                        crowd.setdefault(here, [j]).append(i)
+                    j = setdefault(there, i)
+                    if j != i:
+                        crowd.setdefault(there, [j]).append(i)
+                    continue
+                n = max(abs(vr), abs(vc))
+                keys = None
+                if vr in (0, n, -n) and vc in (0, n, -n) and b.reach > n \
+                        and 0 <= nr < height and 0 <= nc < width and 0 <= r < height and 0 <= c < width:
+                    # a straight move of n cells (a fast shot) from and to cells inside the
+                    # world (so all between are inside): its cells, unless one on the way is
+                    # solid (then ``track`` finds the bump)
+                    ur, uc = vr // n, vc // n
+                    keys = [here]
+                    for k in range(1, n + 1):
+                        if rows[r + ur * k][c + uc * k] in solid:
+                            keys = None
+                            break
+                        keys.append(here + (ur * k) * _KEY + uc * k)
+                if keys is not None:
+                    b.r, b.c = nr, nc
+                    b.reach -= n
                 else:
                     path, bumped = self.track(b)
-                    n = max(abs(vr), abs(vc))
                     if bumped:
                         timed.append((bumped / n, i, i, b, None))
                     b.r, b.c = path[-1]
-                    add((path, n))
-                for cell in path:
-                    j = where.setdefault(cell, i)
+                    keys = [pr * _KEY + pc for pr, pc in path]
+                add((keys, n))
+                for key in keys:
+                    j = setdefault(key, i)
                     if j != i:
-                        if cell in crowd:
-                            crowd[cell].append(i)
-                        else:
-                            crowd[cell] = [j, i]
+                        crowd.setdefault(key, [j]).append(i)
             else:
-                cell = (r, c)
-                add(((cell,), 1))
-                j = where.setdefault(cell, i)
+                add(here)
+                j = setdefault(here, i)
                 if j != i:
-                    if cell in crowd:
-                        crowd[cell].append(i)
-                    else:
-                        crowd[cell] = [j, i]
-        pairs = set()
-        for here in crowd.values():
-            for k, i in enumerate(here):
-                for j in here[k + 1:]:
-                    if bodies[i].meets(bodies[j]):
-                        pairs.add((i, j))
-        for i, j in pairs:
-            moment = _meeting(*paths[i], *paths[j])
-            if moment is not None:
-                timed.append((moment, i, j, bodies[i], bodies[j]))
+                    crowd.setdefault(here, [j]).append(i)
+        if crowd:
+            pairs = set()
+            for here in crowd.values():
+                for k, i in enumerate(here):
+                    for j in here[k + 1:]:
+                        if bodies[i].meets(bodies[j]):
+                            pairs.add((i, j))
+            for i, j in pairs:
+                ti, tj = tracks[i], tracks[j]
+                # (a one-cell or still body's track is its start key: it ends where it is now)
+                if type(ti) is int:
+                    ti = (ti, bodies[i].r * _KEY + bodies[i].c), 1
+                if type(tj) is int:
+                    tj = (tj, bodies[j].r * _KEY + bodies[j].c), 1
+                moment = _meeting(*ti, *tj)
+                if moment is not None:
+                    timed.append((moment, i, j, bodies[i], bodies[j]))
+        if not timed:
+            return []
         if len(timed) > 1:
             timed.sort(key=lambda e: e[:3])   # by moment, then by the order bodies were added
         return [(a, b) for *_, a, b in timed]
@@ -455,50 +496,102 @@ class ShooterTask(ProcgenTask):
         return self.world.sprites(self.player)
 
     def _grid(self) -> list[str]:
-        """The engine's view, drawn a row at a time (bodies grouped by row)."""
-        rows = self.world.rows
-        vh, vw = self.view_h, self.view_w
-        r, c = self.pos
+        """The engine's view: the still rows' window, then the bodies in view, a row at a time
+        (a row holding one body is two slices; one holding more is rebuilt once)."""
         memo, self._memo = self._memo, None
-        top, left, seen = memo if memo is not None else self._in_view()
-        view = [row[left:left + vw] for row in rows[top:top + vh]]
-        marks: dict[int, list[tuple[int, str]]] = {}
-        for b in seen:
-            if b.r - top in marks:
-                marks[b.r - top].append((b.c - left, b.glyph))
-            else:
-                marks[b.r - top] = [(b.c - left, b.glyph)]
-        marks.setdefault(r - top, []).append((c - left, ARROWS[self.facing]))
-        for vr, cells in marks.items():
+        top, left, marks, _ = memo if memo is not None else self._in_view()
+        # the still rows' window, reused while the corner and the rows under it are unchanged
+        # (the slice of the world's rows compares fast: the same string objects)
+        still = self.world.rows[top:top + self.view_h]
+        cache = self._still
+        if cache is not None and cache[0] == top and cache[1] == left and cache[2] == still:
+            view = list(cache[3])
+        else:
+            vw = self.view_w
+            view = [row[left:left + vw] for row in still]
+            self._still = (top, left, still, tuple(view))
+        r, c = self.pos
+        me = (c - left, ARROWS[self.facing])     # the player, drawn over everything
+        if r - top in marks:
+            marks[r - top].append(me)
+        else:
+            marks[r - top] = [me]
+        for y, cells in marks.items():
             if len(cells) == 1:
-                vc, ch = cells[0]
-                row = view[vr]
-                view[vr] = row[:vc] + ch + row[vc + 1:]
+                x, ch = cells[0]
+                row = view[y]
+                view[y] = row[:x] + ch + row[x + 1:]
             else:
-                line = list(view[vr])
-                for vc, ch in cells:
-                    line[vc] = ch
-                view[vr] = "".join(line)
+                line = list(view[y])
+                for x, ch in cells:
+                    line[x] = ch
+                view[y] = "".join(line)
         return view
+
+    _still: tuple[int, int, list[str], tuple[str, ...]] | None = None
 
     def _velocity(self) -> Cell:
         return self.player.vr, self.player.vc
 
-    _memo: tuple[int, int, list[Body]] | None = None
+    def _hud(self) -> str:
+        """The engine's HUD text (score, extras, motion: the non-empty ones joined by " | "),
+        the score's words remembered while the return stays (most turns pay nothing)."""
+        ret = self.episode_return
+        score = self._score
+        if score is None or score[0] != ret:
+            score = self._score = (ret, f"Score {ret:.2f}")
+        text = score[1]
+        extras = self._extras()
+        if extras:
+            text += " | " + extras
+        if self.shows_motion:
+            motion = self._motion()
+            if motion:
+                text += " | " + motion
+        return text
 
-    def _in_view(self) -> tuple[int, int, list[Body]]:
-        """The view's corner and the live bodies inside it, the player left out."""
+    _score: tuple[float, str] | None = None
+
+    # the frame's one pass over the bodies (``_in_view``), made by ``_motion`` for ``_grid``
+    _memo: tuple[int, int, dict[int, list[tuple[int, str]]], list[tuple]] | None = None
+
+    def _in_view(self) -> tuple[int, int, dict[int, list[tuple[int, str]]], list[tuple]]:
+        """One pass over the live bodies inside the view, the player left out: the view's
+        corner, the glyphs to draw per view row (``{row: [(column, glyph), ...]}``, in body
+        order so later bodies draw over earlier ones) and the moving ones as HUD entries
+        ``(distance, dr, dc, glyph, vr, vc)`` relative to the player."""
         top, left = self._corner()
         vh, vw, me = self.view_h, self.view_w, self.player
-        return top, left, [b for b in self.world.bodies if 0 <= b.r - top < vh and 0 <= b.c - left < vw
-                           and b.alive and b is not me]
+        pr, pc = self.pos
+        marks: dict[int, list[tuple[int, str]]] = {}
+        moving = []
+        for b in self.world.bodies:
+            y = b.r - top
+            if 0 <= y < vh:
+                x = b.c - left
+                if 0 <= x < vw and b.alive and b is not me:
+                    if y in marks:
+                        marks[y].append((x, b.glyph))
+                    else:
+                        marks[y] = [(x, b.glyph)]
+                    if b.vr or b.vc:
+                        dr, dc = b.r - pr, b.c - pc
+                        moving.append((abs(dr) + abs(dc), dr, dc, b.glyph, b.vr, b.vc))
+        return top, left, marks, moving
 
     def _corner(self) -> Cell:
         """The view's top-left world cell (the engine's clamped window)."""
         r, c = self.pos
-        w = self.world
-        return (min(max(r - self.view_h // 2, 0), max(w.height - self.view_h, 0)),
-                min(max(c - self.view_w // 2, 0), max(w.width - self.view_w, 0)))
+        span = self._span
+        if span is None or span[0] is not self.world:   # (the world's size, once per level)
+            w, vh, vw = self.world, self.view_h, self.view_w
+            span = self._span = (w, vh // 2, max(w.height - vh, 0), vw // 2, max(w.width - vw, 0))
+        _, half_h, low, half_w, right = span
+        top, left = r - half_h, c - half_w
+        return (0 if top < 0 else low if top > low else top,
+                0 if left < 0 else right if left > right else left)
+
+    _span: tuple[World, int, int, int, int] | None = None
 
     def _motion(self) -> str:
         """The engine's ``Vel ... | Moving: ...`` text, read from the bodies directly (the same
@@ -506,25 +599,19 @@ class ShooterTask(ProcgenTask):
         if type(self)._movers is not ShooterTask._movers:
             return super()._motion()
         me = self.player
-        r, c = self.pos
         memo = self._memo = self._in_view()     # (the frame's _grid, drawn next, reuses it)
-        seen = []
-        for b in memo[2]:
-            if b.vr or b.vc:
-                dr, dc = b.r - r, b.c - c
-                seen.append((abs(dr) + abs(dc), dr, dc, b.glyph, b.vr, b.vc))
+        seen = memo[3]
         text = "Vel " + _velocity_text(me.vr, me.vc)
         if seen:
             seen.sort()
             words = []
             for entry in seen[:MAX_MOVERS]:
-                key = entry[1:]
-                word = _WORDS.get(key)
+                word = _WORDS.get(entry)
                 if word is None:
                     if len(_WORDS) > 8192:
                         _WORDS.clear()
                     _, dr, dc, ch, vr, vc = entry
-                    word = _WORDS[key] = f"{ch}@{dr:+d},{dc:+d}{velocity_text(vr, vc)}"
+                    word = _WORDS[entry] = f"{ch}@{dr:+d},{dc:+d}{velocity_text(vr, vc)}"
                 words.append(word)
             text += " | Moving: " + " ".join(words)
         return text

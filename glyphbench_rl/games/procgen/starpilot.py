@@ -88,7 +88,7 @@ class ProcgenStarPilot(ShooterTask):
         self.world.add(Body(glyph, r, col, 0, -speed, side=side, hits=PLAYER if side == FOE else 0))
 
     def _think(self) -> None:
-        w, rng = self.params.width, self.stream("enemies")
+        w, rng = self.params.width, self.enemies.rng     # (the "enemies" stream)
         if self.drifter is not None:            # last turn's drift ends
             self.drifter.vr = 0
             self.drifter = None

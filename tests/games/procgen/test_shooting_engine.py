@@ -2,7 +2,7 @@
 minimal ShooterTask."""
 
 import numpy as np
-from glyphbench_rl.games.procgen.engine import PLAYER_GLYPHS
+from glyphbench_rl.games.procgen.engine import PLAYER_GLYPHS, ProcgenTask
 import pytest
 
 from glyphbench_rl.games.procgen.shooting import (FAR, FIRE, FIRE_ACTIONS, FOE, FOE_SHOT, GONE,
@@ -240,3 +240,31 @@ def test_shooter_task_reports_bodies_leaving_the_world():
     task.world.add(Body("z", 2, 10, 0, 2, side=FOE))
     task.step("NOOP")
     assert ("left", "z") in task.log and all(b.glyph != "z" for b in task.world.bodies)
+
+
+@pytest.mark.parametrize("game", ["starpilot", "bossfight", "plunder", "caveflyer", "bigfish",
+                                  "dodgeball"])
+def test_the_fast_frame_is_the_engines(game):
+    """The shooter's own grid (one pass over the bodies, a cached still window) and HUD draw
+    what the generic ProcgenTask code draws from ``_rows`` and ``_sprites``, over random play
+    that changes still cells (walls shot away, exits opening) and crosses episodes."""
+    import glyphbench_rl
+    task = glyphbench_rl.make(f"glyphbench/procgen-{game}-v0")
+    rng = np.random.default_rng(1)
+    task.reset(seed=1)
+    for _ in range(400):
+        assert list(task.frame.grid) == ProcgenTask._grid(task)
+        assert task.frame.hud.split(" | ", 1)[1] == ProcgenTask._hud(task)
+        if task.done:
+            task.reset(seed=int(rng.integers(100)))
+        else:
+            task.step(int(rng.integers(task.action_space.n)))
+
+
+def test_a_changed_still_cell_shows_in_the_next_frame():
+    task = Toy()
+    task.reset(seed=0)
+    before = task.frame.grid
+    task.world.put(2, 11, ".")                       # a gap in the right wall, in view
+    task.step("NOOP")
+    assert task.frame.grid != before and ProcgenTask._grid(task) == list(task.frame.grid)
