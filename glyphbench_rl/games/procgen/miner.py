@@ -9,6 +9,7 @@ dug to around the resting boulders."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from heapq import heapify, heappop, heappush
 
 import numpy as np
 
@@ -57,9 +58,11 @@ class ProcgenMiner(ProcgenTask):
         self.rows = rows
         self.place_player((1, 1))
         self.falling: set[tuple[int, int]] = set()
-        while self._settle():   # boulders come to rest before the first turn
+        self._changed: set[int] = set()   # rows redrawn after this turn
+        while self._settle(everything=True):   # boulders come to rest before the first turn
             pass
         self.falling = set()
+        self._changed.clear()
         # Every diamond is reachable by digging around the resting boulders; any other becomes
         # dirt, and dirt that can be reached is turned into diamonds until there are at least 8.
         reach = bfs_distances(self.pos, lambda r, c: rows[r][c] != WALL and rows[r][c] != BOULDER)
@@ -76,25 +79,44 @@ class ProcgenMiner(ProcgenTask):
         self.left = sum(row.count(DIAMOND) for row in rows)
         self._lines = ["".join(row) for row in rows]
 
-    def _settle(self) -> bool:
-        """One turn of falling, lowest boulders first; True if any moved. Crushes the player."""
-        rows, moved, falling = self.rows, False, set()
-        for r in range(len(rows) - 2, 0, -1):
-            row, below = rows[r], rows[r + 1]
-            for c, ch in enumerate(row):
-                if ch != BOULDER:
-                    continue
-                if (r + 1, c) == self.pos:
-                    if (r, c) in self.falling:
-                        self.falling = set()
-                        self._crush()
-                        return False
-                elif below[c] == OPEN:
-                    row[c], below[c] = OPEN, BOULDER
-                    falling.add((r + 1, c))
-                    moved = True
-        self.falling = falling
-        return moved
+    def _settle(self, freed: tuple[int, int] | None = None, everything: bool = False) -> bool:
+        """One turn of falling; True if any boulder moved. Crushes the player.
+
+        Only a boulder that fell last turn, or the one above ``freed`` (the cell the player
+        left), can move: every other boulder rests. They are visited in the order of a full
+        scan, lowest row first and left to right, and a boulder that falls puts the one above
+        it in the same turn's queue, so a column of boulders falls together. ``everything``
+        visits every boulder (the level's first settling)."""
+        rows, pos, was_falling = self.rows, self.pos, self.falling
+        if everything:
+            queue = [(-r, c) for r, row in enumerate(rows) for c, ch in enumerate(row) if ch == BOULDER]
+        else:
+            queue = [(-r, c) for r, c in was_falling]
+            if freed is not None and rows[freed[0] - 1][freed[1]] == BOULDER:
+                queue.append((1 - freed[0], freed[1]))
+        self.falling = falling = set()
+        if not queue:
+            return False
+        heapify(queue)
+        changed = self._changed
+        while queue:
+            r, c = queue[0]
+            r = -r
+            while queue and queue[0] == (-r, c):   # the same boulder queued twice
+                heappop(queue)
+            if rows[r][c] != BOULDER:
+                continue
+            if (r + 1, c) == pos:
+                if (r, c) in was_falling:
+                    self.falling = set()
+                    self._crush()
+                    return False
+            elif rows[r + 1][c] == OPEN:
+                rows[r][c], rows[r + 1][c] = OPEN, BOULDER
+                falling.add((r + 1, c))
+                changed.update((r, r + 1))
+                heappush(queue, (1 - r, c))
+        return bool(falling)
 
     def _crush(self) -> None:
         self.reward(-1.0)
@@ -110,8 +132,9 @@ class ProcgenMiner(ProcgenTask):
     def _act(self, action: int) -> None:
         r, c = self.target(action)
         ch = self.rows[r][c]
+        freed = None
         if ch != WALL and ch != BOULDER:
-            self.pos = (r, c)
+            freed, self.pos = self.pos, (r, c)
             if ch == DIAMOND:
                 self.left -= 1
                 self.taken += 1
@@ -125,8 +148,12 @@ class ProcgenMiner(ProcgenTask):
                 return
             if ch != OPEN:
                 self.rows[r][c] = OPEN
-        if self._settle() or ch == DIRT or ch == DIAMOND:
-            self._lines = ["".join(row) for row in self.rows]
+                self._changed.add(r)
+        self._settle(freed)
+        if self._changed:
+            for row in self._changed:
+                self._lines[row] = "".join(self.rows[row])
+            self._changed.clear()
 
 
 register_variants(ProcgenMiner, "Procgen", {"glyphbench/procgen-miner-v0": dict(max_turns=500)})
