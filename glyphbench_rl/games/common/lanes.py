@@ -5,6 +5,8 @@
   Its content is a pure function of the tick, so a whole lane renders as one precomputed string
   and a planner can read any future tick.
 - ``runs``: a random pattern of objects and gaps, the way rows of cars, logs and trees spawn.
+- ``Draws``: uniform draws from a numpy stream taken in blocks, for the few draws a turn that
+  chasers and wanderers make (one numpy call per draw costs more than their whole turn).
 """
 
 from __future__ import annotations
@@ -76,3 +78,23 @@ def runs(rng: np.random.Generator, width: int, item: str, empty: str,
         cells.extend(empty * int(rng.integers(gaps[0], gaps[1] + 1)))
         cells.extend(item * int(rng.integers(lengths[0], lengths[1] + 1)))
     return "".join(cells[:width])
+
+
+class Draws:
+    """Uniform floats in [0, 1) from a numpy stream, drawn ``block`` at a time; the sequence is
+    the stream's own, so it is as reproducible as the stream."""
+
+    __slots__ = ("stream", "size", "block", "i")
+
+    def __init__(self, stream: np.random.Generator, block: int = 256) -> None:
+        self.stream, self.size, self.block, self.i = stream, block, [], 0
+
+    def random(self) -> float:
+        if self.i == len(self.block):
+            self.block, self.i = self.stream.random(self.size).tolist(), 0
+        self.i += 1
+        return self.block[self.i - 1]
+
+    def below(self, n: int) -> int:
+        """A uniform int in [0, n)."""
+        return int(self.random() * n)

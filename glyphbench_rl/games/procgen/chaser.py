@@ -13,6 +13,7 @@ import numpy as np
 
 from ...core import register_variants
 from ...core.params import param
+from ..common.lanes import Draws
 from ..common.palette import WALL
 from .engine import OPEN, PLAYER_GLYPHS, ProcgenTask
 from .mazes import DistanceMaps, maze_level, rooms
@@ -68,6 +69,7 @@ class ProcgenChaser(ProcgenTask):
         self.pellets = self.total = sum(row.count(PELLET) + row.count(POWER) for row in self.rows)
         self._lines = ["".join(row) for row in self.rows]
         self.timer = self.eaten = 0
+        self.draws = Draws(self.stream("ghosts"))
 
     def _rows(self) -> list[str]:
         return self._lines
@@ -130,7 +132,7 @@ class ProcgenChaser(ProcgenTask):
     def _move_ghosts(self) -> None:
         if self.turn % 3 == 0:
             return
-        rng = self.stream("ghosts")
+        rng = self.draws
         dist = self.maps.from_(self.pos)
         nbrs = self.maps.neighbours
         for i, ghost in enumerate(self.ghosts):
@@ -139,7 +141,7 @@ class ProcgenChaser(ProcgenTask):
                 continue
             options = nbrs[ghost]
             if rng.random() < self.params.randomness:
-                nxt = options[int(rng.integers(len(options)))]
+                nxt = options[rng.below(len(options))]
             elif scared:
                 nxt = max(options, key=dist.__getitem__)
             else:

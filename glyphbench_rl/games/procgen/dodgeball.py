@@ -16,6 +16,7 @@ from ...core import register_variants
 from ...core.actions import ActionSet
 from ...core.params import param
 from ..common.grid import bfs_distances
+from ..common.lanes import Draws
 from ..common.palette import GOAL, WALL
 from .engine import ACTIONS, DELTAS, OPEN, PLAYER_GLYPHS
 from .shooting import FOE, FOE_SHOT, PLAYER, SHOT, Body, Gun, ShooterTask, pair
@@ -26,22 +27,6 @@ SIDESTEP = 3        # enemies throw from this far or farther
 BALL_SPEED = 2      # your ball's cells a turn (an enemy's ball flies one)
 THROW_ACTIONS = ActionSet([(a.name, a.description) for a in ACTIONS]
                           + [("THROW", "throw a ball the way you face")], noop="NOOP")
-
-
-class Uniforms:
-    """Uniform floats in [0, 1) from a numpy stream, drawn 256 at a time: the enemies make a few
-    draws a turn, and one numpy call per draw would cost more than the rest of their turn."""
-
-    __slots__ = ("stream", "block", "i")
-
-    def __init__(self, stream: np.random.Generator) -> None:
-        self.stream, self.block, self.i = stream, [], 0
-
-    def random(self) -> float:
-        if self.i == len(self.block):
-            self.block, self.i = self.stream.random(256).tolist(), 0
-        self.i += 1
-        return self.block[self.i - 1]
 
 
 @dataclass(frozen=True)
@@ -99,7 +84,7 @@ class ProcgenDodgeball(ShooterTask):
                       for r in range(1, p.height - 1) for c in range(1, p.width - 1)}
         # the enemies' per-turn draws: a Python generator seeded from the episode's stream
         self.left = p.enemies
-        self.rng = Uniforms(self.stream("enemies"))
+        self.rng = Draws(self.stream("enemies"))
 
     def _arena(self, rng: np.random.Generator):
         """Border walls, inner wall segments, an exit in the border, the player's start, and
@@ -152,7 +137,7 @@ class ProcgenDodgeball(ShooterTask):
                 options = [(dr, dc) for dr, dc in self.exits[e.r, e.c]
                            if (e.r + dr, e.c + dc) not in taken]
                 if options:
-                    e.vr, e.vc = options[int(rng.random() * len(options))]
+                    e.vr, e.vc = options[rng.below(len(options))]
                     taken.add((e.r + e.vr, e.c + e.vc))
 
     def _line(self, e: Body, me: Body) -> tuple[int, int] | None:
