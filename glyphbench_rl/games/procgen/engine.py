@@ -25,10 +25,9 @@ from ..common.view import overlay, window
 Cell = tuple[int, int]
 OPEN = "."          # an open cell in every Procgen game
 MAX_MOVERS = 6      # the HUD lists at most this many moving things, nearest first
-MOTION_RULE = (" The status line gives the moving things in view, nearest first, with their "
-               "velocity in cells per turn (E@+2,-3←1 is an E two rows below and three columns "
-               "left of you moving one column left a turn; ↑2 is two rows up a turn), and your own "
-               "velocity as Vel where you have one.")
+MOTION_RULE = (" The status line lists moving things in view, nearest first: E@+2,-3←1 is an E "
+               "2 rows below and 3 columns left of you moving 1 column left a turn (↑2: 2 rows up "
+               "a turn); Vel is your own velocity.")
 
 ACTIONS = ActionSet([("NOOP", "wait a turn"), ("LEFT", "move one cell left"),
                      ("RIGHT", "move one cell right"), ("UP", "move one cell up"),

@@ -178,7 +178,7 @@ def test_shooter_task_fire_kills_the_incoming_enemy_and_reports_motion():
     assert task.actions.names[-1] == "FIRE" and FIRE_ACTIONS.names[FIRE] == "FIRE"
     task.reset(seed=0)
     assert task._movers() == [("E", 2, 9, 0, -1)] and task._velocity() == (0, 0)
-    assert "E@+0,+7←1" in task.frame.hud and "status line gives the moving things" in task.system_prompt()
+    assert "E@+0,+7←1" in task.frame.hud and "status line lists moving things" in task.system_prompt()
     _, r, *_ = task.step("RIGHT")
     assert task.pos == (2, 3) and task._velocity() == (0, 1) and r == 0
     _, r, *_ = task.step("FIRE")                      # the shot 3 -> 5, the enemy 8 -> 7
