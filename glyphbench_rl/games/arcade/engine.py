@@ -15,7 +15,7 @@ One game class, one Params dataclass (derived from ``ArcadeParams``), two preset
             ...                            # place the movers
         def _sprites(self):                # (row, col, glyph) of every mover, drawn last wins
             yield self.ball.r, self.ball.c, "o"
-        def _act(self, action):
+        def _play(self, action):           # one tick; self.tick counts ticks (forfeits excluded)
             ... self.score.point(True)     # C: +unit, first to goal wins
             ... if self.lose_life(): return    # D/A: a life lost; True when none are left
 
@@ -154,6 +154,7 @@ class ArcadeTask(GlyphTask):
         self.score = RULES[self.pattern](self, p.goal, p.unit)
         self.lives = p.lives
         self.draws = Draws(self.stream("arcade"))
+        self.tick = 0
         self.still = self._still()
 
     def _still(self) -> list[str]:
@@ -177,6 +178,14 @@ class ArcadeTask(GlyphTask):
         self.say(f"{why} {self.lives} left.")
         self._respawn()
         return False
+
+    def _act(self, action: int) -> None:
+        self.tick += 1
+        self._play(action)
+
+    def _play(self, action: int) -> None:
+        """One tick of the game; time it by ``self.tick`` (a forfeit turn is no tick)."""
+        raise NotImplementedError
 
     def _respawn(self) -> None:
         """Put the player back after a life lost (games with lives override it)."""

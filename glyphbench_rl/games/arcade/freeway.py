@@ -74,7 +74,7 @@ class Freeway(ArcadeTask):
         lane = self.lanes.get(r)
         return lane is not None and lane.row(turn)[self.col] != EMPTY
 
-    def _act(self, action: int) -> None:
+    def _play(self, action: int) -> None:
         p = self.params
         self.r = min(self.home, max(0, self.r + MOVES[action]))
         if self.r == 0:
@@ -82,14 +82,14 @@ class Freeway(ArcadeTask):
             self.say("Crossed!")
             self.r = self.home
             return
-        if self._car(self.r, self.turn):
+        if self._car(self.r, self.tick):
             self.r = min(self.home, self.r + p.knock)
             self.say("Hit by a car!")
 
     def _rows(self) -> list[str]:
         rows = self.still[:]
         for r, lane in self.lanes.items():
-            rows[r] = lane.row(self.turn)
+            rows[r] = lane.row(self.tick)
         return rows
 
     def _sprites(self):

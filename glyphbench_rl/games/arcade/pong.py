@@ -79,7 +79,7 @@ class Pong(ArcadeTask):
         third = off * 3 // self.params.paddle
         return third - 1
 
-    def _act(self, action: int) -> None:
+    def _play(self, action: int) -> None:
         p, b = self.params, self.ball
         self.me = min(max(1, self.me + MOVES[action]), p.height - 1 - p.paddle)
         self.cpu = min(max(1, self.cpu + track(self.cpu + p.paddle // 2, b.r, p.chance, self.draws)),

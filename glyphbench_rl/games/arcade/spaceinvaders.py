@@ -92,12 +92,12 @@ class SpaceInvaders(ArcadeTask):
     def _blocked(self, r: int, c: int) -> bool:
         return not 0 <= r < self.params.height or self.still[r][c] == SHIELD
 
-    def _act(self, action: int) -> None:
+    def _play(self, action: int) -> None:
         p = self.params
         self.col = min(p.width - 1, max(0, self.col + MOVES[action]))
         if action == FIRE:
-            self.gun.fire(self.turn, p.height - 1, self.col, -1, 0, SHOT)
-        self.wave.tick(self.turn)
+            self.gun.fire(self.tick, p.height - 1, self.col, -1, 0, SHOT)
+        self.wave.tick(self.tick)
         if self.wave.bottom() >= p.height - 1:
             self.lives = 1
             self.lose_life("The invaders landed.")
@@ -111,7 +111,7 @@ class SpaceInvaders(ArcadeTask):
             columns = sorted({c for _, c in cells})
             column = columns[self.draws.below(len(columns))]
             low = max(r for r, c in cells if c == column)
-            self.bombs.fire(self.turn, low, column, 1, 0, BOMB)
+            self.bombs.fire(self.tick, low, column, 1, 0, BOMB)
         for bomb, cell in self.bombs.advance(lambda r, c: self._blocked(r, c) or (r, c) == (p.height - 1, self.col)):
             if cell is not None and cell[0] < p.height and self.still[cell[0]][cell[1]] == SHIELD:
                 self.set_still(*cell, EMPTY)
