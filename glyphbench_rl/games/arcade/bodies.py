@@ -72,7 +72,7 @@ class Gun:
         caller removes walls and the field's edges through it too."""
         kept = []
         for shot in self.shots:
-            cell = sweep(shot, hit, 1) if (shot.dr or shot.dc) else None
+            cell = sweep(shot, hit, self.speed) if (shot.dr or shot.dc) else None
             shot.data -= self.speed
             if cell is not None:
                 shot.alive = False

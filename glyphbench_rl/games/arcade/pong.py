@@ -122,6 +122,6 @@ class Pong(ArcadeTask):
 
 
 register_arcade(Pong, "pong",
-                mini=dict(max_turns=200),
+                mini=dict(chance=0.7, max_turns=200),
                 atari=dict(width=34, height=18, goal=21, unit=1.0, paddle=4, speedup=6,
                            top_speed=2, max_turns=5000))
