@@ -12,6 +12,6 @@ Engine-level modules, which the games import (and nothing else of the family):
   countdowns (fuel, oxygen, clocks).
 """
 
-from . import pong  # noqa: F401
-from . import spaceinvaders  # noqa: F401
-from . import freeway  # noqa: F401
+from . import freeway, pong, spaceinvaders
+
+__all__ = ["freeway", "pong", "spaceinvaders"]
