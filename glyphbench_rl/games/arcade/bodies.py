@@ -88,19 +88,45 @@ class Gun:
 class Formation:
     """A block of ``rows`` x ``cols`` members ``gap`` columns apart that slides one column every
     ``sweep`` turns within a field ``width`` wide (a 1-cell margin), steps down a row when it
-    meets an edge, and also every ``advance`` turns (0: only at edges)."""
-    __slots__ = ("top", "left", "gap", "width", "sweep", "advance", "dx", "alive", "rows", "cols")
+    meets an edge, and also every ``advance`` turns (0: only at edges). ``cells()`` and
+    ``lines()`` are cached until it moves or loses a member (``kill``); ``version`` counts
+    those changes, for callers that cache what they draw from it."""
+    __slots__ = ("top", "left", "gap", "width", "sweep", "advance", "dx", "alive", "rows", "cols",
+                 "version", "_cells", "_lines")
 
     def __init__(self, rows: int, cols: int, top: int, left: int, gap: int, width: int,
                  sweep: int, advance: int = 0) -> None:
         self.rows, self.cols, self.top, self.left, self.gap = rows, cols, top, left, gap
         self.width, self.sweep, self.advance, self.dx = width, sweep, advance, 1
         self.alive = {(i, j) for i in range(rows) for j in range(cols)}
+        self.version, self._cells, self._lines = 0, None, None
+
+    def _changed(self) -> None:
+        self.version += 1
+        self._cells = self._lines = None
+
+    def kill(self, member: tuple[int, int]) -> None:
+        self.alive.discard(member)
+        self._changed()
 
     def cells(self) -> dict[tuple[int, int], tuple[int, int]]:
         """Field cell -> member (row, column) for every live member."""
-        t, l, g = self.top, self.left, self.gap
-        return {(t + i, l + j * g): (i, j) for i, j in self.alive}
+        if self._cells is None:
+            t, l, g = self.top, self.left, self.gap
+            self._cells = {(t + i, l + j * g): (i, j) for i, j in self.alive}
+        return self._cells
+
+    def lines(self, glyph: str, empty: str) -> dict[int, str]:
+        """Field row -> the row's text with the members drawn on ``empty``."""
+        if self._lines is None:
+            out: dict[int, list[str]] = {}
+            for r, c in self.cells():
+                line = out.get(r)
+                if line is None:
+                    line = out[r] = [empty] * self.width
+                line[c] = glyph
+            self._lines = {r: "".join(line) for r, line in out.items()}
+        return self._lines
 
     def bottom(self) -> int:
         return self.top + max(i for i, _ in self.alive) if self.alive else -1
@@ -115,8 +141,10 @@ class Formation:
                 down = True
             else:
                 self.left += self.dx
+                self._changed()
         if down:
             self.top += 1
+            self._changed()
 
 
 def track(pos: int, target: int, chance: float, draws) -> int:

@@ -26,7 +26,7 @@ One game class, one Params dataclass (derived from ``ArcadeParams``), two preset
 and ``glyphbench/atari-pong-v0`` (suite Atari, extended tier) and refuses a mini preset whose
 rule could leave [-1, 1] (so the base clamp never engages). The field is ``self.still`` (row
 strings, the background, built by ``_still()`` and cached; change it with ``set_still``; a game
-whose rows slide overrides ``_rows()``) with the ``_sprites()`` drawn on top, one row rebuilt per row that holds a mover. The HUD is the score
+whose rows slide overrides ``_rows()``) with the ``_sprites()`` drawn on top. The HUD is the score
 rule's text (``Score 2/5`` on mini presets, native points then ``k/N`` on Atari ones), then
 ``Lives n`` where more than one life was given, then ``_extra_hud()``.
 
@@ -155,6 +155,7 @@ class ArcadeTask(GlyphTask):
         self.lives = p.lives
         self.draws = Draws(self.stream("arcade"))
         self.tick = 0
+        self.still_version = 0            # bumped by set_still, for games caching rows over it
         self.still = self._still()
 
     def _still(self) -> list[str]:
@@ -164,6 +165,7 @@ class ArcadeTask(GlyphTask):
     def set_still(self, r: int, c: int, ch: str) -> None:
         row = self.still[r]
         self.still[r] = row[:c] + ch + row[c + 1:]
+        self.still_version += 1
 
     def lose_life(self, why: str = "You lost a life.") -> bool:
         """Take a life; True (and the episode ends lost, paying ``death`` in pattern D) when it
@@ -191,6 +193,8 @@ class ArcadeTask(GlyphTask):
         """Put the player back after a life lost (games with lives override it)."""
 
     def _sprites(self) -> Iterable[tuple[int, int, str]]:
+        """(row, col, glyph) of every mover, drawn in order (a list is fastest); keep it to the
+        few things that move, and draw blocks (formations, lanes) as whole rows in ``_rows``."""
         return ()
 
     def _extra_hud(self) -> str:
@@ -202,16 +206,12 @@ class ArcadeTask(GlyphTask):
 
     def _grid(self) -> list[str]:
         rows = self._rows()
-        h, w = len(rows), len(rows[0])
-        touched: dict[int, list[str]] = {}
-        for r, c, g in self._sprites():
-            if 0 <= r < h and 0 <= c < w:
-                line = touched.get(r)
-                if line is None:
-                    line = touched[r] = list(rows[r])
-                line[c] = g
-        for r, line in touched.items():
-            rows[r] = "".join(line)
+        h = len(rows)
+        for r, c, g in self._sprites():   # a few movers: slicing beats a row-to-list round trip
+            if 0 <= r < h:
+                line = rows[r]
+                if 0 <= c < len(line):
+                    rows[r] = line[:c] + g + line[c + 1:]
         return rows
 
     def _hud(self) -> str:

@@ -93,7 +93,7 @@ class Freeway(ArcadeTask):
         return rows
 
     def _sprites(self):
-        yield self.r, self.col, CHICKEN
+        return ((self.r, self.col, CHICKEN),)
 
 
 register_arcade(Freeway, "freeway",

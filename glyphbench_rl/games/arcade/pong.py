@@ -110,11 +110,11 @@ class Pong(ArcadeTask):
 
     def _sprites(self):
         p, b = self.params, self.ball
-        right, left = p.width - 2, 1
-        for k in range(p.paddle):
-            yield self.me + k, right, YOU
-            yield self.cpu + k, left, CPU
-        yield b.r, b.c, BALL
+        right, me, cpu = p.width - 2, self.me, self.cpu
+        out = [(me + k, right, YOU) for k in range(p.paddle)]
+        out += [(cpu + k, 1, CPU) for k in range(p.paddle)]
+        out.append((b.r, b.c, BALL))
+        return out
 
     def _extra_hud(self) -> str:
         b = self.ball

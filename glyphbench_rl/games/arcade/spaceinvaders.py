@@ -83,6 +83,7 @@ class SpaceInvaders(ArcadeTask):
         self.col = p.width // 2
         self.gun = Gun(cooldown=1, speed=p.shot_speed, reach=p.height, limit=1)
         self.bombs = Gun(cooldown=max(1, p.bomb_every), speed=1, reach=p.height, limit=p.bombs)
+        self._drawn = None
         self._wave()
 
     def _wave(self) -> None:
@@ -122,7 +123,7 @@ class SpaceInvaders(ArcadeTask):
         """Your shot stopped at ``cell``: an invader dies, or a shield loses the cell."""
         member = self.wave.cells().get(cell)
         if member is not None:
-            self.wave.alive.discard(member)
+            self.wave.kill(member)
             self.say("Invader hit!")
             self.score.gain()
             if not self.wave.alive and not self.done:
@@ -134,14 +135,23 @@ class SpaceInvaders(ArcadeTask):
         self.bombs.shots = []
         self.col = self.params.width // 2
 
+    def _rows(self) -> list[str]:
+        key = (self.wave, self.wave.version, self.still_version)
+        if key != self._drawn:
+            rows = self.still[:]
+            blank = EMPTY * self.params.width
+            for r, line in self.wave.lines(INVADER, EMPTY).items():
+                if 0 <= r < len(rows):
+                    rows[r] = line if rows[r] == blank else "".join(
+                        a if a != EMPTY else b for a, b in zip(line, rows[r]))
+            self._drawn, self._layer = key, rows
+        return self._layer[:]
+
     def _sprites(self):
-        for r, c in self.wave.cells():
-            yield r, c, INVADER
-        for s in self.gun.shots:
-            yield s.r, s.c, SHOT
-        for b in self.bombs.shots:
-            yield b.r, b.c, BOMB
-        yield self.params.height - 1, self.col, CANNON
+        out = [(s.r, s.c, SHOT) for s in self.gun.shots]
+        out += [(b.r, b.c, BOMB) for b in self.bombs.shots]
+        out.append((self.params.height - 1, self.col, CANNON))
+        return out
 
 
 register_arcade(SpaceInvaders, "spaceinvaders",

@@ -142,8 +142,9 @@ def test_formation_sweeps_then_steps_down_at_the_edge():
     assert (f.top, f.left) == (1, 4)                  # columns 4 and 6: at the edge
     f.tick(4)
     assert (f.top, f.left, f.dx) == (2, 4, -1)
-    f.alive.discard((0, 0))
+    f.kill((0, 0))
     assert set(f.cells()) == {(2, 6)} and f.bottom() == 2
+    assert f.lines("M", ".") == {2: "......M."}
 
 
 class Fixed:
