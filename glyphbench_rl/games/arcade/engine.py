@@ -156,6 +156,8 @@ class ArcadeTask(GlyphTask):
         self.draws = Draws(self.stream("arcade"))
         self.tick = 0
         self.still_version = 0            # bumped by set_still, for games caching rows over it
+        self._layer_key: object = None
+        self._layer_rows: list[str] = []
         self.still = self._still()
 
     def _still(self) -> list[str]:
@@ -203,6 +205,13 @@ class ArcadeTask(GlyphTask):
     def _rows(self) -> list[str]:
         """This turn's rows under the movers: the still rows (a copy), or rows that slide."""
         return self.still[:]
+
+    def cached_rows(self, key, build) -> list[str]:
+        """A copy of the rows ``build()`` made, rebuilt only when ``key`` changes: for ``_rows``
+        of games whose slow movers (paddles, a formation) change the rows now and then."""
+        if key != self._layer_key:
+            self._layer_key, self._layer_rows = key, build()
+        return self._layer_rows[:]
 
     def _grid(self) -> list[str]:
         rows = self._rows()

@@ -108,13 +108,19 @@ class Pong(ArcadeTask):
                 self._serve(toward=-1 if mine else 1)
                 return
 
+    def _rows(self) -> list[str]:
+        return self.cached_rows((self.me, self.cpu), self._paddles)
+
+    def _paddles(self) -> list[str]:
+        p, rows = self.params, self.still[:]
+        inner = EMPTY * (p.width - 4)
+        for r in range(1, p.height - 1):
+            rows[r] = (EMPTY + (CPU if 0 <= r - self.cpu < p.paddle else EMPTY) + inner
+                       + (YOU if 0 <= r - self.me < p.paddle else EMPTY) + EMPTY)
+        return rows
+
     def _sprites(self):
-        p, b = self.params, self.ball
-        right, me, cpu = p.width - 2, self.me, self.cpu
-        out = [(me + k, right, YOU) for k in range(p.paddle)]
-        out += [(cpu + k, 1, CPU) for k in range(p.paddle)]
-        out.append((b.r, b.c, BALL))
-        return out
+        return ((self.ball.r, self.ball.c, BALL),)
 
     def _extra_hud(self) -> str:
         b = self.ball

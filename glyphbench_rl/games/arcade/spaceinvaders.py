@@ -83,7 +83,6 @@ class SpaceInvaders(ArcadeTask):
         self.col = p.width // 2
         self.gun = Gun(cooldown=1, speed=p.shot_speed, reach=p.height, limit=1)
         self.bombs = Gun(cooldown=max(1, p.bomb_every), speed=1, reach=p.height, limit=p.bombs)
-        self._drawn = None
         self._wave()
 
     def _wave(self) -> None:
@@ -136,16 +135,16 @@ class SpaceInvaders(ArcadeTask):
         self.col = self.params.width // 2
 
     def _rows(self) -> list[str]:
-        key = (self.wave, self.wave.version, self.still_version)
-        if key != self._drawn:
-            rows = self.still[:]
-            blank = EMPTY * self.params.width
-            for r, line in self.wave.lines(INVADER, EMPTY).items():
-                if 0 <= r < len(rows):
-                    rows[r] = line if rows[r] == blank else "".join(
-                        a if a != EMPTY else b for a, b in zip(line, rows[r]))
-            self._drawn, self._layer = key, rows
-        return self._layer[:]
+        return self.cached_rows((self.wave, self.wave.version, self.still_version), self._layer)
+
+    def _layer(self) -> list[str]:
+        rows = self.still[:]
+        blank = EMPTY * self.params.width
+        for r, line in self.wave.lines(INVADER, EMPTY).items():
+            if 0 <= r < len(rows):
+                rows[r] = line if rows[r] == blank else "".join(
+                    a if a != EMPTY else b for a, b in zip(line, rows[r]))
+        return rows
 
     def _sprites(self):
         out = [(s.r, s.c, SHOT) for s in self.gun.shots]
