@@ -58,6 +58,9 @@ class Gun:
         self.shots: list[Body] = []
         self.ready = 0
 
+    def ready_at(self, turn: int) -> bool:
+        return turn >= self.ready and len(self.shots) < self.limit
+
     def fire(self, turn: int, r: int, c: int, dr: int, dc: int, glyph: str = "|") -> Body | None:
         if turn < self.ready or len(self.shots) >= self.limit:
             return None
@@ -88,63 +91,82 @@ class Gun:
 class Formation:
     """A block of ``rows`` x ``cols`` members ``gap`` columns apart that slides one column every
     ``sweep`` turns within a field ``width`` wide (a 1-cell margin), steps down a row when it
-    meets an edge, and also every ``advance`` turns (0: only at edges). ``cells()`` and
-    ``lines()`` are cached until it moves or loses a member (``kill``); ``version`` counts
-    those changes, for callers that cache what they draw from it."""
+    meets an edge, and also every ``advance`` turns (0: only at edges). What depends only on
+    who is alive is cached relative to the block's corner (rebuilt on ``kill``), so a move
+    costs nothing; ``version`` counts moves and kills, for callers caching what they draw."""
     __slots__ = ("top", "left", "gap", "width", "sweep", "advance", "dx", "alive", "rows", "cols",
-                 "version", "_cells", "_lines")
+                 "version", "_shape")
 
     def __init__(self, rows: int, cols: int, top: int, left: int, gap: int, width: int,
                  sweep: int, advance: int = 0) -> None:
         self.rows, self.cols, self.top, self.left, self.gap = rows, cols, top, left, gap
         self.width, self.sweep, self.advance, self.dx = width, sweep, advance, 1
         self.alive = {(i, j) for i in range(rows) for j in range(cols)}
-        self.version, self._cells, self._lines = 0, None, None
-
-    def _changed(self) -> None:
-        self.version += 1
-        self._cells = self._lines = None
+        self.version, self._shape = 0, None
 
     def kill(self, member: tuple[int, int]) -> None:
         self.alive.discard(member)
-        self._changed()
+        self.version += 1
+        self._shape = None
+
+    def shape(self):
+        """(pattern per member row, lowest member row per column, lowest and highest column),
+        relative to the corner."""
+        if self._shape is None:
+            low: dict[int, int] = {}
+            for i, j in self.alive:
+                if low.get(j, -1) < i:
+                    low[j] = i
+            span = (self.cols - 1) * self.gap + 1
+            pats = {}
+            for i in {i for i, _ in self.alive}:
+                line = ["."] * span
+                for j in range(self.cols):
+                    if (i, j) in self.alive:
+                        line[j * self.gap] = "\0"
+                pats[i] = "".join(line).rstrip(".")
+            cols = sorted(low)
+            self._shape = (pats, [(low[j], j) for j in cols], cols[0] if cols else 0, cols[-1] if cols else 0)
+        return self._shape
+
+    def member_at(self, r: int, c: int) -> tuple[int, int] | None:
+        j, rem = divmod(c - self.left, self.gap)
+        m = (r - self.top, j)
+        return m if not rem and m in self.alive else None
 
     def cells(self) -> dict[tuple[int, int], tuple[int, int]]:
         """Field cell -> member (row, column) for every live member."""
-        if self._cells is None:
-            t, l, g = self.top, self.left, self.gap
-            self._cells = {(t + i, l + j * g): (i, j) for i, j in self.alive}
-        return self._cells
+        t, l, g = self.top, self.left, self.gap
+        return {(t + i, l + j * g): (i, j) for i, j in self.alive}
 
     def lines(self, glyph: str, empty: str) -> dict[int, str]:
         """Field row -> the row's text with the members drawn on ``empty``."""
-        if self._lines is None:
-            out: dict[int, list[str]] = {}
-            for r, c in self.cells():
-                line = out.get(r)
-                if line is None:
-                    line = out[r] = [empty] * self.width
-                line[c] = glyph
-            self._lines = {r: "".join(line) for r, line in out.items()}
-        return self._lines
+        t, l, w = self.top, self.left, self.width
+        return {t + i: (empty * l + pat.replace(".", empty).replace("\0", glyph)).ljust(w, empty)[:w]
+                for i, pat in self.shape()[0].items()}
+
+    def front(self) -> list[tuple[int, int]]:
+        """The lowest live member's cell in each column, left to right (who drops bombs)."""
+        t, l, g = self.top, self.left, self.gap
+        return [(t + i, l + j * g) for i, j in self.shape()[1]]
 
     def bottom(self) -> int:
-        return self.top + max(i for i, _ in self.alive) if self.alive else -1
+        return self.top + max(i for i, _ in self.shape()[1]) if self.alive else -1
 
     def tick(self, turn: int) -> None:
         down = self.advance and turn % self.advance == 0
         if turn % self.sweep == 0 and self.alive:
-            cols = [j for _, j in self.alive]
-            lo, hi = self.left + min(cols) * self.gap, self.left + max(cols) * self.gap
+            _, _, lo, hi = self.shape()
+            lo, hi = self.left + lo * self.gap, self.left + hi * self.gap
             if (hi + self.dx > self.width - 2) or (lo + self.dx < 1):
                 self.dx = -self.dx
                 down = True
             else:
                 self.left += self.dx
-                self._changed()
+                self.version += 1
         if down:
             self.top += 1
-            self._changed()
+            self.version += 1
 
 
 def track(pos: int, target: int, chance: float, draws) -> int:

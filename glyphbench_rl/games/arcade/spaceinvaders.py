@@ -102,16 +102,13 @@ class SpaceInvaders(ArcadeTask):
             self.lives = 1
             self.lose_life("The invaders landed.")
             return
-        cells = self.wave.cells()
-        for shot, cell in self.gun.advance(lambda r, c: (r, c) in cells or self._blocked(r, c)):
+        wave = self.wave
+        for shot, cell in self.gun.advance(lambda r, c: self._blocked(r, c) or wave.member_at(r, c) is not None):
             if cell is not None:
                 self._strike(cell)
-        if p.bomb_every and self.wave.alive:
-            cells = self.wave.cells()
-            columns = sorted({c for _, c in cells})
-            column = columns[self.draws.below(len(columns))]
-            low = max(r for r, c in cells if c == column)
-            self.bombs.fire(self.tick, low, column, 1, 0, BOMB)
+        if p.bomb_every and self.wave.alive and self.bombs.ready_at(self.tick):
+            front = self.wave.front()
+            self.bombs.fire(self.tick, *front[self.draws.below(len(front))], 1, 0, BOMB)
         for bomb, cell in self.bombs.advance(lambda r, c: self._blocked(r, c) or (r, c) == (p.height - 1, self.col)):
             if cell is not None and cell[0] < p.height and self.still[cell[0]][cell[1]] == SHIELD:
                 self.set_still(*cell, EMPTY)
@@ -120,7 +117,7 @@ class SpaceInvaders(ArcadeTask):
 
     def _strike(self, cell: tuple[int, int]) -> None:
         """Your shot stopped at ``cell``: an invader dies, or a shield loses the cell."""
-        member = self.wave.cells().get(cell)
+        member = self.wave.member_at(*cell)
         if member is not None:
             self.wave.kill(member)
             self.say("Invader hit!")

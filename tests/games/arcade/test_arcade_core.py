@@ -124,7 +124,7 @@ def test_sweep_stops_a_fast_body_at_a_thin_wall():
 def test_gun_cooldown_limit_and_reach():
     gun = Gun(cooldown=2, speed=2, reach=4, limit=2)
     assert gun.fire(0, 10, 5, -1, 0) is not None
-    assert gun.fire(1, 10, 5, -1, 0) is None          # cooling down
+    assert gun.fire(1, 10, 5, -1, 0) is None and not gun.ready_at(1)   # cooling down
     assert gun.fire(2, 10, 5, -1, 0) is not None
     assert gun.fire(4, 10, 5, -1, 0) is None          # two in flight
     out = list(gun.advance(lambda r, c: r == 8))
@@ -144,7 +144,7 @@ def test_formation_sweeps_then_steps_down_at_the_edge():
     assert (f.top, f.left, f.dx) == (2, 4, -1)
     f.kill((0, 0))
     assert set(f.cells()) == {(2, 6)} and f.bottom() == 2
-    assert f.lines("M", ".") == {2: "......M."}
+    assert f.lines("M", ".") == {2: "......M."} and f.front() == [(2, 6)]
 
 
 class Fixed:
