@@ -33,6 +33,12 @@ def sweep(body: Body, hit: Hit, steps: int = 1) -> tuple[int, int] | None:
     (so a fast body cannot jump over a thin thing); stop on the first cell where ``hit`` is true
     and return it (the body stays on the last free cell), else None."""
     n = max(abs(body.dr), abs(body.dc)) * steps
+    if n == 1:                                   # the usual case: one cell
+        r, c = body.r + body.dr, body.c + body.dc
+        if hit(r, c):
+            return r, c
+        body.r, body.c = r, c
+        return None
     r0, c0, tr, tc = body.r, body.c, body.dr * steps, body.dc * steps
     for i in range(1, n + 1):
         r = r0 + (tr * i // n if tr >= 0 else -(-tr * i // n))
@@ -110,8 +116,8 @@ class Formation:
         self._shape = None
 
     def shape(self):
-        """(pattern per member row, lowest member row per column, lowest and highest column),
-        relative to the corner."""
+        """(pattern per member row, lowest member row per column, lowest and highest column,
+        lowest row), relative to the corner."""
         if self._shape is None:
             low: dict[int, int] = {}
             for i, j in self.alive:
@@ -126,7 +132,8 @@ class Formation:
                         line[j * self.gap] = "\0"
                 pats[i] = "".join(line).rstrip(".")
             cols = sorted(low)
-            self._shape = (pats, [(low[j], j) for j in cols], cols[0] if cols else 0, cols[-1] if cols else 0)
+            self._shape = (pats, [(low[j], j) for j in cols], cols[0] if cols else 0,
+                           cols[-1] if cols else 0, max(low.values(), default=-1))
         return self._shape
 
     def member_at(self, r: int, c: int) -> tuple[int, int] | None:
@@ -151,12 +158,12 @@ class Formation:
         return [(t + i, l + j * g) for i, j in self.shape()[1]]
 
     def bottom(self) -> int:
-        return self.top + max(i for i, _ in self.shape()[1]) if self.alive else -1
+        return self.top + self.shape()[4] if self.alive else -1
 
     def tick(self, turn: int) -> None:
         down = self.advance and turn % self.advance == 0
         if turn % self.sweep == 0 and self.alive:
-            _, _, lo, hi = self.shape()
+            _, _, lo, hi, _ = self.shape()
             lo, hi = self.left + lo * self.gap, self.left + hi * self.gap
             if (hi + self.dx > self.width - 2) or (lo + self.dx < 1):
                 self.dx = -self.dx
