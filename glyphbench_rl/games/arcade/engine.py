@@ -156,8 +156,8 @@ class ArcadeTask(GlyphTask):
         self.draws = Draws(self.stream("arcade"))
         self.tick = 0
         self.still_version = 0            # bumped by set_still, for games caching rows over it
-        self._layer_key: object = None
-        self._layer_rows: list[str] = []
+        self._layers: dict = {}
+        self._layers_of = 0               # the still_version the remembered layers were drawn on
         self.still = self._still()
 
     def _still(self) -> list[str]:
@@ -207,11 +207,15 @@ class ArcadeTask(GlyphTask):
         return self.still[:]
 
     def cached_rows(self, key, build) -> list[str]:
-        """A copy of the rows ``build()`` made, rebuilt only when ``key`` changes: for ``_rows``
-        of games whose slow movers (paddles, a formation) change the rows now and then."""
-        if key != self._layer_key:
-            self._layer_key, self._layer_rows = key, build()
-        return self._layer_rows[:]
+        """A copy of the rows ``build()`` made for ``key`` (the state of the slow movers drawn
+        into whole rows: paddles, a formation), remembered (up to 256 keys) until the still
+        rows change."""
+        if self._layers_of != self.still_version or len(self._layers) >= 256:
+            self._layers, self._layers_of = {}, self.still_version
+        rows = self._layers.get(key)
+        if rows is None:
+            rows = self._layers[key] = build()
+        return rows[:]
 
     def _grid(self) -> list[str]:
         rows = self._rows()

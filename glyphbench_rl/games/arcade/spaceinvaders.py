@@ -83,10 +83,12 @@ class SpaceInvaders(ArcadeTask):
         self.col = p.width // 2
         self.gun = Gun(cooldown=1, speed=p.shot_speed, reach=p.height, limit=1)
         self.bombs = Gun(cooldown=max(1, p.bomb_every), speed=1, reach=p.height, limit=p.bombs)
+        self.waves = 0
         self._wave()
 
     def _wave(self) -> None:
         p = self.params
+        self.waves += 1
         self.wave = Formation(p.rows, p.cols, 1, 1, 2, p.width, p.sweep, p.advance)
 
     def _blocked(self, r: int, c: int) -> bool:
@@ -132,7 +134,7 @@ class SpaceInvaders(ArcadeTask):
         self.col = self.params.width // 2
 
     def _rows(self) -> list[str]:
-        return self.cached_rows((self.wave, self.wave.version, self.still_version), self._layer)
+        return self.cached_rows((self.waves, self.wave.version), self._layer)
 
     def _layer(self) -> list[str]:
         rows = self.still[:]
