@@ -8,6 +8,7 @@ never another family; a game module imports only its family's engine-level modul
 another game (``tests/test_import_graph.py`` checks all of this).
 """
 
+from . import arcade  # noqa: F401
 from . import classics  # noqa: F401
 from . import minigrid  # noqa: F401
 from . import nethack  # noqa: F401

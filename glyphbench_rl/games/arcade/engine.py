@@ -1,0 +1,249 @@
+"""ArcadeTask: what every arcade game (MiniAtari and Atari presets) shares.
+
+One game class, one Params dataclass (derived from ``ArcadeParams``), two presets::
+
+    @dataclass(frozen=True)
+    class PongParams(ArcadeParams):
+        paddle: int = param(3, 1, 8)
+
+    class Pong(ArcadeTask):
+        Params, ACTIONS, glyphs = PongParams, ACTIONS, {...}
+        pattern = "C"                      # "A", "B", "C" or "D": picks self.score's rule
+
+        def _setup(self, rng):
+            self.start(rng)                # lives, score rule, draws, still rows
+            ...                            # place the movers
+        def _sprites(self):                # (row, col, glyph) of every mover, drawn last wins
+            yield self.ball.r, self.ball.c, "o"
+        def _play(self, action):           # one tick; self.tick counts ticks (forfeits excluded)
+            ... self.score.point(True)     # C: +unit, first to goal wins
+            ... if self.lose_life(): return    # D/A: a life lost; True when none are left
+
+    register_arcade(Pong, "pong", mini=dict(goal=3, unit=1/3, max_turns=200),
+                    atari=dict(width=34, height=18, goal=21, unit=1.0, max_turns=5000))
+
+``register_arcade`` registers ``glyphbench/miniatari-pong-v0`` (suite MiniAtari, standard tier)
+and ``glyphbench/atari-pong-v0`` (suite Atari, extended tier) and refuses a mini preset whose
+rule could leave [-1, 1] (so the base clamp never engages). The field is ``self.still`` (row
+strings, the background, built by ``_still()`` and cached; change it with ``set_still``; a game
+whose rows slide overrides ``_rows()``) with the ``_sprites()`` drawn on top. The HUD is the score
+rule's text (``Score 2/5`` on mini presets, native points then ``k/N`` on Atari ones), then
+``Lives n`` where more than one life was given, then ``_extra_hud()``.
+
+Score rules (specs section 0), ``self.score`` after ``start``:
+- ``Tally`` (A, and D with ``death``): +unit per credited unit, capped at ``goal`` (won there);
+- ``Milestones`` (B): ``reach(key)`` pays ``unit x share`` once per key;
+- ``Duel`` (C): ``point(mine)`` pays +unit or -unit; first side to ``goal`` ends the episode.
+Lives: ``lose_life()`` takes one; the last one pays ``death`` (pattern D; 0 for A) and ends the
+episode lost, else the game respawns (``_respawn()``). Per-turn randomness: ``self.draws`` (a
+``Draws`` over the episode's "arcade" stream; never numpy per call).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import ClassVar, Iterable
+
+import numpy as np
+
+from ...core import GlyphTask, register_variants
+from ...core.params import param
+from ..common.lanes import Draws
+
+EMPTY = "."
+EPS = 1e-9
+
+
+@dataclass(frozen=True)
+class ArcadeParams:
+    width: int = param(14, 6, 80)
+    height: int = param(10, 5, 40)
+    lives: int = param(1, 1, 9)
+    goal: int = param(4, 1, 1000)          # N: units (or points in a duel) that win
+    unit: float = param(0.25, 0, 1000)     # reward per unit
+    death: float = param(-1.0, -1000, 0)   # paid when the last life is lost (0: pattern A)
+
+
+class Tally:
+    """Patterns A and D: a monotone credited counter capped at ``goal``."""
+    __slots__ = ("task", "goal", "unit", "done", "points")
+
+    def __init__(self, task: "ArcadeTask", goal: int, unit: float) -> None:
+        self.task, self.goal, self.unit, self.done, self.points = task, goal, unit, 0, 0.0
+
+    def gain(self, k: int = 1) -> None:
+        k = min(k, self.goal - self.done)
+        if k > 0:
+            self.done += k
+            self.points += k * self.unit
+            self.task.reward(k * self.unit)
+            if self.done >= self.goal:
+                self.task.finish(won=True)
+
+    def hud(self, native: bool) -> str:
+        return f"Score {self.points:g} ({self.done}/{self.goal})" if native else f"Score {self.done}/{self.goal}"
+
+
+class Milestones(Tally):
+    """Pattern B: ``reach(key, share)`` pays ``share`` of ``goal x unit`` once per key; shares
+    are the game's to keep summing to at most 1. ``done`` counts keys; the last ``goal``-th
+    key wins."""
+    __slots__ = ("keys",)
+
+    def __init__(self, task: "ArcadeTask", goal: int, unit: float) -> None:
+        super().__init__(task, goal, unit)
+        self.keys: set = set()
+
+    def reach(self, key, share: float) -> None:
+        if key not in self.keys and self.done < self.goal:
+            self.keys.add(key)
+            pay = share * self.goal * self.unit
+            self.points += pay
+            self.task.reward(pay)
+            self.done += 1
+            if self.done >= self.goal:
+                self.task.finish(won=True)
+
+
+class Duel:
+    """Pattern C: +unit per own point, -unit per opponent point; first to ``goal`` ends it."""
+    __slots__ = ("task", "goal", "unit", "mine", "theirs")
+
+    def __init__(self, task: "ArcadeTask", goal: int, unit: float) -> None:
+        self.task, self.goal, self.unit, self.mine, self.theirs = task, goal, unit, 0, 0
+
+    def point(self, mine: bool) -> None:
+        if mine:
+            self.mine += 1
+            self.task.reward(self.unit)
+        else:
+            self.theirs += 1
+            self.task.reward(-self.unit)
+        if self.mine >= self.goal or self.theirs >= self.goal:
+            self.task.finish(won=self.mine >= self.goal)
+
+    def hud(self, native: bool) -> str:
+        return f"Score {self.mine}-{self.theirs}/{self.goal}"
+
+
+RULES = {"A": Tally, "B": Milestones, "C": Duel, "D": Tally}
+
+
+def bound(pattern: str, p: ArcadeParams) -> tuple[float, float]:
+    """The lowest and highest return a preset's rule can pay."""
+    top = p.goal * p.unit
+    if pattern == "C":
+        return -top, top
+    return (p.death if pattern == "D" else 0.0), top
+
+
+class ArcadeTask(GlyphTask):
+    Params: ClassVar[type] = ArcadeParams
+    pattern: ClassVar[str] = "A"
+    default_max_turns = 200
+
+    def prompt_fields(self) -> dict:
+        p = self.params
+        return {**super().prompt_fields(), "unit": round(p.unit, 4), "lives_text":
+                "one life" if p.lives == 1 else f"{p.lives} lives"}
+
+    def start(self, rng: np.random.Generator) -> None:
+        """Call first in ``_setup``: the score rule, lives, the per-turn draws, the still rows."""
+        p = self.params
+        self.native = self.tier != "standard"
+        self.score = RULES[self.pattern](self, p.goal, p.unit)
+        self.lives = p.lives
+        self.draws = Draws(self.stream("arcade"))
+        self.tick = 0
+        self.still_version = 0            # bumped by set_still, for games caching rows over it
+        self._layers: dict = {}
+        self._layers_of = 0               # the still_version the remembered layers were drawn on
+        self.still = self._still()
+
+    def _still(self) -> list[str]:
+        """The background rows; empty cells by default."""
+        return [EMPTY * self.params.width] * self.params.height
+
+    def set_still(self, r: int, c: int, ch: str) -> None:
+        row = self.still[r]
+        self.still[r] = row[:c] + ch + row[c + 1:]
+        self.still_version += 1
+
+    def lose_life(self, why: str = "You lost a life.") -> bool:
+        """Take a life; True (and the episode ends lost, paying ``death`` in pattern D) when it
+        was the last, else ``_respawn()`` runs and False comes back."""
+        self.lives -= 1
+        if self.lives <= 0:
+            if self.pattern == "D":
+                self.reward(self.params.death)
+            self.say(why)
+            self.finish(won=False)
+            return True
+        self.say(f"{why} {self.lives} left.")
+        self._respawn()
+        return False
+
+    def _act(self, action: int) -> None:
+        self.tick += 1
+        self._play(action)
+
+    def _play(self, action: int) -> None:
+        """One tick of the game; time it by ``self.tick`` (a forfeit turn is no tick)."""
+        raise NotImplementedError
+
+    def _respawn(self) -> None:
+        """Put the player back after a life lost (games with lives override it)."""
+
+    def _sprites(self) -> Iterable[tuple[int, int, str]]:
+        """(row, col, glyph) of every mover, drawn in order (a list is fastest); keep it to the
+        few things that move, and draw blocks (formations, lanes) as whole rows in ``_rows``."""
+        return ()
+
+    def _extra_hud(self) -> str:
+        return ""
+
+    def _rows(self) -> list[str]:
+        """This turn's rows under the movers: the still rows (a copy), or rows that slide."""
+        return self.still[:]
+
+    def cached_rows(self, key, build) -> list[str]:
+        """A copy of the rows ``build()`` made for ``key`` (the state of the slow movers drawn
+        into whole rows: paddles, a formation), remembered (up to 256 keys) until the still
+        rows change."""
+        if self._layers_of != self.still_version or len(self._layers) >= 256:
+            self._layers, self._layers_of = {}, self.still_version
+        rows = self._layers.get(key)
+        if rows is None:
+            rows = self._layers[key] = build()
+        return rows[:]
+
+    def _grid(self) -> list[str]:
+        rows = self._rows()
+        h = len(rows)
+        for r, c, g in self._sprites():   # a few movers: slicing beats a row-to-list round trip
+            if 0 <= r < h:
+                line = rows[r]
+                if 0 <= c < len(line):
+                    rows[r] = line[:c] + g + line[c + 1:]
+        return rows
+
+    def _hud(self) -> str:
+        parts = [self.score.hud(self.native)]
+        if self.params.lives > 1:
+            parts.append(f"Lives {self.lives}")
+        extra = self._extra_hud()
+        if extra:
+            parts.append(extra)
+        return " | ".join(parts)
+
+
+def register_arcade(game: type, name: str, *, mini: dict, atari: dict) -> None:
+    """Register ``glyphbench/miniatari-<name>-v0`` (MiniAtari, standard) and
+    ``glyphbench/atari-<name>-v0`` (Atari, extended) from one game and two presets (each a dict
+    of parameters plus ``max_turns``). The mini preset's rule must keep the return in [-1, 1]."""
+    params = {k: v for k, v in mini.items() if k != "max_turns"}
+    lo, hi = bound(game.pattern, game.Params(**params))
+    if lo < -1 - EPS or hi > 1 + EPS:
+        raise ValueError(f"miniatari-{name}: its rule pays within [{lo}, {hi}], not [-1, 1]")
+    register_variants(game, "MiniAtari", {f"glyphbench/miniatari-{name}-v0": mini})
+    register_variants(game, "Atari", {f"glyphbench/atari-{name}-v0": atari}, tier="extended")
