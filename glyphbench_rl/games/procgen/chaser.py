@@ -133,8 +133,8 @@ class ProcgenChaser(ProcgenTask):
         if self.turn % 3 == 0:
             return
         rng = self.draws
-        dist = self.maps.from_(self.pos)
-        nbrs = self.maps.neighbours
+        maps, pos = self.maps, self.pos
+        nbrs = maps.neighbours
         for i, ghost in enumerate(self.ghosts):
             scared = self.scared[i]
             if scared and self.turn % 2:
@@ -142,10 +142,9 @@ class ProcgenChaser(ProcgenTask):
             options = nbrs[ghost]
             if rng.random() < self.params.randomness:
                 nxt = options[rng.below(len(options))]
-            elif scared:
-                nxt = max(options, key=dist.__getitem__)
-            else:
-                nxt = min(options, key=dist.__getitem__)
+            else:   # (the search from the player goes only as far as this ghost's options)
+                dist = maps.reaching(pos, options)
+                nxt = (max if scared else min)(options, key=dist.__getitem__)
             self.ghosts[i], self.moved[i] = nxt, (nxt[0] - ghost[0], nxt[1] - ghost[1])
 
 

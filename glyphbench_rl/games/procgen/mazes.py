@@ -5,6 +5,8 @@ source cell (chasers look them up every turn; the player revisits cells, so most
 
 from __future__ import annotations
 
+from typing import Sequence
+
 import numpy as np
 
 from ..common.grid import DELTAS, Board, carve_maze
@@ -43,21 +45,40 @@ class DistanceMaps:
         self.neighbours: dict[Cell, tuple[Cell, ...]] = {
             cell: tuple((cell[0] + dr, cell[1] + dc) for dr, dc in DELTAS
                         if (cell[0] + dr, cell[1] + dc) in open_) for cell in open_}
-        self._maps: dict[Cell, dict[Cell, int]] = {}
+        # source -> [distances so far, the BFS frontier, its distance]: a search is carried only
+        # as far as asked (a chaser needs its few neighbours, usually well inside the maze)
+        self._maps: dict[Cell, list] = {}
 
     def from_(self, source: Cell) -> dict[Cell, int]:
-        dist = self._maps.get(source)
-        if dist is None:
-            # breadth-first, a frontier at a time, over the neighbour table built once
-            nbrs, dist, frontier, d = self.neighbours, {source: 0}, [source], 0
-            while frontier:
-                d += 1
-                nxt = []
-                for cell in frontier:
-                    for n in nbrs[cell]:
-                        if n not in dist:
-                            dist[n] = d
-                            nxt.append(n)
-                frontier = nxt
-            self._maps[source] = dist
+        """Distances from ``source`` to every open cell reachable from it."""
+        return self.reaching(source, None)
+
+    def reaching(self, source: Cell, cells: Sequence[Cell] | None) -> dict[Cell, int]:
+        """Distances from ``source``, holding at least those to ``cells`` (all when None): the
+        breadth-first search is resumed a frontier at a time until they are all in it."""
+        entry = self._maps.get(source)
+        if entry is None:
+            entry = self._maps[source] = [{source: 0}, [source], 0]
+        dist, frontier, d = entry
+        if not frontier:
+            return dist
+        if cells is not None:
+            cells = [cell for cell in cells if cell not in dist]
+            if not cells:
+                return dist
+        nbrs = self.neighbours
+        while frontier:
+            d += 1
+            nxt = []
+            for cell in frontier:
+                for n in nbrs[cell]:
+                    if n not in dist:
+                        dist[n] = d
+                        nxt.append(n)
+            frontier = nxt
+            if cells is not None:
+                cells = [cell for cell in cells if cell not in dist]
+                if not cells:
+                    break
+        entry[1], entry[2] = frontier, d
         return dist
