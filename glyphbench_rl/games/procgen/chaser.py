@@ -143,8 +143,8 @@ class ProcgenChaser(ProcgenTask):
             if rng.random() < self.params.randomness:
                 nxt = options[rng.below(len(options))]
             else:   # (the search from the player goes only as far as this ghost's options)
-                dist = maps.reaching(pos, options)
-                nxt = (max if scared else min)(options, key=dist.__getitem__)
+                dist, w = maps.reaching(pos, options), maps.width   # (by flat index)
+                nxt = (max if scared else min)(options, key=lambda n: dist[n[0] * w + n[1]])
             self.ghosts[i], self.moved[i] = nxt, (nxt[0] - ghost[0], nxt[1] - ghost[1])
 
 
