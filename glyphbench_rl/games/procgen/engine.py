@@ -106,9 +106,10 @@ class ProcgenTask(GlyphTask):
         r, c = self.pos
         top, left = self._origin()
         bottom, right = top + self.view_h, left + self.view_w
-        seen = sorted((abs(mr - r) + abs(mc - c), mr - r, mc - c, ch, vr, vc)
-                      for ch, mr, mc, vr, vc in self._movers()
-                      if (vr or vc) and top <= mr < bottom and left <= mc < right)
+        seen = [(abs(mr - r) + abs(mc - c), mr - r, mc - c, ch, vr, vc)
+                for ch, mr, mc, vr, vc in self._movers()
+                if (vr or vc) and top <= mr < bottom and left <= mc < right]
+        seen.sort()                        # (a list sorted in place: quicker than sorted(gen))
         vel = self._velocity()
         text = "" if vel is None else "Vel " + velocity_text(*vel)
         if seen:
