@@ -70,9 +70,6 @@ class ProcgenChaser(ProcgenTask):
         self._lines = ["".join(row) for row in self.rows]
         self.timer = self.eaten = 0
         self.draws = Draws(self.stream("ghosts"))
-        # (player's cell, ghost's cell, scared) -> the ghost's step when it does not move at
-        # random: the maze is fixed, so each is worked out once an episode
-        self.chase: dict = {}
 
     def _rows(self) -> list[str]:
         return self._lines
@@ -135,22 +132,20 @@ class ProcgenChaser(ProcgenTask):
     def _move_ghosts(self) -> None:
         if self.turn % 3 == 0:
             return
-        rng, randomness = self.draws, self.params.randomness
-        maps, pos, chase = self.maps, self.pos, self.chase
-        nbrs = maps.neighbours
+        rng = self.draws
+        dist = self.maps.from_(self.pos)
+        nbrs = self.maps.neighbours
         for i, ghost in enumerate(self.ghosts):
             scared = self.scared[i]
             if scared and self.turn % 2:
                 continue
             options = nbrs[ghost]
-            if rng.random() < randomness:
+            if rng.random() < self.params.randomness:
                 nxt = options[rng.below(len(options))]
+            elif scared:
+                nxt = max(options, key=dist.__getitem__)
             else:
-                nxt = chase.get((pos, ghost, scared))
-                if nxt is None:   # (the search from the player goes only as far as the options)
-                    dist, w = maps.reaching(pos, options), maps.width   # (by flat index)
-                    nxt = chase[pos, ghost, scared] = (max if scared else min)(
-                        options, key=lambda n: dist[n[0] * w + n[1]])
+                nxt = min(options, key=dist.__getitem__)
             self.ghosts[i], self.moved[i] = nxt, (nxt[0] - ghost[0], nxt[1] - ghost[1])
 
 

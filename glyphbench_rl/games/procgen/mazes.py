@@ -5,8 +5,6 @@ source cell (chasers look them up every turn; the player revisits cells, so most
 
 from __future__ import annotations
 
-from typing import Sequence
-
 import numpy as np
 
 from ..common.grid import DELTAS, Board, carve_maze
@@ -45,54 +43,21 @@ class DistanceMaps:
         self.neighbours: dict[Cell, tuple[Cell, ...]] = {
             cell: tuple((cell[0] + dr, cell[1] + dc) for dr, dc in DELTAS
                         if (cell[0] + dr, cell[1] + dc) in open_) for cell in open_}
-        # cells by flat index r * width + c: a BFS over ints and a list of distances is about
-        # twice as fast as one over (row, column) tuples (a tuple is hashed at every look-up)
-        self.size = board.height * board.width
-        self._next: list[tuple[int, ...]] = [()] * self.size
-        for (r, c), cells in self.neighbours.items():
-            self._next[r * self.width + c] = tuple(nr * self.width + nc for nr, nc in cells)
-        # source -> [distances so far (-1: not yet), the BFS frontier, its distance]: a search is
-        # carried only as far as asked (a chaser needs its few neighbours, usually nearer)
-        self._maps: dict[int, list] = {}
+        self._maps: dict[Cell, dict[Cell, int]] = {}
 
     def from_(self, source: Cell) -> dict[Cell, int]:
-        """Distances from ``source`` to every open cell reachable from it."""
-        dist, w = self.reaching(source, None), self.width
-        return {cell: dist[cell[0] * w + cell[1]] for cell in self.neighbours
-                if dist[cell[0] * w + cell[1]] >= 0}
-
-    def reaching(self, source: Cell, cells: Sequence[Cell] | None) -> list[int]:
-        """Distances from ``source`` by flat index (``r * width + c``; -1 where not reached),
-        holding at least those to ``cells`` (every reachable cell when None): the breadth-first
-        search is resumed a frontier at a time until they are all in it."""
-        w = self.width
-        s = source[0] * w + source[1]
-        entry = self._maps.get(s)
-        if entry is None:
-            dist = [-1] * self.size
-            dist[s] = 0
-            entry = self._maps[s] = [dist, [s], 0]
-        dist, frontier, d = entry
-        if not frontier:
-            return dist
-        needed = None
-        if cells is not None:
-            needed = [i for i in (r * w + c for r, c in cells) if dist[i] < 0]
-            if not needed:
-                return dist
-        nbrs = self._next
-        while frontier:
-            d += 1
-            nxt = []
-            for i in frontier:
-                for n in nbrs[i]:
-                    if dist[n] < 0:
-                        dist[n] = d
-                        nxt.append(n)
-            frontier = nxt
-            if needed is not None:
-                needed = [i for i in needed if dist[i] < 0]
-                if not needed:
-                    break
-        entry[1], entry[2] = frontier, d
+        dist = self._maps.get(source)
+        if dist is None:
+            # breadth-first, a frontier at a time, over the neighbour table built once
+            nbrs, dist, frontier, d = self.neighbours, {source: 0}, [source], 0
+            while frontier:
+                d += 1
+                nxt = []
+                for cell in frontier:
+                    for n in nbrs[cell]:
+                        if n not in dist:
+                            dist[n] = d
+                            nxt.append(n)
+                frontier = nxt
+            self._maps[source] = dist
         return dist
