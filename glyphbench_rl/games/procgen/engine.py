@@ -52,6 +52,7 @@ class ProcgenTask(GlyphTask):
     facing: int
     _origin_key: tuple | None = None    # what the view origin below was worked out for
     _origin_at: Cell = (0, 0)
+    _score: tuple = (None, "")          # the return last shown and its HUD text
 
     def __init_subclass__(cls, **kwargs) -> None:
         super().__init_subclass__(**kwargs)
@@ -138,10 +139,18 @@ class ProcgenTask(GlyphTask):
         return view
 
     def _hud(self) -> str:
-        parts = [f"Score {self.episode_return:.2f}", self._extras()]
+        score = self.episode_return
+        if score is not self._score[0]:   # (the same float object: the same text)
+            self._score = score, f"Score {score:.2f}"
+        text = self._score[1]
+        extras = self._extras()
+        if extras:
+            text += " | " + extras
         if self.shows_motion:
-            parts.append(self._motion())
-        return " | ".join(p for p in parts if p)
+            motion = self._motion()
+            if motion:
+                text += " | " + motion
+        return text
 
 
 @lru_cache(maxsize=None)
