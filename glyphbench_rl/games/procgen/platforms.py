@@ -329,10 +329,11 @@ class PlatformTask(ProcgenTask):
                     return
         if self.stars:
             self._fly()
-        rows = (start[0], r, *(cell[0] for cell in passed))
-        for _, row, col, before, _ in self.enemies:
-            if row in rows and caught(start, self.pos, passed, (row, before), (row, col)):
-                return self._die("An enemy got you.")
+        if self.enemies:                # (rows the player was on: only enemies there can touch)
+            rows = {start[0], r, *[cell[0] for cell in passed]}
+            for _, row, col, before, _ in self.enemies:
+                if row in rows and caught(start, self.pos, passed, (row, before), (row, col)):
+                    return self._die("An enemy got you.")
 
     def _touch(self, cell: tuple[int, int], ch: str) -> None:
         """The player entered a cell holding ``ch`` (a pickup or the goal)."""
@@ -407,15 +408,17 @@ class PlatformTask(ProcgenTask):
         engine's)."""
         top, left = self._origin()
         key = (top, left, self._phase)
-        view = None if self.stars else self._views.get(key)
+        view = self._views.get(key)       # the enemies drawn: once per place and phase
         if view is None:
-            view = self._draw(top, left, self._sprites())
-            if not self.stars:                    # without shuriken, a view per phase and place
-                if len(self._views) >= VIEWS_KEPT:
-                    self._views.clear()
-                self._views[key] = view
+            view = self._draw(top, left, [(r, c, ENEMY) for _, r, c, _, _ in self.enemies])
+            if len(self._views) >= VIEWS_KEPT:
+                self._views.clear()
+            self._views[key] = view
+        if self.stars:                    # then shuriken, then the player, as _sprites orders
+            view = self._draw_on(view, top, left, [(r, c, SHURIKEN) for r, c, _ in self.stars])
+        else:
+            view = list(view)
         r, k = self.pos[0] - top, self.pos[1] - left   # (the player is always in view)
-        view = list(view)
         row = view[r]
         view[r] = row[:k] + ARROWS[self.facing] + row[k + 1:]
         return view
@@ -425,7 +428,12 @@ class PlatformTask(ProcgenTask):
         bottom, right = top + self.view_h, left + self.view_w
         if self._still[0] != (top, left):         # the still rows in view, cut once per place
             self._still = (top, left), [row[left:right] for row in self._lines[top:bottom]]
-        view = list(self._still[1])
+        return self._draw_on(self._still[1], top, left, sprites)
+
+    def _draw_on(self, view: list[str], top: int, left: int, sprites) -> list[str]:
+        """A copy of ``view`` (whose top-left world cell is top, left) with ``sprites`` drawn."""
+        bottom, right = top + self.view_h, left + self.view_w
+        view = list(view)
         for r, c, ch in sprites:
             if top <= r < bottom and left <= c < right:
                 row, k = view[r - top], c - left
