@@ -20,7 +20,7 @@ from typing import ClassVar, Iterable, Sequence
 
 from ...core import GlyphTask
 from ...core.actions import ActionSet
-from ..common.view import overlay, window
+from ..common.view import window
 
 Cell = tuple[int, int]
 OPEN = "."          # an open cell in every Procgen game
@@ -50,6 +50,9 @@ class ProcgenTask(GlyphTask):
 
     pos: Cell
     facing: int
+    _origin_key: tuple | None = None    # what the view origin below was worked out for
+    _origin_at: Cell = (0, 0)
+    _score: tuple = (None, "")          # the return last shown and its HUD text
 
     def __init_subclass__(cls, **kwargs) -> None:
         super().__init_subclass__(**kwargs)
@@ -91,18 +94,23 @@ class ProcgenTask(GlyphTask):
     def _origin(self) -> Cell:
         """The view's top-left world cell: centred on the player, clamped to the world."""
         rows = self._rows()
-        r, c = self.pos
-        return (min(max(r - self.view_h // 2, 0), max(len(rows) - self.view_h, 0)),
+        key = (self.pos, len(rows), len(rows[0]), self.view_h, self.view_w)
+        if key != self._origin_key:       # (asked twice a turn, by _grid and _motion)
+            r, c = self.pos
+            self._origin_key, self._origin_at = key, (
+                min(max(r - self.view_h // 2, 0), max(len(rows) - self.view_h, 0)),
                 min(max(c - self.view_w // 2, 0), max(len(rows[0]) - self.view_w, 0)))
+        return self._origin_at
 
     def _motion(self) -> str:
         """``Vel ... | Moving: ...`` for the things inside the current view."""
         r, c = self.pos
         top, left = self._origin()
         bottom, right = top + self.view_h, left + self.view_w
-        seen = sorted((abs(mr - r) + abs(mc - c), mr - r, mc - c, ch, vr, vc)
-                      for ch, mr, mc, vr, vc in self._movers()
-                      if (vr or vc) and top <= mr < bottom and left <= mc < right)
+        seen = [(abs(mr - r) + abs(mc - c), mr - r, mc - c, ch, vr, vc)
+                for ch, mr, mc, vr, vc in self._movers()
+                if (vr or vc) and top <= mr < bottom and left <= mc < right]
+        seen.sort()                        # (a list sorted in place: quicker than sorted(gen))
         vel = self._velocity()
         text = "" if vel is None else "Vel " + velocity_text(*vel)
         if seen:
@@ -120,16 +128,29 @@ class ProcgenTask(GlyphTask):
     def _grid(self) -> list[str]:
         top, left = self._origin()
         view = window(self._rows(), top, left, self.view_h, self.view_w)
+        h, w = len(view), len(view[0]) if view else 0
         r, c = self.pos
         for sr, sc, ch in (*self._sprites(), (r, c, ARROWS[self.facing])):
-            overlay(view, sr - top, sc - left, ch)
+            sr -= top           # (view.overlay, inlined: a few calls a turn in every game)
+            sc -= left
+            if 0 <= sr < h and 0 <= sc < w:
+                row = view[sr]
+                view[sr] = row[:sc] + ch + row[sc + 1:]
         return view
 
     def _hud(self) -> str:
-        parts = [f"Score {self.episode_return:.2f}", self._extras()]
+        score = self.episode_return
+        if score is not self._score[0]:   # (the same float object: the same text)
+            self._score = score, f"Score {score:.2f}"
+        text = self._score[1]
+        extras = self._extras()
+        if extras:
+            text += " | " + extras
         if self.shows_motion:
-            parts.append(self._motion())
-        return " | ".join(p for p in parts if p)
+            motion = self._motion()
+            if motion:
+                text += " | " + motion
+        return text
 
 
 @lru_cache(maxsize=None)

@@ -34,6 +34,7 @@ SOLID = frozenset(GROUND + PLATFORM + BREAKABLE)
 JUMP_SPEED, GRAVITY, MAX_FALL = 2, 1, 2        # rows per turn, positive = down
 TRIES = 40                                     # level draws before the game's easy level
 SHURIKEN_SPEED = 2                             # columns per turn
+VIEWS_KEPT = 4096                              # views (and HUD texts) kept per level, at most
 
 VEL = {(vy, vx): "Vel " + velocity_text(vy, vx) for vy in range(-JUMP_SPEED, MAX_FALL + 1)
        for vx in (-1, 0, 1)}
@@ -238,6 +239,7 @@ class PlatformTask(ProcgenTask):
             self._memo: dict = {}            # (state, action) -> advance(...) on this level
             self._still: tuple = (None, [])  # (view origin, the still rows there)
             self._at: tuple = (None, (0, 0))  # (player's cell, view origin)
+            self._forget()
             if self.goals and (self.proven or self.solution() is not None):
                 break
         else:
@@ -246,21 +248,37 @@ class PlatformTask(ProcgenTask):
         self.clock = 0
         self.heading, self.vx, self.kills = 1, 0, 0
         self.stars: list[list[int]] = []      # shuriken in flight: [row, col, direction]
-        self._tracks: list[tuple] = []      # per patrol: its entries over its period
+        self._tracks: list[tuple] | None = None   # per patrol: its entries over its period
         self._place_enemies()
 
     def _place_enemies(self) -> None:
         """The live enemies at the clock, once a turn: (index, row, column, column a turn ago,
         next step). Each patrol's entries over its period are worked out once."""
-        if len(self._tracks) != len(self.patrols):
+        if self._tracks is None or len(self._tracks) != len(self.patrols):   # (tests add some)
             self._tracks = []
+            self._forget()
             for i, p in enumerate(self.patrols):
                 n = max(1, 2 * (p[2] - p[1]))
                 cols = [patrol_col(p, t) for t in range(n)]
                 self._tracks.append(tuple((i, p[0], cols[k], cols[k - 1], cols[(k + 1) % n] - cols[k])
                                           for k in range(n)))
-        t, alive = self.clock, self.alive
-        self.enemies = [track[t % len(track)] for track in self._tracks if alive[track[0][0]]]
+            self._period = lcm(1, *(len(track) for track in self._tracks))
+        phase = self.clock % self._period
+        enemies = self._enemies_at.get(phase)
+        if enemies is None:
+            t, alive = self.clock, self.alive
+            enemies = self._enemies_at[phase] = [track[t % len(track)] for track in self._tracks
+                                                 if alive[track[0][0]]]
+        self.enemies = enemies           # (shared with the cache: never changed in place)
+        self._phase = phase
+
+    def _forget(self) -> None:
+        """Drop what is worked out per turn of the patrols' period: the enemies, the views with
+        them drawn, the HUD's movers. The enemies are a pure function of the clock modulo the
+        period (while none dies), so each is worked out once per phase (and view or place)."""
+        self._enemies_at: dict = {}          # phase -> live enemies
+        self._views: dict = {}               # (top, left, phase) -> view rows with enemies
+        self._moving: dict = {}              # (player's cell, phase) -> " | Moving: ..." or ""
 
     def solution(self) -> list[int] | None:
         """Actions that win from here (enemies included), by ``search``; None if none found."""
@@ -275,6 +293,7 @@ class PlatformTask(ProcgenTask):
         self.rows[r][c] = ch
         self._lines[r] = "".join(self.rows[r])
         self._still = (None, [])
+        self._views.clear()
 
     # -- turn -------------------------------------------------------------------------------------
     def _act(self, action: int) -> None:
@@ -310,10 +329,11 @@ class PlatformTask(ProcgenTask):
                     return
         if self.stars:
             self._fly()
-        rows = (start[0], r, *(cell[0] for cell in passed))
-        for _, row, col, before, _ in self.enemies:
-            if row in rows and caught(start, self.pos, passed, (row, before), (row, col)):
-                return self._die("An enemy got you.")
+        if self.enemies:                # (rows the player was on: only enemies there can touch)
+            rows = {start[0], r, *[cell[0] for cell in passed]}
+            for _, row, col, before, _ in self.enemies:
+                if row in rows and caught(start, self.pos, passed, (row, before), (row, col)):
+                    return self._die("An enemy got you.")
 
     def _touch(self, cell: tuple[int, int], ch: str) -> None:
         """The player entered a cell holding ``ch`` (a pickup or the goal)."""
@@ -346,7 +366,8 @@ class PlatformTask(ProcgenTask):
                 hit = next((e for e in self.enemies if e[1] == r and c in (e[2], e[3])), None)
                 if hit is not None:
                     self.alive[hit[0]] = False
-                    self.enemies.remove(hit)
+                    self.enemies = [e for e in self.enemies if e is not hit]
+                    self._forget()               # the patrols' cycle changed
                     self.kills += 1
                     self._kill()
                     break
@@ -386,11 +407,34 @@ class PlatformTask(ProcgenTask):
         """The engine's view, drawing only the sprites inside it (a test holds it to the
         engine's)."""
         top, left = self._origin()
+        key = (top, left, self._phase)
+        view = self._views.get(key)       # the enemies drawn: once per place and phase
+        if view is None:
+            view = self._draw(top, left, [(r, c, ENEMY) for _, r, c, _, _ in self.enemies])
+            if len(self._views) >= VIEWS_KEPT:
+                self._views.clear()
+            self._views[key] = view
+        if self.stars:                    # then shuriken, then the player, as _sprites orders
+            view = self._draw_on(view, top, left, [(r, c, SHURIKEN) for r, c, _ in self.stars])
+        else:
+            view = list(view)
+        r, k = self.pos[0] - top, self.pos[1] - left   # (the player is always in view)
+        row = view[r]
+        view[r] = row[:k] + ARROWS[self.facing] + row[k + 1:]
+        return view
+
+    def _draw(self, top: int, left: int, sprites) -> list[str]:
+        """The still rows in view with ``sprites`` drawn on them (those inside it)."""
         bottom, right = top + self.view_h, left + self.view_w
         if self._still[0] != (top, left):         # the still rows in view, cut once per place
             self._still = (top, left), [row[left:right] for row in self._lines[top:bottom]]
-        view = list(self._still[1])
-        for r, c, ch in (*self._sprites(), (*self.pos, ARROWS[self.facing])):
+        return self._draw_on(self._still[1], top, left, sprites)
+
+    def _draw_on(self, view: list[str], top: int, left: int, sprites) -> list[str]:
+        """A copy of ``view`` (whose top-left world cell is top, left) with ``sprites`` drawn."""
+        bottom, right = top + self.view_h, left + self.view_w
+        view = list(view)
+        for r, c, ch in sprites:
             if top <= r < bottom and left <= c < right:
                 row, k = view[r - top], c - left
                 view[r - top] = row[:k] + ch + row[k + 1:]
@@ -399,10 +443,22 @@ class PlatformTask(ProcgenTask):
     def _motion(self) -> str:
         """The engine's ``Vel ... | Moving: ...`` text, made quicker for things that move along
         rows only (a test holds it to the engine's)."""
+        text = VEL[self.state[2], self.vx]
+        if self.stars:
+            return text + self._moving_text()
+        key = (self.pos, self._phase)             # without shuriken: once per place and phase
+        moving = self._moving.get(key)
+        if moving is None:
+            if len(self._moving) >= VIEWS_KEPT:
+                self._moving.clear()
+            moving = self._moving[key] = self._moving_text()
+        return text + moving
+
+    def _moving_text(self) -> str:
+        """`` | Moving: ...`` for the movers in view, or ""."""
         r, c = self.pos
         top, left = self._origin()
         bottom, right = top + self.view_h, left + self.view_w
-        text = VEL[self.state[2], self.vx]
         seen = [(abs(mr - r) + abs(mc - c), mr - r, mc - c, ENEMY, vc)
                 for _, mr, mc, _, vc in self.enemies
                 if vc and top <= mr < bottom and left <= mc < right]
@@ -411,7 +467,7 @@ class PlatformTask(ProcgenTask):
                      for mr, mc, d in self.stars if top <= mr < bottom and left <= mc < right]
         seen.sort()
         if not seen:
-            return text
+            return ""
         names = _MOVER_TEXT
         out = []
         for _, dr, dc, ch, vc in seen[:MAX_MOVERS]:
@@ -420,7 +476,7 @@ class PlatformTask(ProcgenTask):
             if name is None:
                 name = names[key] = f"{ch}@{dr:+d},{dc:+d}{STEP[vc]}"
             out.append(name)
-        return text + " | Moving: " + " ".join(out)
+        return " | Moving: " + " ".join(out)
 
     def _movers(self):
         out = [(ENEMY, r, c, 0, d) for _, r, c, _, d in self.enemies]

@@ -3,8 +3,8 @@ import pytest
 
 import glyphbench_rl
 from glyphbench_rl.games.procgen.engine import ProcgenTask
-from glyphbench_rl.games.procgen.platforms import (BREAKABLE, GROUND, OPEN, advance, jump_arc,
-                                                   patrol_col, search)
+from glyphbench_rl.games.procgen.platforms import (BREAKABLE, GROUND, OPEN, THROW, advance,
+                                                   jump_arc, patrol_col, search)
 
 GAMES = ["coinrun", "jumper", "ninja", "climber"]
 
@@ -238,6 +238,22 @@ def test_quick_view_is_the_engines(game):
             task.reset(seed=int(rng.integers(100)))
         task.step(int(rng.integers(task.action_space.n)))
         assert task._grid() == ProcgenTask._grid(task)
+
+
+def test_views_kept_per_patrol_phase_follow_kills_and_broken_walls():
+    """The views and HUD movers kept per place and patrol phase are dropped when an enemy dies
+    or a tile changes: throwing often, they stay the engine's at every turn."""
+    rng = np.random.default_rng(5)
+    task, kills, breaks = make("ninja"), 0, 0
+    for _ in range(1500):
+        if task.done:
+            kills += task.kills
+            task.reset(seed=int(rng.integers(1000)))
+        task.step(THROW if rng.random() < 0.4 else int(rng.integers(6)))
+        breaks += "broke a wall" in task.frame.message
+        assert task._grid() == ProcgenTask._grid(task)
+        assert task._motion() == ProcgenTask._motion(task)
+    assert kills + task.kills > 0 and breaks > 0
 
 
 @pytest.mark.parametrize("game, hazard", [("coinrun", "S"), ("jumper", "^")])
