@@ -13,7 +13,7 @@ import numpy as np
 from ...core import register_variants
 from ...core.params import param
 from .engine import OPEN, PLAYER_GLYPHS
-from .platforms import ENEMY, GROUND, PLATFORM, PlatformTask, flats, ground_level
+from .platforms import ENEMY, GROUND, PLATFORM, PlatformTask, flats, ground_level, ground_patrols
 
 COIN, SAW = "$", "S"
 HEIGHT = 12
@@ -67,14 +67,7 @@ class ProcgenCoinRun(PlatformTask):
         for i in rng.choice(len(surface), min(p.saws, len(surface)), replace=False) if not easy else ():
             r, c = surface[int(i)]
             rows[r][c + 1] = SAW
-        self.patrols = []
-        span = int(rng.integers(2, 4))
-        stretches = [(c, t) for c, t in flats(tops, span + 1, 8, width - 7)
-                     if all(rows[t - 1][c + i] == OPEN for i in range(span + 1))]
-        for i in rng.choice(len(stretches), min(p.enemies, len(stretches)), replace=False) if not easy else ():
-            c, t = stretches[int(i)]
-            if all(abs(c - q[1]) > span + 1 for q in self.patrols):
-                self.patrols.append((t - 1, c, c + span, int(rng.integers(2 * span))))
+        self.patrols = ground_patrols(rng, rows, tops, None if easy else p.enemies, 8, width - 7)
         self.start = (tops[2] - 1, 2)
         coin = (tops[width - 3] - 1, width - 3)
         rows[coin[0]][coin[1]] = COIN

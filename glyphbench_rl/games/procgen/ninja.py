@@ -16,7 +16,7 @@ from ...core.params import param
 from ..common.palette import GOAL
 from .engine import OPEN, PLAYER_GLYPHS
 from .platforms import (BREAKABLE, ENEMY, GROUND, PLATFORM, SHURIKEN, SHURIKEN_SPEED, THROW_ACTIONS,
-                        PlatformTask, flats, ground_level)
+                        PlatformTask, flats, ground_level, ground_patrols)
 
 HEIGHT = 12
 KILLS_PAID = 3
@@ -76,15 +76,7 @@ class ProcgenNinja(PlatformTask):
             c, t = spots[i]
             if rows[t - 1][c + 1] == OPEN and rows[t - 2][c + 1] == OPEN:
                 rows[t - 1][c + 1] = rows[t - 2][c + 1] = BREAKABLE
-        self.patrols = []
-        span = int(rng.integers(2, 4))
-        stretches = [(c, t) for c, t in flats(tops, span + 1, 8, w - 6)
-                     if all(rows[t - 1][c + i] == OPEN for i in range(span + 1))]
-        picks = [] if easy else rng.choice(len(stretches), min(p.enemies, len(stretches)), replace=False).tolist()
-        for i in picks:
-            c, t = stretches[i]
-            if all(abs(c - q[1]) > span + 1 for q in self.patrols):
-                self.patrols.append((t - 1, c, c + span, int(rng.integers(2 * span))))
+        self.patrols = ground_patrols(rng, rows, tops, None if easy else p.enemies, 8, w - 6)
         self.start = (tops[2] - 1, 2)
         goal = (tops[w - 2] - 1, w - 2)
         rows[goal[0]][goal[1]] = GOAL

@@ -523,3 +523,21 @@ def flats(tops: Sequence[int | None], length: int, lo: int, hi: int) -> list[tup
         if t is not None and all(tops[c + i] == t for i in range(length)):
             out.append((c, t))
     return out
+
+
+def ground_patrols(rng: np.random.Generator, rows: Sequence[Sequence[str]],
+                   tops: Sequence[int | None], count: int | None, lo: int, hi: int) -> list[Patrol]:
+    """Enemies patrolling open stretches of flat ground between columns ``lo`` and ``hi``: one
+    span (2 or 3 columns) for the level, up to ``count`` stretches drawn, each kept only if it
+    is clear of the ones before; ``count`` None draws none (a game's easy level)."""
+    span = int(rng.integers(2, 4))
+    stretches = [(c, t) for c, t in flats(tops, span + 1, lo, hi)
+                 if all(rows[t - 1][c + i] == OPEN for i in range(span + 1))]
+    patrols: list[Patrol] = []
+    if count is None:
+        return patrols
+    for i in rng.choice(len(stretches), min(count, len(stretches)), replace=False).tolist():
+        c, t = stretches[i]
+        if all(abs(c - q[1]) > span + 1 for q in patrols):
+            patrols.append((t - 1, c, c + span, int(rng.integers(2 * span))))
+    return patrols
