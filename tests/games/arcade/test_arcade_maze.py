@@ -1,0 +1,144 @@
+"""Maze chase / collect and lane hopping arcade games: scripted wins and losses on the MiniAtari
+presets, a scoring scripted policy on the Atari presets, and the families' core mechanics."""
+
+from __future__ import annotations
+
+from collections import deque
+
+import pytest
+
+from glyphbench_rl import make
+from glyphbench_rl.games.arcade.chase import CHASE, STEPS, lattice, loop
+
+
+def bfs_step(task, goal, danger=frozenset()):
+    """The first action of a shortest path over open cells (avoiding ``danger``) to a cell where
+    ``goal(r, c)``, or None."""
+    start = (task.r, task.c)
+    seen = {start: None}
+    queue = deque([start])
+    while queue:
+        cell = queue.popleft()
+        if cell != start and goal(*cell):
+            while seen[cell] != start:
+                cell = seen[cell]
+            d = (cell[0] - start[0], cell[1] - start[1])
+            return STEPS.index(d)
+        for dr, dc in STEPS[1:]:
+            nxt = (cell[0] + dr, cell[1] + dc)
+            if nxt not in seen and nxt not in danger and task.open(*nxt):
+                seen[nxt] = cell
+                queue.append(nxt)
+    return None
+
+
+def danger(task, reach=1):
+    out = set()
+    for g in task.ghosts:
+        if task.tick + 1 < task.scared_until and g.data[0] == CHASE:
+            continue
+        for dr in range(-reach, reach + 1):
+            for dc in range(-reach, reach + 1):
+                if abs(dr) + abs(dc) <= reach:
+                    out.add((g.r + dr, g.c + dc))
+    return out
+
+
+def flee(task):
+    def score(a):
+        dr, dc = STEPS[a]
+        r, c = task.r + dr, task.c + dc
+        if not task.open(r, c):
+            return -1
+        return min((abs(g.r - r) + abs(g.c - c) for g in task.ghosts), default=0)
+    return max(range(5), key=score)
+
+
+def collector(goal, reach=1):
+    def policy(task):
+        a = bfs_step(task, goal, danger(task, reach))
+        return flee(task) if a is None else a
+    return policy
+
+
+def hunter(task):
+    """Walk straight at the nearest ghost."""
+    a = bfs_step(task, lambda r, c: any((g.r, g.c) == (r, c) for g in task.ghosts))
+    return 0 if a is None else a
+
+
+def play(task_id, policy, seed, **kw):
+    task = make(task_id, **kw)
+    task.reset(seed=seed)
+    total = 0.0
+    while not task.done:
+        _, r, term, trunc, _ = task.step(policy(task))
+        total += r
+    return task, total
+
+
+def mini(game):
+    return f"glyphbench/miniatari-{game}-v0"
+
+
+def atari(game):
+    return f"glyphbench/atari-{game}-v0"
+
+
+# --- the chase engine ---------------------------------------------------------------------------
+
+def test_lattice_and_loop_shapes():
+    rows = lattice(7, 7, 1)
+    assert rows[0] == "=======" and rows[1] == "=.....=" and rows[2] == "=.=.=.="
+    assert loop(1, 1, 3, 4)[:5] == [(1, 1), (1, 2), (1, 3), (1, 4), (2, 4)] and len(loop(1, 1, 3, 4)) == 10
+
+
+def test_ghosts_close_in_and_never_reverse_in_a_corridor():
+    task = make(mini("mspacman"), chance=1.0, scatter=0)
+    task.reset(seed=0)
+    g = task.ghosts[0]
+    far = abs(g.r - task.r) + abs(g.c - task.c)
+    for _ in range(task.params.release + 8):
+        before = (g.dr, g.dc)
+        task.step("NOOP")
+        if task.done:
+            break
+        assert (g.dr, g.dc) != (-before[0], -before[1]) or before == (0, 0)
+    assert task.done or abs(g.r - task.r) + abs(g.c - task.c) < far
+
+
+def test_power_pellet_scares_ghosts_and_a_scared_ghost_is_eaten():
+    task = make(mini("mspacman"))
+    task.reset(seed=0)
+    task.frighten()
+    g = task.ghosts[0]
+    assert task._sprites()[0][2] == "g"
+    g.r, g.c = task.r, task.c
+    assert task._touch() is False and not task.done and (g.r, g.c) == g.data[2][:2]
+
+
+# --- games ---------------------------------------------------------------------------------------
+
+def dots(task):
+    return lambda r, c: task.still[r][c] in ".o"
+
+
+WIN_SEEDS = {"mspacman": (0, 1)}
+
+
+def test_mspacman_win():
+    for seed in WIN_SEEDS["mspacman"]:
+        task, total = play(mini("mspacman"), lambda tk: collector(dots(tk))(tk), seed)
+        assert task.won is True and total == pytest.approx(1.0), seed
+
+
+@pytest.mark.parametrize("game", ["mspacman"])
+@pytest.mark.parametrize("seed", [0, 1])
+def test_mini_loss_walking_into_a_ghost(game, seed):
+    task, total = play(mini(game), hunter, seed)
+    assert task.won is False and total < 0
+
+
+def test_mspacman_atari_scores():
+    task, total = play(atari("mspacman"), lambda tk: collector(dots(tk))(tk), 0)
+    assert total > 0 and task.score.done > 0
