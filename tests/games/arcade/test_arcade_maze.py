@@ -119,26 +119,29 @@ def test_power_pellet_scares_ghosts_and_a_scared_ghost_is_eaten():
 
 # --- games ---------------------------------------------------------------------------------------
 
-def dots(task):
-    return lambda r, c: task.still[r][c] in ".o"
+def tiles(glyphs):
+    return lambda task: collector(lambda r, c: task.still[r][c] in glyphs)(task)
 
 
-WIN_SEEDS = {"mspacman": (0, 1)}
+WINS = {"mspacman": (tiles(".o"), (0, 1)), "amidar": (tiles("+"), (0, 1))}
 
 
-def test_mspacman_win():
-    for seed in WIN_SEEDS["mspacman"]:
-        task, total = play(mini("mspacman"), lambda tk: collector(dots(tk))(tk), seed)
+@pytest.mark.parametrize("game", sorted(WINS))
+def test_mini_win(game):
+    policy, seeds = WINS[game]
+    for seed in seeds:
+        task, total = play(mini(game), policy, seed)
         assert task.won is True and total == pytest.approx(1.0), seed
 
 
-@pytest.mark.parametrize("game", ["mspacman"])
+@pytest.mark.parametrize("game", sorted(WINS))
+def test_atari_scores(game):
+    task, total = play(atari(game), WINS[game][0], 0)
+    assert total > 0 and task.score.done > 0
+
+
+@pytest.mark.parametrize("game", ["mspacman", "amidar"])
 @pytest.mark.parametrize("seed", [0, 1])
 def test_mini_loss_walking_into_a_ghost(game, seed):
     task, total = play(mini(game), hunter, seed)
     assert task.won is False and total < 0
-
-
-def test_mspacman_atari_scores():
-    task, total = play(atari("mspacman"), lambda tk: collector(dots(tk))(tk), 0)
-    assert total > 0 and task.score.done > 0
