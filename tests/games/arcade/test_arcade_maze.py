@@ -123,7 +123,11 @@ def tiles(glyphs):
     return lambda task: collector(lambda r, c: task.still[r][c] in glyphs)(task)
 
 
-WINS = {"mspacman": (tiles(".o"), (0, 1)), "amidar": (tiles("+"), (0, 1))}
+def robber(task):
+    return collector(lambda r, c: (r, c) == task.bank)(task)
+
+
+WINS = {"mspacman": (tiles(".o"), (0, 1)), "amidar": (tiles("+"), (0, 1)), "bankheist": (robber, (0, 1))}
 
 
 @pytest.mark.parametrize("game", sorted(WINS))
@@ -140,8 +144,24 @@ def test_atari_scores(game):
     assert total > 0 and task.score.done > 0
 
 
-@pytest.mark.parametrize("game", ["mspacman", "amidar"])
+@pytest.mark.parametrize("game", ["mspacman", "amidar", "bankheist"])
 @pytest.mark.parametrize("seed", [0, 1])
 def test_mini_loss_walking_into_a_ghost(game, seed):
     task, total = play(mini(game), hunter, seed)
     assert task.won is False and total < 0
+
+
+def test_bankheist_dynamite_blows_a_cop_back_and_gas_runs_out():
+    task = make(atari("bankheist"), release=500)      # the police stay put
+    task.reset(seed=0)
+    cop = task.ghosts[0]
+    task.step("FIRE")
+    cop.r, cop.c = task.bomb[0], task.bomb[1] + 1
+    for _ in range(task.params.fuse - 1):
+        task.step("NOOP")
+        assert (cop.r, cop.c) != cop.data[2][:2]
+    task.step("NOOP")
+    assert (cop.r, cop.c) == cop.data[2][:2] and task.lives == 2      # blown back; you were beside it
+    task.tank.left = 1
+    task.step("NOOP")
+    assert task.lives == 1 and task.tank.left == task.params.gas
