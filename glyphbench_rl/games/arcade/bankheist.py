@@ -21,7 +21,7 @@ FIRE = 5
 
 @dataclass(frozen=True)
 class BankHeistParams(ChaseParams):
-    width: int = param(15, 6, 60)
+    width: int = param(12, 6, 60)
     height: int = param(9, 6, 40)
     goal: int = param(3, 1, 1000)
     unit: float = param(1 / 3, 0, 10)

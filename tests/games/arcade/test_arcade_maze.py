@@ -127,7 +127,7 @@ def robber(task):
     return collector(lambda r, c: (r, c) == task.bank)(task)
 
 
-WINS = {"mspacman": (tiles(".o"), (0, 1)), "amidar": (tiles("+"), (0, 1)), "bankheist": (robber, (0, 1))}
+WINS = {"mspacman": (tiles(".o"), (0, 1)), "amidar": (tiles("+"), (0, 1)), "bankheist": (robber, (0, 2))}
 
 
 @pytest.mark.parametrize("game", sorted(WINS))
