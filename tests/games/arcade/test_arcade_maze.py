@@ -152,7 +152,30 @@ def lyre_seeker(task):
     return 1 if t.c < task.c else 2 if t.c > task.c else 0
 
 
-WINS = {"asterix": (gatherer, (0, 1)), "mspacman": (tiles(".o"), (0, 1)), "amidar": (tiles("+"), (0, 1)), "bankheist": (robber, (0, 2))}
+def frost_next(task, action):
+    """Frostbite: where ``action`` puts you next turn and whether you stand there."""
+    p, t = task.params, task.tick + 1
+    dr, dc = ((0, 0), (0, -1), (0, 1), (-2, 0), (2, 0))[action]
+    r, c = task.r + dr, (task.c + task.drift.carry(task.r, t) + dc) % p.width
+    if not 0 <= r < p.height:
+        r, c = task.r, (task.c + task.drift.carry(task.r, t)) % p.width
+    return r, r == 0 or task.drift.solid(r, c, t)
+
+
+def hopper(task):
+    for a in (4, 3):
+        r, safe = frost_next(task, a)
+        if safe and r != task.r and r != 0 and r not in task.blue:
+            return a
+    return 0 if frost_next(task, 0)[1] else 3
+
+
+def diver(task):
+    r, safe = frost_next(task, 4)
+    return 0 if safe else 4
+
+
+WINS = {"frostbite": (hopper, (0, 1)), "asterix": (gatherer, (0, 1)), "mspacman": (tiles(".o"), (0, 1)), "amidar": (tiles("+"), (0, 1)), "bankheist": (robber, (0, 2))}
 
 
 @pytest.mark.parametrize("game", sorted(WINS))
@@ -169,14 +192,14 @@ def test_atari_scores(game):
     assert total > 0 and task.score.done > 0
 
 
-LOSERS = {"mspacman": hunter, "amidar": hunter, "bankheist": hunter, "asterix": lyre_seeker}
+LOSERS = {"frostbite": diver, "mspacman": hunter, "amidar": hunter, "bankheist": hunter, "asterix": lyre_seeker}
 
 
 @pytest.mark.parametrize("game", sorted(LOSERS))
 @pytest.mark.parametrize("seed", [0, 1])
 def test_mini_loss(game, seed):
     task, total = play(mini(game), LOSERS[game], seed)
-    assert task.won is False and total < 0
+    assert task.won is False and (total == 0 if task.pattern == "A" else total < 0)
 
 
 def test_bankheist_dynamite_blows_a_cop_back_and_gas_runs_out():
