@@ -12,6 +12,6 @@ Engine-level modules, which the games import (and nothing else of the family):
   countdowns (fuel, oxygen, clocks).
 """
 
-from . import amidar, asterix, bankheist, freeway, frostbite, mspacman, pong, qbert, spaceinvaders
+from . import amidar, asterix, bankheist, freeway, frostbite, kangaroo, mspacman, pong, qbert, spaceinvaders
 
-__all__ = ["amidar", "asterix", "bankheist", "freeway", "frostbite", "mspacman", "pong", "qbert", "spaceinvaders"]
+__all__ = ["amidar", "asterix", "bankheist", "freeway", "frostbite", "kangaroo", "mspacman", "pong", "qbert", "spaceinvaders"]

@@ -196,7 +196,41 @@ def painter(task):
     return 0
 
 
-WINS = {"qbert": (painter, (0, 1)), "frostbite": (hopper, (0, 1)), "asterix": (gatherer, (0, 1)), "mspacman": (tiles(".o"), (0, 1)), "amidar": (tiles("+"), (0, 1)), "bankheist": (robber, (0, 2))}
+def kangaroo_safe(task, r, c):
+    bad = set(task.nuts) | {(m[0], m[1] + d) for m in task.monkeys for d in (-1, 0, 1)}
+    return (r, c) not in bad and (r - 1, c) not in bad
+
+
+def climber(task):
+    """Kangaroo: the first step of a shortest walk to the top floor; punch a coconut overhead."""
+    lad, w = task.ladders, task.params.width
+    if (task.r - 1, task.c) in task.nuts:
+        return 5
+
+    def nexts(r, c):
+        for a in (1, 2, 3, 4):
+            dr, dc = STEPS[a]
+            if dc and lad.floor_of(r) is not None and 0 <= c + dc < w:
+                yield a, (r, c + dc)
+            elif dr and lad.climb(r, c, dr):
+                yield a, (r + dr, c)
+    start, top = (task.r, task.c), lad.floors[-1]
+    seen, queue = {start: None}, deque([start])
+    while queue:
+        cell = queue.popleft()
+        if cell[0] == top and cell != start:
+            while seen[cell][0] != start:
+                cell = seen[cell][0]
+            a = seen[cell][1]
+            return a if kangaroo_safe(task, *cell) else (0 if kangaroo_safe(task, *start) else 5)
+        for a, nxt in nexts(*cell):
+            if nxt not in seen:
+                seen[nxt] = (cell, a)
+                queue.append(nxt)
+    return 0
+
+
+WINS = {"kangaroo": (climber, (0, 1)), "qbert": (painter, (0, 1)), "frostbite": (hopper, (0, 1)), "asterix": (gatherer, (0, 1)), "mspacman": (tiles(".o"), (0, 1)), "amidar": (tiles("+"), (0, 1)), "bankheist": (robber, (0, 2))}
 
 
 @pytest.mark.parametrize("game", sorted(WINS))
@@ -213,7 +247,7 @@ def test_atari_scores(game):
     assert total > 0 and task.score.done > 0
 
 
-LOSERS = {"qbert": lambda task: 1, "frostbite": diver, "mspacman": hunter, "amidar": hunter, "bankheist": hunter, "asterix": lyre_seeker}
+LOSERS = {"kangaroo": lambda task: 0, "qbert": lambda task: 1, "frostbite": diver, "mspacman": hunter, "amidar": hunter, "bankheist": hunter, "asterix": lyre_seeker}
 
 
 @pytest.mark.parametrize("game", sorted(LOSERS))
@@ -268,3 +302,16 @@ def test_ladders_join_floors():
     lad = Ladders([8, 4, 0], [[2], [5]])
     assert lad.climb(8, 2, -1) and lad.climb(5, 2, -1) and not lad.climb(4, 2, -1)
     assert not lad.climb(8, 3, -1) and lad.floor_of(4) == 1 and lad.floor_of(5) is None
+
+
+def test_kangaroo_punch_breaks_a_coconut_overhead_and_ladders_lead_up():
+    task = make(mini("kangaroo"), drop=50)
+    task.reset(seed=0)
+    task.nuts = [(task.r - 1, task.c)]
+    task.step("FIRE")
+    assert task.nuts == [] and not task.done
+    col = task.ladders.ladders[0][0]
+    task.c = col
+    for _ in range(task.params.gap):
+        task.step("UP")
+    assert task.r == task.ladders.floors[1] and task.score.done == 1
