@@ -23,7 +23,7 @@ FIRE = 5
 @dataclass(frozen=True)
 class KangarooParams(ArcadeParams):
     width: int = param(12, 6, 60)
-    height: int = param(14, 6, 60)
+    height: int = param(12, 6, 60)
     goal: int = param(3, 1, 1000)
     unit: float = param(1 / 3, 0, 10)
     floors: int = param(4, 2, 12)
