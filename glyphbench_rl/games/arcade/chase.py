@@ -92,6 +92,8 @@ class MazeTask(ArcadeTask):
         """Place the player and the ghosts (made by ``ghost``)."""
         self.home, self.ghosts, self.scared_until = start, ghosts, 0
         self.r, self.c = start
+        self.exits = {(r, c): tuple(d for d in DIRS if self.open(r + d[0], c + d[1]))
+                      for r, c in self.floor_cells()}     # the walls never move
 
     def _respawn(self) -> None:
         self.r, self.c = self.home
@@ -113,7 +115,7 @@ class MazeTask(ArcadeTask):
 
     def _play(self, action: int) -> None:
         dr, dc = STEPS[action]
-        if (dr or dc) and self.open(self.r + dr, self.c + dc):
+        if (dr or dc) and (dr, dc) in self.exits[self.r, self.c]:
             self.r += dr
             self.c += dc
             self._visit(self.r, self.c)
@@ -157,7 +159,8 @@ class MazeTask(ArcadeTask):
             i = (path.index((g.r, g.c)) + 1) % len(path) if (g.r, g.c) in path else 0
             g.r, g.c = path[i]
             return
-        ways = [(dr, dc) for dr, dc in DIRS if (dr, dc) != (-g.dr, -g.dc) and self.open(g.r + dr, g.c + dc)]
+        back = (-g.dr, -g.dc)
+        ways = [d for d in self.exits[g.r, g.c] if d != back]
         if not ways:
             ways = [(-g.dr, -g.dc)]
         if len(ways) == 1:
