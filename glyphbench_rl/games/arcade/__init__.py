@@ -9,9 +9,12 @@ Engine-level modules, which the games import (and nothing else of the family):
   ``register_arcade`` (both presets from one call);
 - ``bodies``: bodies with a velocity and swept motion, wrapping, guns (range, cooldown,
   limit), formations that sweep and descend, scripted opponents (``track``, ``chase``),
-  countdowns (fuel, oxygen, clocks).
+  countdowns (fuel, oxygen, clocks);
+- ``chase``: maze chase and collect: lattice mazes, a ``MazeTask`` with compass moves and
+  ghosts that chase, scatter, scare, patrol or wander;
+- ``hopping``: lane hopping: drifting rows that carry a rider, pyramid hops, floors and ladders.
 """
 
-from . import freeway, pong, spaceinvaders
+from . import amidar, asterix, bankheist, freeway, frostbite, kangaroo, mspacman, pong, qbert, spaceinvaders
 
-__all__ = ["freeway", "pong", "spaceinvaders"]
+__all__ = ["amidar", "asterix", "bankheist", "freeway", "frostbite", "kangaroo", "mspacman", "pong", "qbert", "spaceinvaders"]

@@ -1,0 +1,187 @@
+"""Maze chase and collect: corridor grids, tiles to collect or paint, and ghosts that chase.
+
+``MazeTask`` is an ``ArcadeTask`` whose still rows are a maze (``WALL`` cells block), with the
+player at ``(self.r, self.c)`` moved by the compass actions and ghosts (``Body`` objects with a
+``mode``) that step every ``pace`` ticks. A game builds its maze in ``_still()`` (``lattice``
+gives corridors around ``block``-sized blocks), places things in ``_setup`` after
+``self.start(rng)`` and ``self.enter(...)``, and reacts in ``_visit(r, c)`` (the player entered a
+cell: collect or paint there). Ghost modes::
+
+    CHASE    head for the player at every junction (with chance ``chance``, else a random turn)
+    SCATTER  head for the corner nearest its start (the first ``scatter`` ticks of every ``cycle``)
+    SCARED   random turns for ``scared`` ticks after ``frighten``; touching one eats it (``_eat``)
+    PATROL   walk a fixed loop of cells (the ``path`` given to ``ghost``)
+    WANDER   random turns at junctions, never reversing (Amidar's warriors)
+
+A ghost never reverses unless it is at a dead end. Touching a ghost that is not scared costs a
+life (``lose_life``); ``_respawn`` puts the player and every ghost back on their starts.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ...core.actions import ActionSet
+from ...core.params import param
+from .bodies import Body
+from .engine import EMPTY, ArcadeParams, ArcadeTask
+
+WALL = "="
+CHASE, SCATTER, SCARED, PATROL, WANDER = range(5)
+COMPASS = [("NOOP", "stay where you are"), ("LEFT", "move one cell left"),
+           ("RIGHT", "move one cell right"), ("UP", "move one cell up"), ("DOWN", "move one cell down")]
+ACTIONS = ActionSet(COMPASS, noop="NOOP")
+STEPS = ((0, 0), (0, -1), (0, 1), (-1, 0), (1, 0))
+DIRS = STEPS[1:]
+
+
+@dataclass(frozen=True)
+class ChaseParams(ArcadeParams):
+    ghosts: int = param(2, 0, 8)
+    pace: int = param(2, 1, 8)          # a ghost steps once every this many ticks
+    chance: float = param(1.0, 0, 1)    # a chasing ghost heads for you at a junction this often
+    release: int = param(0, 0, 500)     # ticks before the ghosts start to move
+    block: int = param(1, 1, 6)         # side of the blocks between corridors (lattice mazes)
+    scatter: int = param(0, 0, 100)     # ticks of scatter at the start of every cycle
+    cycle: int = param(40, 1, 1000)
+    scared: int = param(0, 0, 200)      # ticks the ghosts stay scared after ``frighten``
+
+
+def lattice(width: int, height: int, block: int, floor: str = EMPTY) -> list[str]:
+    """A walled maze of corridors one cell wide around square blocks of side ``block``."""
+    span = block + 1
+    rows = [WALL * width]
+    for r in range(1, height - 1):
+        if (r - 1) % span == 0:
+            rows.append(WALL + floor * (width - 2) + WALL)
+        else:
+            rows.append(WALL + "".join(floor if (c - 1) % span == 0 else WALL
+                                       for c in range(1, width - 1)) + WALL)
+    rows.append(WALL * width)
+    return rows
+
+
+def ghost(r: int, c: int, glyph: str, kind: int = CHASE, path=None, dr: int = 0, dc: int = 0) -> Body:
+    """A ghost at (r, c): ``kind`` CHASE (scatters and scares by the game's clock), PATROL along
+    ``path`` (a loop of cells) or WANDER."""
+    return Body(r, c, dr, dc, glyph, (kind, path, (r, c, dr, dc)))
+
+
+def loop(top: int, left: int, rows: int, cols: int) -> list[tuple[int, int]]:
+    """The cells of a rectangle's outline, clockwise from its top-left corner."""
+    cells = [(top, left + k) for k in range(cols)]
+    cells += [(top + k, left + cols - 1) for k in range(1, rows)]
+    cells += [(top + rows - 1, left + cols - 1 - k) for k in range(1, cols)]
+    cells += [(top + rows - 1 - k, left) for k in range(1, rows - 1)]
+    return cells
+
+
+class MazeTask(ArcadeTask):
+    Params = ChaseParams
+    ACTIONS = ACTIONS
+    pattern = "D"
+    scared_glyph, player_glyph = "g", "C"
+
+    def open(self, r: int, c: int) -> bool:
+        return 0 <= r < len(self.still) and 0 <= c < len(self.still[r]) and self.still[r][c] != WALL
+
+    def floor_cells(self) -> list[tuple[int, int]]:
+        return [(r, c) for r, row in enumerate(self.still) for c, ch in enumerate(row) if ch != WALL]
+
+    def enter(self, start: tuple[int, int], ghosts: list[Body]) -> None:
+        """Place the player and the ghosts (made by ``ghost``)."""
+        self.home, self.ghosts, self.scared_until = start, ghosts, 0
+        self.r, self.c = start
+        self.exits = {(r, c): tuple(d for d in DIRS if self.open(r + d[0], c + d[1]))
+                      for r, c in self.floor_cells()}     # the walls never move
+
+    def _respawn(self) -> None:
+        self.r, self.c = self.home
+        self.scared_until = 0
+        for g in self.ghosts:
+            g.r, g.c, g.dr, g.dc = g.data[2]
+
+    def frighten(self) -> None:
+        self.scared_until = self.tick + self.params.scared + 1
+        for g in self.ghosts:
+            g.dr, g.dc = -g.dr, -g.dc
+
+    def _visit(self, r: int, c: int) -> None:
+        """The player entered (r, c): collect or paint there."""
+
+    def _eat(self, ghost: Body) -> None:
+        """A scared ghost was touched: back to its start."""
+        ghost.r, ghost.c, ghost.dr, ghost.dc = ghost.data[2]
+
+    def _play(self, action: int) -> None:
+        dr, dc = STEPS[action]
+        if (dr or dc) and (dr, dc) in self.exits[self.r, self.c]:
+            self.r += dr
+            self.c += dc
+            self._visit(self.r, self.c)
+            if self.done or self._touch():
+                return
+        self._tick_world()
+        if self.done:
+            return
+        p = self.params
+        if self.tick > p.release and self.tick % p.pace == 0:
+            for g in self.ghosts:
+                self._steer(g)
+            self._touch()
+
+    def _tick_world(self) -> None:
+        """Per-tick work of the game besides the ghosts (timers, spawns)."""
+
+    def _touch(self) -> bool:
+        for g in self.ghosts:
+            if g.r == self.r and g.c == self.c:
+                if self.tick < self.scared_until and g.data[0] == CHASE:
+                    self._eat(g)
+                    continue
+                self.lose_life(self.caught)
+                return True
+        return False
+
+    caught = "Caught!"
+
+    def mode(self, ghost: Body) -> int:
+        if ghost.data[0] != CHASE:
+            return ghost.data[0]
+        if self.tick < self.scared_until:
+            return SCARED
+        return SCATTER if self.tick % self.params.cycle < self.params.scatter else CHASE
+
+    def _steer(self, g: Body) -> None:
+        mode = self.mode(g)
+        if mode == PATROL:
+            path = g.data[1]
+            i = (path.index((g.r, g.c)) + 1) % len(path) if (g.r, g.c) in path else 0
+            g.r, g.c = path[i]
+            return
+        back = (-g.dr, -g.dc)
+        ways = [d for d in self.exits[g.r, g.c] if d != back]
+        if not ways:
+            ways = [(-g.dr, -g.dc)]
+        if len(ways) == 1:
+            pick = ways[0]
+        elif mode in (SCARED, WANDER) or (mode == CHASE and self.draws.random() >= self.params.chance):
+            pick = ways[self.draws.below(len(ways))]
+        else:
+            if mode == CHASE:
+                tr, tc = self.r, self.c
+            else:
+                r0, c0 = g.data[2][:2]
+                tr = 0 if r0 < len(self.still) // 2 else len(self.still)
+                tc = 0 if c0 < len(self.still[0]) // 2 else len(self.still[0])
+            pick = min(ways, key=lambda d: (g.r + d[0] - tr) ** 2 + (g.c + d[1] - tc) ** 2)
+        g.dr, g.dc = pick
+        g.r += pick[0]
+        g.c += pick[1]
+
+    def _sprites(self):
+        scared = self.tick < self.scared_until
+        out = [(g.r, g.c, self.scared_glyph if scared and g.data[0] == CHASE else g.glyph)
+               for g in self.ghosts]
+        out.append((self.r, self.c, self.player_glyph))
+        return out
