@@ -9,9 +9,12 @@ Engine-level modules, which the games import (and nothing else of the family):
   ``register_arcade`` (both presets from one call);
 - ``bodies``: bodies with a velocity and swept motion, wrapping, guns (range, cooldown,
   limit), formations that sweep and descend, scripted opponents (``track``, ``chase``),
-  countdowns (fuel, oxygen, clocks).
+  countdowns (fuel, oxygen, clocks);
+- ``shooter``: the fixed-bottom shooter family's ``Shooter`` (cannon, lanes, gun, bombs) and
+  ``Pack`` of enemies, ``march`` (formations), ``bounce``.
 """
 
 from . import freeway, pong, spaceinvaders
+from . import assault
 
-__all__ = ["freeway", "pong", "spaceinvaders"]
+__all__ = ["freeway", "pong", "spaceinvaders", "assault"]

@@ -1,0 +1,145 @@
+"""The fixed-bottom shooter family: the engine (cannon, lanes, gun, bombs, marching packs), and
+for each game a scripted win and a loss on MiniAtari presets and a scoring policy on Atari ones."""
+
+from __future__ import annotations
+
+import copy
+
+import pytest
+
+from glyphbench_rl import make
+from glyphbench_rl.games.arcade.bodies import Body
+from glyphbench_rl.games.arcade.shooter import FIRE, LEFT, NOOP, RIGHT, march
+
+SEEDS = (0, 3)
+
+
+def play(task_id: str, policy, seed: int, turns: int | None = None):
+    env = make(task_id)
+    env.reset(seed=seed)
+    done, n = False, 0
+    info = {}
+    while not done and (turns is None or n < turns):
+        _, _, term, trunc, info = env.step(policy(env))
+        done, n = term or trunc, n + 1
+    return env, info
+
+
+def toward(env, target: int) -> int:
+    if target == env.col:
+        return FIRE
+    return LEFT if target < env.col else RIGHT
+
+
+def threatened(env, col: int, depth: int = 3) -> bool:
+    return any(b.c == col and env.row - depth <= b.r < env.row for b in env.bombs.shots)
+
+
+def dodge(env) -> int | None:
+    """Step aside from a bomb about to land on the cannon."""
+    if not threatened(env, env.col):
+        return None
+    lanes = env.lane_list or list(range(env.params.width))
+    i = lanes.index(env.col)
+    for j in (i - 1, i + 1):
+        if 0 <= j < len(lanes) and not threatened(env, lanes[j]):
+            return LEFT if j < i else RIGHT
+    return None
+
+
+def gunner(env) -> int:
+    """Dodge bombs, else go under the lowest enemy and fire (never into overheat)."""
+    away = dodge(env)
+    if away is not None:
+        return away
+    foes = env.pack.bodies
+    if not foes:
+        return NOOP
+    low = max(b.r for b in foes)
+    target = min((b.c for b in foes if b.r == low), key=lambda c: abs(c - env.col))
+    act = toward(env, target)
+    if act == FIRE and getattr(env, "hot", 0) + 3 >= getattr(env.params, "heat", 0) > 0:
+        return NOOP
+    return act
+
+
+def lookahead(base, horizon: int = 8):
+    """A planner: try each action, follow ``base`` for ``horizon`` turns on a copy of the game,
+    keep the action that paid most without losing a life (``base``'s own choice on a tie)."""
+    def policy(env) -> int:
+        first = base(env)
+        best, pick = None, first
+        for a in [first] + [a for a in range(env.action_space.n) if a != first]:
+            sim = copy.deepcopy(env)
+            lives, ret = sim.lives, sim.episode_return
+            _, _, term, trunc, _ = sim.step(a)
+            for _ in range(horizon):
+                if term or trunc:
+                    break
+                _, _, term, trunc, _ = sim.step(base(sim))
+            value = (sim.won is not False or not sim.done, sim.lives >= lives, sim.episode_return - ret)
+            if best is None or value > best:
+                best, pick = value, a
+        return pick
+    return policy
+
+
+def idle(env) -> int:
+    return NOOP
+
+
+# -- the engine ------------------------------------------------------------------------------------
+def test_march_sweeps_then_turns_and_steps_down_at_the_edge():
+    row = [Body(1, 2), Body(1, 4)]
+    dx = march(row, 1, 0, 5, False)
+    assert dx == 1 and [b.c for b in row] == [3, 5] and row[0].r == 1
+    dx = march(row, dx, 0, 5, False)
+    assert dx == -1 and [b.c for b in row] == [3, 5] and row[0].r == 2
+    march(row, 0, 0, 5, True)
+    assert row[1].r == 3
+
+
+def test_cannon_moves_fires_with_cooldown_and_bombs_hit_it():
+    env = make("glyphbench/miniatari-assault-v0")
+    env.reset(seed=0)
+    env.pack.bodies.clear()
+    col = env.col
+    env.tick = 1
+    env.steer(LEFT)
+    env.steer(FIRE)
+    assert env.col == col - 1 and len(env.gun.shots) == 1
+    env.steer(FIRE)
+    assert len(env.gun.shots) == 1                      # one shot at a time
+    env.drop(env.row - 1, env.col)
+    assert env.rain() is True and env.bombs.shots == []
+    env.drop(env.row - 2, env.col + 1)
+    assert env.rain() is False and env.bombs.shots[0].r == env.row - 1
+
+
+# -- assault ---------------------------------------------------------------------------------------
+@pytest.mark.parametrize("seed", SEEDS)
+def test_assault_mini_win_by_shooting_the_formation(seed):
+    env, info = play("glyphbench/miniatari-assault-v0", lookahead(gunner), seed)
+    assert info["won"] is True and env.episode_return == pytest.approx(1.0)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_assault_mini_loss_when_the_formation_lands(seed):
+    env, info = play("glyphbench/miniatari-assault-v0", idle, seed)
+    assert info["won"] is False and env.episode_return == 0 and env.tick < 200
+
+
+def test_assault_atari_scores_and_overheat_costs_a_life():
+    env, _ = play("glyphbench/atari-assault-v0", gunner, 0, turns=600)
+    assert env.episode_return > 0
+    env = make("glyphbench/atari-assault-v0")
+    env.reset(seed=1)
+    lives, said = env.lives, ""
+    for _ in range(60):
+        env.pack.bodies.clear()                         # nothing to hit: shots fly on
+        env.bombs.shots.clear()
+        env.step(FIRE)
+        if env.lives < lives:
+            said = env.frame.message
+            break
+    assert env.lives == lives - 1 and "overheated" in said
