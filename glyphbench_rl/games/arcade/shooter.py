@@ -116,7 +116,8 @@ class Shooter(ArcadeTask):
         p = self.params
         many = "one shot at a time" if p.shots == 1 else f"at most {p.shots} shots in flight"
         wait = f", one every {p.cooldown} turns" if p.cooldown > 1 else ""
-        return {**super().prompt_fields(),
+        death = self.pattern == "D" and p.death
+        return {**super().prompt_fields(), "death_text": f"; {p.death:g} when the game is lost" if death else "",
                 "gun_text": f"FIRE sends a shot (|) up {p.shot_speed} cells a turn, {many}{wait}."}
 
     def arm(self, rng, row: int | None = None) -> None:

@@ -143,3 +143,38 @@ def test_assault_atari_scores_and_overheat_costs_a_life():
             said = env.frame.message
             break
     assert env.lives == lives - 1 and "overheated" in said
+
+
+def bomb_seeker(env) -> int:
+    """Walk under the lowest falling bomb (a way to lose)."""
+    if not env.bombs.shots:
+        return NOOP
+    bomb = max(env.bombs.shots, key=lambda b: b.r)
+    return NOOP if bomb.c == env.col else (LEFT if bomb.c < env.col else RIGHT)
+
+
+# -- demon attack ----------------------------------------------------------------------------------
+@pytest.mark.parametrize("seed", SEEDS)
+def test_demonattack_mini_win_by_shooting_five_demons(seed):
+    env, info = play("glyphbench/miniatari-demonattack-v0", lookahead(gunner), seed)
+    assert info["won"] is True and env.episode_return == pytest.approx(1.0)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_demonattack_mini_loss_under_a_bomb(seed):
+    env, info = play("glyphbench/miniatari-demonattack-v0", bomb_seeker, seed)
+    assert info["won"] is False and env.episode_return == pytest.approx(-1.0)
+
+
+def test_demonattack_atari_scores_and_demons_split_later():
+    env, _ = play("glyphbench/atari-demonattack-v0", lookahead(gunner, 6), 0, turns=150)
+    assert env.episode_return > 0
+    env = make("glyphbench/atari-demonattack-v0")
+    env.reset(seed=0)
+    env.waves = env.params.split
+    env.pack.bodies[:] = [env.pack.bodies[0]]
+    foe = env.pack.bodies[0]
+    foe.r, foe.c, foe.dc = env.row - 2, env.col, 0
+    env.tick = 0                                        # next turn does not flap
+    env.step(FIRE)
+    assert [b.glyph for b in env.pack.bodies].count("w") == 2 and env.score.done == 1
