@@ -178,3 +178,29 @@ def test_demonattack_atari_scores_and_demons_split_later():
     env.tick = 0                                        # next turn does not flap
     env.step(FIRE)
     assert [b.glyph for b in env.pack.bodies].count("w") == 2 and env.score.done == 1
+
+
+# -- phoenix ---------------------------------------------------------------------------------------
+@pytest.mark.parametrize("seed", SEEDS)
+def test_phoenix_mini_win_by_shooting_the_flock(seed):
+    env, info = play("glyphbench/miniatari-phoenix-v0", lookahead(gunner), seed)
+    assert info["won"] is True and env.episode_return == pytest.approx(1.0)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_phoenix_mini_loss_when_a_bird_lands(seed):
+    env, info = play("glyphbench/miniatari-phoenix-v0", idle, seed)
+    assert info["won"] is False and env.episode_return == pytest.approx(-1.0)
+
+
+def test_phoenix_atari_scores_and_the_shield_stops_a_bomb():
+    env, _ = play("glyphbench/atari-phoenix-v0", lookahead(gunner, 6), 0, turns=150)
+    assert env.episode_return > 0
+    env = make("glyphbench/atari-phoenix-v0")
+    env.reset(seed=0)
+    env.pack.bodies.clear()
+    lives = env.lives
+    env.step(4)                                         # SHIELD
+    env.drop(env.row - 1, env.col)
+    env.step(LEFT)                                      # held in place under the shield
+    assert env.lives == lives and env.frame.grid[env.row][env.col] == "@"
