@@ -204,3 +204,41 @@ def test_phoenix_atari_scores_and_the_shield_stops_a_bomb():
     env.drop(env.row - 1, env.col)
     env.step(LEFT)                                      # held in place under the shield
     assert env.lives == lives and env.frame.grid[env.row][env.col] == "@"
+
+
+# -- beamrider -------------------------------------------------------------------------------------
+def rammed(env) -> int:
+    """Ride under the lowest saucer and never shoot (a way to lose)."""
+    if not env.pack.bodies:
+        return NOOP
+    low = max(env.pack.bodies, key=lambda b: b.r)
+    return NOOP if low.c == env.col else (LEFT if low.c < env.col else RIGHT)
+
+
+def test_beamrider_ship_hops_between_beams():
+    env = make("glyphbench/miniatari-beamrider-v0")
+    env.reset(seed=0)
+    lanes = env.lane_list
+    assert len(lanes) == env.params.beams and env.col in lanes
+    env.step(RIGHT)
+    assert env.col == lanes[lanes.index(lanes[len(lanes) // 2]) + 1]
+    for _ in range(len(lanes)):
+        env.step(RIGHT)
+    assert env.col == lanes[-1] and env.frame.grid[env.row][lanes[0]] == "_"
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_beamrider_mini_win_by_shooting_saucers(seed):
+    env, info = play("glyphbench/miniatari-beamrider-v0", lookahead(gunner), seed)
+    assert info["won"] is True and env.episode_return == pytest.approx(1.0)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_beamrider_mini_loss_when_rammed(seed):
+    env, info = play("glyphbench/miniatari-beamrider-v0", rammed, seed)
+    assert info["won"] is False and env.episode_return == pytest.approx(-1.0)
+
+
+def test_beamrider_atari_scores():
+    env, _ = play("glyphbench/atari-beamrider-v0", lookahead(gunner, 6), 0, turns=150)
+    assert env.episode_return > 0
