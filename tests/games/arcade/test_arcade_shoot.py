@@ -242,3 +242,40 @@ def test_beamrider_mini_loss_when_rammed(seed):
 def test_beamrider_atari_scores():
     env, _ = play("glyphbench/atari-beamrider-v0", lookahead(gunner, 6), 0, turns=150)
     assert env.episode_return > 0
+
+
+# -- centipede -------------------------------------------------------------------------------------
+def test_centipede_shot_segment_becomes_a_mushroom_and_splits_the_body():
+    env = make("glyphbench/miniatari-centipede-v0")
+    env.reset(seed=0)
+    env.still = ["." * env.params.width] * env.params.height
+    env.still_version += 1
+    env.pack.bodies[:] = env.pack.bodies[:3]            # head at column 7, body at 6 and 5
+    for b in env.pack.bodies:
+        b.r = 5
+    mid = env.pack.bodies[1]
+    env.col = mid.c + 1                                 # the body steps into the shot's path
+    env.tick = 0
+    env.step(FIRE)
+    env.step(NOOP)
+    assert env.score.done == 1 and "#" in env.frame.grid[5]
+    assert [b.glyph for b in env.pack.bodies] == ["O", "O"]
+    env._crawl(env.pack.bodies[1])                      # the new head meets the mushroom: down
+    assert env.pack.bodies[1].r == 6
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_centipede_mini_win_by_shooting_every_segment(seed):
+    env, info = play("glyphbench/miniatari-centipede-v0", lookahead(gunner), seed)
+    assert info["won"] is True and env.episode_return == pytest.approx(1.0)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_centipede_mini_loss_when_it_reaches_the_bottom(seed):
+    env, info = play("glyphbench/miniatari-centipede-v0", idle, seed)
+    assert info["won"] is False and env.episode_return == 0 and env.tick < env.max_turns
+
+
+def test_centipede_atari_scores():
+    env, _ = play("glyphbench/atari-centipede-v0", lookahead(gunner, 6), 0, turns=150)
+    assert env.episode_return > 0
