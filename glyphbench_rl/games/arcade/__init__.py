@@ -15,7 +15,7 @@ Engine-level modules, which the games import (and nothing else of the family):
 """
 
 from . import freeway, pong, spaceinvaders
-from . import assault, beamrider, centipede, demonattack, phoenix
+from . import assault, atlantis, beamrider, centipede, demonattack, phoenix
 
 __all__ = ["freeway", "pong", "spaceinvaders", "assault", "demonattack", "phoenix", "beamrider",
-           "centipede"]
+           "centipede", "atlantis"]

@@ -71,13 +71,14 @@ def lookahead(base, horizon: int = 8):
         best, pick = None, first
         for a in [first] + [a for a in range(env.action_space.n) if a != first]:
             sim = copy.deepcopy(env)
-            lives, ret = sim.lives, sim.episode_return
+            lives, ret, kills = sim.lives, sim.episode_return, getattr(sim, "kills", 0)
             _, _, term, trunc, _ = sim.step(a)
             for _ in range(horizon):
                 if term or trunc:
                     break
                 _, _, term, trunc, _ = sim.step(base(sim))
-            value = (sim.won is not False or not sim.done, sim.lives >= lives, sim.episode_return - ret)
+            value = (sim.won is not False or not sim.done, sim.lives >= lives,
+                     sim.episode_return - ret, getattr(sim, "kills", 0) - kills)
             if best is None or value > best:
                 best, pick = value, a
         return pick
@@ -279,3 +280,38 @@ def test_centipede_mini_loss_when_it_reaches_the_bottom(seed):
 def test_centipede_atari_scores():
     env, _ = play("glyphbench/atari-centipede-v0", lookahead(gunner, 6), 0, turns=150)
     assert env.episode_return > 0
+
+
+# -- atlantis --------------------------------------------------------------------------------------
+def test_atlantis_turrets_fire_diagonally_and_straight():
+    env = make("glyphbench/atari-atlantis-v0")
+    env.reset(seed=0)
+    towers = env._towers()
+    for a in (1, 2, 3):
+        env.guns[a - 1].fire(0, env.params.height - 1, towers[a - 1], *((-1, 1), (-1, 0), (-1, -1))[a - 1])
+    env.pack.bodies.clear()
+    env.sent = env.params.wave
+    env.step(NOOP)
+    s = env.params.shot_speed
+    assert [(g.shots[0].r, g.shots[0].c) for g in env.guns] == [
+        (env.params.height - 1 - s, towers[0] + s), (env.params.height - 1 - s, towers[1]),
+        (env.params.height - 1 - s, towers[2] - s)]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_atlantis_mini_win_by_repelling_every_wave(seed):
+    env, info = play("glyphbench/miniatari-atlantis-v0", lookahead(idle, 10), seed)
+    assert info["won"] is True and env.episode_return == pytest.approx(1.0)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_atlantis_mini_loss_when_a_raider_reaches_the_city(seed):
+    env, info = play("glyphbench/miniatari-atlantis-v0", idle, seed)
+    assert info["won"] is False and env.episode_return == pytest.approx(-1.0)
+
+
+def test_atlantis_atari_scores_and_loses_a_building_per_raider_landed():
+    env, _ = play("glyphbench/atari-atlantis-v0", lookahead(idle, 10), 0, turns=150)
+    assert env.episode_return > 0
+    env, info = play("glyphbench/atari-atlantis-v0", idle, 0)
+    assert info["won"] is False and "H" not in env.frame.grid[-1] and env.waves >= 1
