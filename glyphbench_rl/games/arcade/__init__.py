@@ -15,7 +15,7 @@ Engine-level modules, which the games import (and nothing else of the family):
 """
 
 from . import freeway, pong, spaceinvaders
-from . import assault, atlantis, beamrider, centipede, demonattack, phoenix
+from . import assault, atlantis, beamrider, centipede, demonattack, gopher, phoenix
 
 __all__ = ["freeway", "pong", "spaceinvaders", "assault", "demonattack", "phoenix", "beamrider",
-           "centipede", "atlantis"]
+           "centipede", "atlantis", "gopher"]

@@ -315,3 +315,42 @@ def test_atlantis_atari_scores_and_loses_a_building_per_raider_landed():
     assert env.episode_return > 0
     env, info = play("glyphbench/atari-atlantis-v0", idle, 0)
     assert info["won"] is False and "H" not in env.frame.grid[-1] and env.waves >= 1
+
+
+# -- gopher ----------------------------------------------------------------------------------------
+def guard(env) -> int:
+    """Stand over the gopher's shaft (or the carrot it is heading for) and fill it."""
+    g = env.gopher
+    col = g.c if g.r < env.params.height - 1 else env.target
+    if col != env.col:
+        return LEFT if col < env.col else RIGHT
+    return 3 if g.r < env.params.height - 1 else NOOP
+
+
+def test_gopher_fill_plugs_the_shaft_top_and_bonks_the_gopher():
+    env = make("glyphbench/miniatari-gopher-v0")
+    env.reset(seed=0)
+    g = env.gopher
+    g.r, g.c = 3, env.col
+    for r in (3, 4, 5):
+        env.set_still(r, env.col, ".")
+    env._fill()
+    assert env.still[3][env.col] == "#" and (g.r, g.c) != (3, env.col) and g.r == env.params.height - 1
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_gopher_mini_win_by_holding_every_carrot(seed):
+    env, info = play("glyphbench/miniatari-gopher-v0", guard, seed)
+    assert info["won"] is True and env.episode_return == pytest.approx(1.0) and env.lives == 3
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_gopher_mini_loss_when_every_carrot_is_eaten(seed):
+    env, info = play("glyphbench/miniatari-gopher-v0", idle, seed)
+    assert info["won"] is False and env.episode_return == pytest.approx(-1.0)
+    assert "Y" not in env.frame.grid[0]
+
+
+def test_gopher_atari_scores_by_bonking():
+    env, _ = play("glyphbench/atari-gopher-v0", guard, 0, turns=600)
+    assert env.episode_return > 0 and env.score.done >= 1
