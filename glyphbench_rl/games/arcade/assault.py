@@ -79,12 +79,8 @@ class Assault(Shooter):
         if drift or down:
             dx = march(self.pack.bodies, self.dx if drift else 0, 0, p.width - 1, down)
             self.dx = dx if drift else self.dx
-        for foe, _ in self.volley():
-            self.pack.kill(foe)
-            self.say("Attacker down!")
-            self.score.gain()
-            if self.done:
-                return
+        if self.shoot_down("Attacker down!") is None:
+            return
         if not self.pack.bodies:
             self._wave()
         if self.pack.lowest() >= self.row:

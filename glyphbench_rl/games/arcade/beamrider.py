@@ -82,15 +82,11 @@ class BeamRider(Shooter):
                 i = lanes.index(b.c) + (1 if d.random() < 0.5 else -1)
                 if 0 <= i < len(lanes):
                     b.c = lanes[i]
-        for foe, _ in self.volley():
-            self.pack.kill(foe)
-            self.say("Saucer hit!")
-            self.score.gain()
-            if self.done:
-                return
-            if p.sector and self.score.done % p.sector == 0:
-                self.sectors += 1
-                self.say(f"Sector {self.sectors}!")
+        if self.shoot_down("Saucer hit!") is None:
+            return
+        if p.sector and 1 + self.score.done // p.sector > self.sectors:
+            self.sectors += 1
+            self.say(f"Sector {self.sectors}!")
         if self.touches():
             self.pack.kill(self.pack.at(self.row, self.col))
             if self.lose_life("A saucer rammed you."):

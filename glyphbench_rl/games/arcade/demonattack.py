@@ -73,16 +73,14 @@ class DemonAttack(Shooter):
                 if d.random() < p.turn:
                     b.dc = -b.dc
                 bounce(b, 0, p.width - 1)
-        for foe, cell in self.volley():
-            self.pack.kill(foe)
-            self.say("Demon hit!")
+        hits = self.shoot_down("Demon hit!")
+        if hits is None:
+            return
+        for foe, (r, c) in hits:
             if foe.glyph == DEMON and p.split and self.waves >= p.split:
                 for dc in (-1, 1):
-                    if 0 <= cell[1] + dc < p.width:
-                        self.pack.add(cell[0], cell[1] + dc, DIVER)
-            self.score.gain()
-            if self.done:
-                return
+                    if 0 <= c + dc < p.width:
+                        self.pack.add(r, c + dc, DIVER)
         for b in [b for b in self.pack.bodies if b.r > self.row]:
             self.pack.kill(b)
         if self.touches():

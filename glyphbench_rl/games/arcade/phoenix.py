@@ -91,7 +91,7 @@ class Phoenix(Shooter):
                 b.r += 1
                 if b.r % 2 == 0:
                     b.c += (self.col > b.c) - (self.col < b.c)
-        if self._hits():
+        if self.shoot_down("Bird down!") is None:
             return
         if not self.pack.bodies:
             self._flock()
@@ -109,16 +109,6 @@ class Phoenix(Shooter):
         self.maybe_drop()
         if self.rain() and not self.guard:
             self.lose_life("A bomb hit you.")
-
-    def _hits(self) -> bool:
-        """Your shots; True when the game was won."""
-        for foe, _ in self.volley():
-            self.pack.kill(foe)
-            self.say("Bird down!")
-            self.score.gain()
-            if self.done:
-                return True
-        return False
 
     def _extra_hud(self) -> str:
         if not self.params.shield:

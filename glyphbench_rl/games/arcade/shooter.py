@@ -151,6 +151,8 @@ class Shooter(ArcadeTask):
     def volley(self, at=None) -> list[tuple[Body, tuple[int, int]]]:
         """Move your shots; (enemy, cell) for each that hit one of ``at(r, c)`` (the pack's by
         default; a shot leaving the field or hitting ``_blocks`` is gone)."""
+        if not self.gun.shots:
+            return []
         at = at or self.pack.at
         hits = []
         for shot, cell in self.gun.advance(lambda r, c: r < 0 or self._blocks(r, c) or at(r, c) is not None):
@@ -160,6 +162,18 @@ class Shooter(ArcadeTask):
                     hits.append((foe, cell))
                 else:
                     self._struck(*cell)
+        return hits
+
+    def shoot_down(self, say: str, at=None) -> list | None:
+        """``volley``, then kill, announce and score (a unit each) every enemy hit; the (enemy,
+        cell) hits come back, or None when one of them won the game."""
+        hits = self.volley(at)
+        for foe, _ in hits:
+            self.pack.kill(foe)
+            self.say(say)
+            self.score.gain()
+            if self.done:
+                return None
         return hits
 
     def _blocks(self, r: int, c: int) -> bool:
@@ -182,6 +196,8 @@ class Shooter(ArcadeTask):
 
     def rain(self) -> bool:
         """Bombs fall a cell; True when one reached the cannon (the bomb is gone)."""
+        if not self.bombs.shots:
+            return False
         hit = False
         row, col, h = self.row, self.col, self.params.height
         for bomb, cell in self.bombs.advance(lambda r, c: r >= h or (r == row and c == col) or self._blocks(r, c)):
