@@ -24,8 +24,8 @@ class PhoenixParams(ShooterParams):
     drift: int = param(2, 1, 20)          # turns per sideways step of the flock
     descend: int = param(6, 1, 100)       # turns per step down of the flock
     dive: float = param(0.18, 0, 1)       # chance a turn that a bird starts a dive
-    shield: int = param(0, 0, 10)         # turns a SHIELD lasts (0: none)
-    recharge: int = param(12, 1, 100)     # turns from one SHIELD to the next
+    shield: int = param(2, 0, 10)         # turns a SHIELD lasts (0: none)
+    recharge: int = param(15, 1, 100)     # turns from one SHIELD to the next
 
 
 class Phoenix(Shooter):
@@ -120,5 +120,5 @@ class Phoenix(Shooter):
 register_arcade(Phoenix, "phoenix",
                 mini=dict(max_turns=200),
                 atari=dict(width=20, height=24, lives=5, goal=40, unit=10.0, birds=12, dive=0.1,
-                           bomb_chance=0.15, bombs=3, shots=2, shield=3,
+                           bomb_chance=0.15, bombs=3, shots=2, shield=3, recharge=12,
                            max_turns=10000))

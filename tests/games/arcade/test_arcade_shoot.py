@@ -89,6 +89,22 @@ def idle(env) -> int:
     return NOOP
 
 
+GAMES = ("assault", "demonattack", "phoenix", "beamrider", "centipede", "atlantis", "gopher")
+
+
+@pytest.mark.parametrize("game", GAMES)
+def test_presets_registered_with_suite_tier_horizon_and_bounds(game):
+    from glyphbench_rl.core.registry import get_spec
+    from glyphbench_rl.games.arcade.engine import bound
+    mini, atari = get_spec(f"glyphbench/miniatari-{game}-v0"), get_spec(f"glyphbench/atari-{game}-v0")
+    assert (mini.suite, mini.tier) == ("MiniAtari", "standard") and mini.max_turns <= 512
+    assert (atari.suite, atari.tier) == ("Atari", "extended") and atari.max_turns >= 5000
+    m, a = make(mini.id), make(atari.id)
+    assert a.params.width * a.params.height > m.params.width * m.params.height
+    lo, hi = bound(m.pattern, m.params)
+    assert -1 <= lo and hi == pytest.approx(1.0)
+
+
 # -- the engine ------------------------------------------------------------------------------------
 def test_march_sweeps_then_turns_and_steps_down_at_the_edge():
     row = [Body(1, 2), Body(1, 4)]
