@@ -11,7 +11,7 @@ from ...core.actions import ActionSet
 from ...core.params import param, require
 from .bodies import Gun
 from .engine import EMPTY, register_arcade
-from .shooter import Shooter, ShooterParams
+from .shooter import Shooter, ShooterParams, per
 
 TURRET, BUILDING, SHOT, EAST, WEST = "T", "H", "*", ">", "<"
 ACTIONS = ActionSet([("NOOP", "hold fire"), ("FIRE_LEFT", "the left turret shoots up and to the right"),
@@ -41,9 +41,9 @@ class Atlantis(Shooter):
              "field{city_text}. Raiders come in waves of {wave}, one every {gap} turns, entering at "
              "the top from alternate sides; each crosses a cell a turn (> east, < west) and drops "
              "a row at the far edge. A raider that reaches the city row {hit_text}. Each turret "
-             "shoots (*) {shot_speed} cells a turn, one shot in flight per turret.")
-    rewards = "+{unit} for each {counted} destroyed{death_text}."
-    ends = "when you have destroyed {goal} {counted}s or the city falls"
+             "shoots (*) {speed_text} a turn, one shot in flight per turret.")
+    rewards = "+{unit} for each {counted}{death_text}."
+    ends = "when you have {goal_text} or the city falls"
     ACTIONS = ACTIONS
     Params = AtlantisParams
     pattern = "D"
@@ -52,7 +52,9 @@ class Atlantis(Shooter):
 
     def prompt_fields(self) -> dict:
         p = self.params
-        return {**super().prompt_fields(), "counted": "raider" if p.per_raider else "wave",
+        return {**super().prompt_fields(), "speed_text": per(p.shot_speed, "cell"),
+                "counted": "raider shot down" if p.per_raider else "wave shot down to the last raider",
+                "goal_text": f"shot down {p.goal} raiders" if p.per_raider else f"cleared {p.goal} waves",
                 "city_text": f", among {p.lives} buildings (H)" if p.lives > 1 else "",
                 "hit_text": "wrecks the nearest building" if p.lives > 1 else "ends the game"}
 

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 from ...core.params import param, require
 from .bodies import Body
 from .engine import EMPTY, register_arcade
-from .shooter import CANNON, SHOT, Shooter, ShooterParams, shooter_actions
+from .shooter import CANNON, SHOT, Shooter, ShooterParams, per, shooter_actions
 
 HEAD, BODY, MUSH, SPIDER = "O", "o", "#", "X"
 UP, DOWN = 4, 5
@@ -41,7 +41,7 @@ class Centipede(Shooter):
     title = "Centipede"
     rules = ("You (A) move in the bottom {zone} rows of a {width}x{height} field, with {lives_text}. "
              "A centipede of {segments} segments (head O, body o) enters at the top left and moves a "
-             "cell every {crawl} turns; meeting an edge or a mushroom (#) it moves a row down and "
+             "cell every {crawl_text}; meeting an edge or a mushroom (#) it moves a row down and "
              "turns. {gun_text} A shot segment becomes a mushroom, and the one behind it becomes a "
              "head. A shot mushroom is gone. A segment touching you costs a life.{land_text}"
              "{spider_text}")
@@ -62,6 +62,7 @@ class Centipede(Shooter):
                 "spider_text": (f" Every {p.spider} turns a spider (X) zigzags through your zone "
                                 "(a life if it touches you).") if p.spider else "",
                 "shroom_text": ", mushroom or spider" if p.shrooms_count else "",
+                "crawl_text": per(p.crawl, "turn").removeprefix("a "),
                 "things": "things" if p.shrooms_count else "segments"}
 
     def _still(self) -> list[str]:

@@ -80,6 +80,11 @@ class Pack:
         return len(self.bodies)
 
 
+def per(n: int, what: str) -> str:
+    """'a cell a turn' style counts: ``per(1, "cell")`` is "a cell", ``per(3, "cell")`` "3 cells"."""
+    return f"a {what}" if n == 1 else f"{n} {what}s"
+
+
 def march(bodies: list[Body], dx: int, lo: int, hi: int, down: bool) -> int:
     """Move a formation (``bodies``) ``dx`` sideways together; at an edge (``lo``/``hi``) it
     turns and steps down instead, as it also does when ``down``. The new ``dx`` comes back."""
@@ -118,7 +123,7 @@ class Shooter(ArcadeTask):
         wait = f", one every {p.cooldown} turns" if p.cooldown > 1 else ""
         death = self.pattern == "D" and p.death
         return {**super().prompt_fields(), "death_text": f"; {p.death:g} when the game is lost" if death else "",
-                "gun_text": f"FIRE sends a shot (|) up {p.shot_speed} cells a turn, {many}{wait}."}
+                "gun_text": f"FIRE sends a shot (|) up {per(p.shot_speed, 'cell')} a turn, {many}{wait}."}
 
     def arm(self, rng, row: int | None = None) -> None:
         """Call first in ``_setup``: ``start``, the cannon (middle of the row), gun and bombs."""
