@@ -13,8 +13,24 @@ Engine-level modules, which the games import (and nothing else of the family):
 - ``chase``: maze chase and collect: lattice mazes, a ``MazeTask`` with compass moves and
   ghosts that chase, scatter, scare, patrol or wander;
 - ``hopping``: lane hopping: drifting rows that carry a rider, pyramid hops, floors and ladders.
+- ``shooter``: the fixed-bottom shooter family's ``Shooter`` (cannon, lanes, gun, bombs) and
+  ``Pack`` of enemies, ``march`` (formations), ``bounce``.
 """
 
-from . import amidar, asterix, bankheist, freeway, frostbite, kangaroo, mspacman, pong, qbert, spaceinvaders
-
-__all__ = ["amidar", "asterix", "bankheist", "freeway", "frostbite", "kangaroo", "mspacman", "pong", "qbert", "spaceinvaders"]
+from . import amidar  # noqa: F401
+from . import assault  # noqa: F401
+from . import asterix  # noqa: F401
+from . import atlantis  # noqa: F401
+from . import bankheist  # noqa: F401
+from . import beamrider  # noqa: F401
+from . import centipede  # noqa: F401
+from . import demonattack  # noqa: F401
+from . import freeway  # noqa: F401
+from . import frostbite  # noqa: F401
+from . import gopher  # noqa: F401
+from . import kangaroo  # noqa: F401
+from . import mspacman  # noqa: F401
+from . import phoenix  # noqa: F401
+from . import pong  # noqa: F401
+from . import qbert  # noqa: F401
+from . import spaceinvaders  # noqa: F401

@@ -1,0 +1,229 @@
+"""Fixed-bottom shooters: a cannon on a row near the bottom (or on fixed lanes, or fixed
+turrets), shots straight up with a cooldown, enemies that descend in packs and waves, and
+bombs that fall on the cannon.
+
+A game derives its Params from ``ShooterParams`` and its task from ``Shooter``::
+
+    class Demons(Shooter):
+        def _setup(self, rng):
+            self.arm(rng)                          # start(), the cannon, its gun, the bombs
+            self.pack = Pack()                     # the enemies: Bodies with a glyph
+        def _play(self, action):
+            self.steer(action)                     # LEFT/RIGHT (lane to lane), FIRE
+            for body, cell in self.volley(self.pack.at):   # shots that hit an enemy
+                self.pack.kill(body); self.score.gain()
+            if self.rain():                        # bombs fall; True when one hit the cannon
+                self.lose_life("A bomb hit you.")
+
+``_sprites`` draws the pack, your shots, the bombs and the cannon. Action ids are fixed:
+0 NOOP, 1 LEFT, 2 RIGHT, 3 FIRE (games may append more after them).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ...core.actions import ActionSet
+from ...core.params import param
+from .bodies import Body, Gun
+from .engine import ArcadeParams, ArcadeTask
+
+NOOP, LEFT, RIGHT, FIRE = 0, 1, 2, 3
+CANNON, SHOT, BOMB = "A", "|", "!"
+BASE_ACTIONS = [("NOOP", "hold still"), ("LEFT", "move one cell left"),
+                ("RIGHT", "move one cell right"), ("FIRE", "shoot straight up")]
+
+
+def shooter_actions(*extra: tuple[str, str], left: str = "move one cell left",
+                    right: str = "move one cell right") -> ActionSet:
+    """NOOP, LEFT, RIGHT, FIRE (ids 0-3) and the game's own actions after them."""
+    base = [BASE_ACTIONS[0], ("LEFT", left), ("RIGHT", right), BASE_ACTIONS[3]]
+    return ActionSet(base + list(extra), noop="NOOP")
+
+
+@dataclass(frozen=True)
+class ShooterParams(ArcadeParams):
+    cooldown: int = param(1, 1, 20)       # turns between your shots
+    shot_speed: int = param(2, 1, 4)      # cells a shot climbs a turn
+    shots: int = param(1, 1, 4)           # your shots in flight at once at most
+    bomb_chance: float = param(0.0, 0, 1)  # chance a turn that an enemy drops a bomb
+    bombs: int = param(2, 1, 10)          # bombs falling at once at most
+
+
+class Pack:
+    """The enemies on the field: a few Bodies (glyph, data free for the game). Few enough that
+    a scan beats an index."""
+    __slots__ = ("bodies",)
+
+    def __init__(self) -> None:
+        self.bodies: list[Body] = []
+
+    def add(self, r: int, c: int, glyph: str, dr: int = 0, dc: int = 0, data=None) -> Body:
+        b = Body(r, c, dr, dc, glyph, data)
+        self.bodies.append(b)
+        return b
+
+    def at(self, r: int, c: int) -> Body | None:
+        for b in self.bodies:
+            if b.r == r and b.c == c:
+                return b
+        return None
+
+    def kill(self, body: Body) -> None:
+        body.alive = False
+        self.bodies.remove(body)
+
+    def lowest(self) -> int:
+        return max((b.r for b in self.bodies), default=-1)
+
+    def __len__(self) -> int:
+        return len(self.bodies)
+
+
+def per(n: int, what: str) -> str:
+    """'a cell a turn' style counts: ``per(1, "cell")`` is "a cell", ``per(3, "cell")`` "3 cells"."""
+    return f"a {what}" if n == 1 else f"{n} {what}s"
+
+
+def march(bodies: list[Body], dx: int, lo: int, hi: int, down: bool) -> int:
+    """Move a formation (``bodies``) ``dx`` sideways together; at an edge (``lo``/``hi``) it
+    turns and steps down instead, as it also does when ``down``. The new ``dx`` comes back."""
+    if not bodies:
+        return dx
+    cs = [b.c for b in bodies]
+    if min(cs) + dx < lo or max(cs) + dx > hi:
+        dx, down = -dx, True
+    else:
+        for b in bodies:
+            b.c += dx
+    if down:
+        for b in bodies:
+            b.r += 1
+    return dx
+
+
+def bounce(body: Body, lo: int, hi: int) -> None:
+    """Move ``body`` one step sideways, turning back at ``lo``/``hi``."""
+    c = body.c + body.dc
+    if c < lo or c > hi:
+        body.dc = -body.dc
+        c = body.c + body.dc
+    body.c = c
+
+
+class Shooter(ArcadeTask):
+    Params = ShooterParams
+    ACTIONS = shooter_actions()
+    lanes: tuple[int, ...] | None = None   # the columns the cannon may stand on (None: all)
+    cannon = CANNON
+
+    def prompt_fields(self) -> dict:
+        p = self.params
+        many = "one shot at a time" if p.shots == 1 else f"at most {p.shots} shots in flight"
+        wait = f", one every {p.cooldown} turns" if p.cooldown > 1 else ""
+        death = self.pattern == "D" and p.death
+        return {**super().prompt_fields(), "death_text": f"; {p.death:g} when the game is lost" if death else "",
+                "gun_text": f"FIRE sends a shot (|) up {per(p.shot_speed, 'cell')} a turn, {many}{wait}."}
+
+    def arm(self, rng, row: int | None = None) -> None:
+        """Call first in ``_setup``: ``start``, the cannon (middle of the row), gun and bombs."""
+        self.start(rng)
+        p = self.params
+        self.row = p.height - 1 if row is None else row
+        self.lane_list = self._lanes()
+        self.col = self.lane_list[len(self.lane_list) // 2] if self.lane_list else p.width // 2
+        self.gun = Gun(cooldown=p.cooldown, speed=p.shot_speed, reach=p.height, limit=p.shots)
+        self.bombs = Gun(cooldown=0, speed=1, reach=p.height, limit=p.bombs)
+        self.pack = Pack()
+
+    def _lanes(self) -> list[int] | None:
+        return list(self.lanes) if self.lanes else None
+
+    def steer(self, action: int) -> None:
+        """LEFT/RIGHT move a cell (or hop to the next lane); FIRE shoots up from the cannon."""
+        if action == LEFT or action == RIGHT:
+            step = -1 if action == LEFT else 1
+            lanes = self.lane_list
+            if lanes:
+                i = lanes.index(self.col) + step
+                if 0 <= i < len(lanes):
+                    self.col = lanes[i]
+            else:
+                self.col = min(self.params.width - 1, max(0, self.col + step))
+        elif action == FIRE:
+            self.gun.fire(self.tick, self.row, self.col, -1, 0, SHOT)
+
+    def volley(self, at=None) -> list[tuple[Body, tuple[int, int]]]:
+        """Move your shots; (enemy, cell) for each that hit one of ``at(r, c)`` (the pack's by
+        default; a shot leaving the field or hitting ``_blocks`` is gone)."""
+        if not self.gun.shots:
+            return []
+        at = at or self.pack.at
+        hits = []
+        for shot, cell in self.gun.advance(lambda r, c: r < 0 or self._blocks(r, c) or at(r, c) is not None):
+            if cell is not None and cell[0] >= 0:
+                foe = at(*cell)
+                if foe is not None:
+                    hits.append((foe, cell))
+                else:
+                    self._struck(*cell)
+        return hits
+
+    def shoot_down(self, say: str, at=None) -> list | None:
+        """``volley``, then kill, announce and score (a unit each) every enemy hit; the (enemy,
+        cell) hits come back, or None when one of them won the game."""
+        hits = self.volley(at)
+        for foe, _ in hits:
+            self.pack.kill(foe)
+            self.say(say)
+            self.score.gain()
+            if self.done:
+                return None
+        return hits
+
+    def _blocks(self, r: int, c: int) -> bool:
+        """A still cell that stops shots and bombs (shields, mushrooms); none by default."""
+        return False
+
+    def _struck(self, r: int, c: int) -> None:
+        """A shot or a bomb stopped on a blocking cell (``_blocks``)."""
+
+    def drop(self, r: int, c: int) -> None:
+        """An enemy at (r, c) drops a bomb, if fewer than ``bombs`` are falling."""
+        self.bombs.fire(self.tick, r, c, 1, 0, BOMB)
+
+    def maybe_drop(self) -> None:
+        """With chance ``bomb_chance``, a random enemy drops a bomb."""
+        p = self.params
+        if self.pack.bodies and p.bomb_chance and self.draws.random() < p.bomb_chance:
+            b = self.pack.bodies[self.draws.below(len(self.pack.bodies))]
+            self.drop(b.r, b.c)
+
+    def rain(self) -> bool:
+        """Bombs fall a cell; True when one reached the cannon (the bomb is gone)."""
+        if not self.bombs.shots:
+            return False
+        hit = False
+        row, col, h = self.row, self.col, self.params.height
+        for bomb, cell in self.bombs.advance(lambda r, c: r >= h or (r == row and c == col) or self._blocks(r, c)):
+            if cell is None or cell[0] >= h:
+                continue
+            if cell == (row, col):
+                hit = True
+            else:
+                self._struck(*cell)
+        return hit
+
+    def touches(self) -> bool:
+        """An enemy on the cannon's cell."""
+        return self.pack.at(self.row, self.col) is not None
+
+    def _respawn(self) -> None:
+        self.bombs.shots = []
+
+    def _sprites(self):
+        out = [(b.r, b.c, b.glyph) for b in self.pack.bodies]
+        out += [(s.r, s.c, SHOT) for s in self.gun.shots]
+        out += [(b.r, b.c, BOMB) for b in self.bombs.shots]
+        out.append((self.row, self.col, self.cannon))
+        return out
