@@ -9,9 +9,12 @@ Engine-level modules, which the games import (and nothing else of the family):
   ``register_arcade`` (both presets from one call);
 - ``bodies``: bodies with a velocity and swept motion, wrapping, guns (range, cooldown,
   limit), formations that sweep and descend, scripted opponents (``track``, ``chase``),
-  countdowns (fuel, oxygen, clocks).
+  countdowns (fuel, oxygen, clocks);
+- ``scroller``: scrolling worlds (``Strip``: the window that moves a line a scroll; ``Channel``:
+  a river or road of wandering width; ``Pacer``: periodic or speed-driven timing).
 """
 
 from . import freeway, pong, spaceinvaders
+from . import riverraid
 
-__all__ = ["freeway", "pong", "spaceinvaders"]
+__all__ = ["freeway", "pong", "spaceinvaders", "riverraid"]

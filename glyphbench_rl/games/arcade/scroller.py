@@ -1,0 +1,109 @@
+"""Scrolling worlds for arcade games (river raid, skiing, enduro, side-scrolling shooters).
+
+The visible window is a ``Strip``: row strings that hold the scenery and everything that rides
+with it (banks, obstacles, gates, parked cars). Each scroll drops one edge line and brings in a
+fresh one at the opposite edge from a ``make`` callback (the game's spawner), so the world moves
+while the player stays put on its axis; drawing is the strip's rows plus a few movers::
+
+    strip = Strip(rows, axis="down")        # or "up", "left" (rows enter top/bottom/right)
+    gone = strip.scroll(self._new_row())    # the line that left the window (what was passed)
+    if strip.get(r, c) == OBSTACLE: ...     # things are read and cleared in place
+    strip.put(r, c, EMPTY)
+
+``Channel`` is a river or road whose two banks wander a column at a time between a narrowest
+and a widest width (``Channel.next()`` gives the next line's banks); ``Pacer`` times scrolls and
+spawns by tick (``every`` ticks, or a variable ``period`` for a speed).
+"""
+
+from __future__ import annotations
+
+from .engine import EMPTY
+
+
+class Strip:
+    """The window on a scrolling world: ``rows`` of equal width. ``scroll(line)`` moves the world
+    one cell: "down" inserts ``line`` (a row) at the top and drops the bottom row, "up" appends
+    it at the bottom and drops the top row, "left" appends ``line`` (one char per row, a string)
+    at the right edge and drops the left column. It returns what left the window."""
+    __slots__ = ("rows", "axis", "shifts")
+
+    def __init__(self, rows: list[str], axis: str = "down") -> None:
+        if axis not in ("down", "up", "left"):
+            raise ValueError(f"axis {axis!r}")
+        self.rows, self.axis, self.shifts = list(rows), axis, 0
+
+    def scroll(self, line: str) -> str:
+        self.shifts += 1
+        rows = self.rows
+        if self.axis == "down":
+            rows.insert(0, line)
+            return rows.pop()
+        if self.axis == "up":
+            rows.append(line)
+            return rows.pop(0)
+        gone = "".join(row[0] for row in rows)
+        self.rows = [row[1:] + ch for row, ch in zip(rows, line)]
+        return gone
+
+    def get(self, r: int, c: int) -> str:
+        if 0 <= r < len(self.rows):
+            row = self.rows[r]
+            if 0 <= c < len(row):
+                return row[c]
+        return ""
+
+    def put(self, r: int, c: int, ch: str) -> None:
+        row = self.rows[r]
+        self.rows[r] = row[:c] + ch + row[c + 1:]
+
+
+class Channel:
+    """A river or road between two banks inside a field ``width`` wide: the water (or tarmac)
+    spans columns ``left..right``; ``next(draws)`` lets each bank wander by at most one column
+    (with probability ``wander``) while the span stays within [narrow, wide] cells and a
+    one-cell bank remains on each side."""
+    __slots__ = ("width", "narrow", "wide", "wander", "left", "right")
+
+    def __init__(self, width: int, narrow: int, wide: int, wander: float = 0.3) -> None:
+        self.width, self.narrow, self.wide, self.wander = width, narrow, min(wide, width - 2), wander
+        span = self.wide
+        self.left = (width - span) // 2
+        self.right = self.left + span - 1
+
+    def next(self, draws) -> tuple[int, int]:
+        if self.narrow < self.wide and draws.random() < self.wander:
+            side = draws.random()
+            step = 1 if draws.random() < 0.5 else -1
+            if side < 0.5:
+                left = self.left + step
+                if 1 <= left and self.narrow <= self.right - left + 1 <= self.wide:
+                    self.left = left
+            else:
+                right = self.right + step
+                if right <= self.width - 2 and self.narrow <= right - self.left + 1 <= self.wide:
+                    self.right = right
+        return self.left, self.right
+
+    def line(self, bank: str, water: str = EMPTY) -> str:
+        """This line as text: banks outside the span, water inside."""
+        return bank * self.left + water * (self.right - self.left + 1) + bank * (self.width - 1 - self.right)
+
+
+class Pacer:
+    """When things happen by tick: ``due(tick)`` is true every ``period`` ticks (0 never);
+    ``period`` may change (a speed) and counts from the last time it was due."""
+    __slots__ = ("period", "last")
+
+    def __init__(self, period: int) -> None:
+        self.period, self.last = period, 0
+
+    def due(self, tick: int) -> bool:
+        if self.period > 0 and tick - self.last >= self.period:
+            self.last = tick
+            return True
+        return False
+
+
+def put_one(line: str, c: int, ch: str) -> str:
+    """``line`` with ``ch`` at column ``c``."""
+    return line[:c] + ch + line[c + 1:]

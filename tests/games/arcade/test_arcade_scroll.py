@@ -1,0 +1,111 @@
+"""The scrolling family: the scroller engine (strips, channels, pacers) and, per game, a scripted
+win path and loss path on each MiniAtari preset and a scripted policy that scores on each Atari
+preset."""
+
+from __future__ import annotations
+
+import pytest
+
+from glyphbench_rl import make
+from glyphbench_rl.games.arcade.scroller import Channel, Pacer, Strip, put_one
+from glyphbench_rl.games.common.lanes import Draws
+
+SEEDS = (0, 3, 11)
+
+
+def play(task_id: str, policy, seed: int, turns: int | None = None):
+    env = make(task_id)
+    env.reset(seed=seed)
+    done, n = False, 0
+    while not done and (turns is None or n < turns):
+        _, _, term, trunc, info = env.step(policy(env))
+        done, n = term or trunc, n + 1
+    return env, info
+
+
+def toward(col: int, target: int, left: int = 1, right: int = 2, stay: int = 0) -> int:
+    return stay if col == target else (left if target < col else right)
+
+
+# -- the engine -----------------------------------------------------------------------------------
+def test_strip_scrolls_the_world_past_a_fixed_player():
+    down = Strip(["a..", "b..", "c.."], "down")
+    assert down.scroll("n..") == "c.." and down.rows == ["n..", "a..", "b.."]
+    up = Strip(["a..", "b..", "c.."], "up")
+    assert up.scroll("n..") == "a.." and up.rows[-1] == "n.."
+    left = Strip(["ab", "cd"], "left")
+    assert left.scroll("xy") == "ac" and left.rows == ["bx", "dy"] and left.shifts == 1
+    left.put(0, 1, "Z")
+    assert left.get(0, 1) == "Z" and left.get(5, 0) == "" and put_one("...", 1, "o") == ".o."
+
+
+def test_channel_wanders_one_column_a_line_within_its_widths():
+    import numpy as np
+    ch, draws = Channel(20, 5, 12, wander=1.0), Draws(np.random.default_rng(0))
+    spans = set()
+    prev = (ch.left, ch.right)
+    for _ in range(500):
+        left, right = ch.next(draws)
+        assert 1 <= left and right <= 18 and 5 <= right - left + 1 <= 12
+        assert abs(left - prev[0]) + abs(right - prev[1]) <= 1
+        spans.add(right - left + 1)
+        prev = (left, right)
+    assert len(spans) > 3 and ch.line("#").count(".") == ch.right - ch.left + 1
+
+
+def test_pacer_follows_a_changing_period():
+    p = Pacer(2)
+    assert [p.due(t) for t in range(1, 6)] == [False, True, False, True, False]
+    p.period = 1
+    assert p.due(5) and p.due(6)
+    p.period = 0
+    assert not p.due(20)
+
+
+# -- River Raid -----------------------------------------------------------------------------------
+def river_targets(env):
+    rows = env.strip.rows
+    for r in range(env.jet_r - 1, -1, -1):
+        for c, ch in enumerate(rows[r]):
+            if ch in "SH":
+                yield r, c
+
+
+def river_gunner(env) -> int:
+    target = next(river_targets(env), None)
+    if env.params.fuel and env.fuel.left < 25:
+        depots = [(r, c) for r in range(env.jet_r) for c, ch in enumerate(env.strip.rows[r]) if ch == "F"]
+        if depots:
+            target = max(depots)
+    if target is None:
+        water = [c for c, ch in enumerate(env.strip.rows[env.jet_r - 1]) if ch != "#"]
+        return toward(env.col, (water[0] + water[-1]) // 2)
+    step = toward(env.col, target[1])
+    nxt = env.strip.get(env.jet_r - 1, env.col + (0, -1, 1)[step])
+    if step and nxt in "#SH":
+        return 3
+    return 3 if step == 0 else step
+
+
+def river_kamikaze(env) -> int:
+    target = next(river_targets(env), None)
+    return 0 if target is None else toward(env.col, target[1])
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_riverraid_shooting_everything_reaches_the_bridge(seed):
+    env, info = play("glyphbench/miniatari-riverraid-v0", river_gunner, seed)
+    assert info["won"] is True and env.score.done == env.params.goal
+    assert env.episode_return == pytest.approx(1.0) and not info["clamped"]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_riverraid_flying_into_an_enemy_crashes(seed):
+    env, info = play("glyphbench/miniatari-riverraid-v0", river_kamikaze, seed)
+    assert info["won"] is False
+    assert -1 <= env.episode_return < 0 and not info["clamped"]
+
+
+def test_riverraid_atari_scores_with_fuel_and_wandering_banks():
+    env, info = play("glyphbench/atari-riverraid-v0", river_gunner, 1, turns=600)
+    assert env.episode_return > 0 and env.channel.narrow < env.channel.wide
