@@ -109,3 +109,67 @@ def test_riverraid_flying_into_an_enemy_crashes(seed):
 def test_riverraid_atari_scores_with_fuel_and_wandering_banks():
     env, info = play("glyphbench/atari-riverraid-v0", river_gunner, 1, turns=600)
     assert env.episode_return > 0 and env.channel.narrow < env.channel.wide
+
+
+# -- Zaxxon ---------------------------------------------------------------------------------------
+def zax_things(env, glyphs):
+    out = []
+    for r, row in enumerate(env.strip.rows):
+        for c, ch in enumerate(row):
+            if ch in glyphs and c > env.col:
+                out.append((c, r))
+    return sorted(out)
+
+
+def zax_danger(env, r):
+    if not 0 <= r < env.params.height:
+        return True
+    if any(b.r == r and env.col <= b.c <= env.col + 3 for b in env.flak.shots):
+        return True
+    return any(env.strip.get(r, c) not in (".", "") for c in (env.col, env.col + 1))
+
+
+def zax_pilot(env) -> int:
+    walls = [(c, r) for c, r in zax_things(env, "#") if c <= env.col + 6]
+    if walls:
+        c = walls[0][0]
+        rows = [r for r in range(env.params.height) if env.strip.get(r, c) == "."]
+        target = rows[len(rows) // 2]
+    else:
+        glyphs = "TF" if env.params.fuel and env.fuel.left < 40 else "T"
+        things = zax_things(env, glyphs)
+        target = things[0][1] if things else env.r
+    if target == env.r:
+        if walls or not zax_danger(env, env.r) and env.gun.ready_at(env.tick + 1):
+            return 3
+    else:
+        step = 1 if target < env.r else 2
+        if not zax_danger(env, env.r + (-1, 1)[step - 1]):
+            return step
+    for step in (1, 2):
+        if not zax_danger(env, env.r + (-1, 1)[step - 1]):
+            return step if zax_danger(env, env.r) else 3
+    return 3
+
+
+def zax_rammer(env) -> int:
+    things = zax_things(env, "T")
+    return 0 if not things else toward(env.r, things[0][1])
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_zaxxon_shooting_turrets_while_dodging_wins(seed):
+    env, info = play("glyphbench/miniatari-zaxxon-v0", zax_pilot, seed)
+    assert info["won"] is True and env.score.done == env.params.goal
+    assert env.episode_return == pytest.approx(1.0) and not info["clamped"]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_zaxxon_flying_at_turrets_unarmed_is_shot_down(seed):
+    env, info = play("glyphbench/miniatari-zaxxon-v0", zax_rammer, seed)
+    assert info["won"] is False and env.episode_return == pytest.approx(-1.0)
+
+
+def test_zaxxon_atari_scores_through_walls_and_fuel():
+    env, info = play("glyphbench/atari-zaxxon-v0", zax_pilot, 2, turns=800)
+    assert env.score.done > 0 and env.params.wall_every > 0
