@@ -173,3 +173,54 @@ def test_zaxxon_flying_at_turrets_unarmed_is_shot_down(seed):
 def test_zaxxon_atari_scores_through_walls_and_fuel():
     env, info = play("glyphbench/atari-zaxxon-v0", zax_pilot, 2, turns=800)
     assert env.score.done > 0 and env.params.wall_every > 0
+
+
+# -- Skiing ---------------------------------------------------------------------------------------
+def next_gate(env):
+    for r in range(env.params.row + 1, env.params.height):
+        left = env.strip.rows[r].find("[")
+        if left >= 0:
+            return r, left + 1 + env.params.gap // 2
+    return None
+
+
+def ski_slalom(env) -> int:
+    gate = next_gate(env)
+    if gate is None:
+        return 0
+    step = toward(env.col, gate[1])
+    nxt = env.strip.get(env.params.row + 1, env.col + (0, -1, 1)[step])
+    if nxt == "T":                                  # go round a tree
+        for alt in (1, 2, 0):
+            if env.strip.get(env.params.row + 1, env.col + (0, -1, 1)[alt]) not in ("T", ""):
+                return alt
+    return step
+
+
+def ski_astray(env) -> int:
+    gate = next_gate(env)
+    if gate is None:
+        return 0
+    away = 0 if gate[1] > env.params.width // 2 else env.params.width - 1
+    return toward(env.col, away)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_skiing_through_every_gate_wins(seed):
+    env, info = play("glyphbench/miniatari-skiing-v0", ski_slalom, seed)
+    assert info["won"] is True and env.score.done == env.params.goal == env.judged
+    assert env.episode_return == pytest.approx(1.0) and not info["clamped"]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_skiing_missing_gates_ends_the_course_lost(seed):
+    env, info = play("glyphbench/miniatari-skiing-v0", ski_astray, seed)
+    assert info["won"] is False and env.judged == env.params.goal and env.tick < 200
+    assert 0 <= env.episode_return < 1
+
+
+def test_skiing_atari_trees_and_missed_gates_cost_time_only():
+    env, info = play("glyphbench/atari-skiing-v0", ski_slalom, 4)
+    assert env.episode_return > 0 and env.done
+    slow, _ = play("glyphbench/atari-skiing-v0", ski_astray, 4)
+    assert slow.tick > env.tick and slow.episode_return < env.episode_return
