@@ -224,3 +224,64 @@ def test_skiing_atari_trees_and_missed_gates_cost_time_only():
     assert env.episode_return > 0 and env.done
     slow, _ = play("glyphbench/atari-skiing-v0", ski_astray, 4)
     assert slow.tick > env.tick and slow.episode_return < env.episode_return
+
+
+# -- Enduro ---------------------------------------------------------------------------------------
+def gap_ahead(env, k):
+    c = env.cols[k]
+    return next((env.car_r - r for r in range(env.car_r, -1, -1) if env.strip.get(r, c) == "C"), 99)
+
+
+def enduro_racer(env) -> int:
+    best = max(range(env.params.lanes), key=lambda k: (min(gap_ahead(env, k), 6), -abs(k - env.lane)))
+    mine = gap_ahead(env, env.lane)
+    if best == env.lane or mine > 4:
+        return 3 if env.speed < env.params.top else 0
+    k = env.lane + (1 if best > env.lane else -1)
+    if gap_ahead(env, k) > 1:
+        return 2 if k > env.lane else 1
+    return 4 if mine <= 2 else 0
+
+
+def enduro_rammer(env) -> int:
+    for r in range(env.car_r - 1, -1, -1):
+        row = env.strip.rows[r]
+        if "C" in row:
+            k = min(range(env.params.lanes), key=lambda k: (row[env.cols[k]] != "C", abs(k - env.lane)))
+            return 3 if k == env.lane else (1 if k < env.lane else 2)
+    return 3
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_enduro_overtaking_in_free_lanes_wins(seed):
+    env, info = play("glyphbench/miniatari-enduro-v0", enduro_racer, seed)
+    assert info["won"] is True and env.score.done == env.params.goal and env.lives == 2
+    assert env.episode_return == pytest.approx(1.0) and not info["clamped"]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_enduro_two_collisions_end_the_race(seed):
+    env, info = play("glyphbench/miniatari-enduro-v0", enduro_rammer, seed)
+    assert info["won"] is False and env.lives == 0 and 0 <= env.episode_return < 1
+
+
+def test_enduro_speed_sets_the_scroll_and_a_crash_stops_the_car():
+    env = make("glyphbench/miniatari-enduro-v0")
+    env.reset(seed=0)
+    for _ in range(6):
+        env.step(0)
+    assert env.strip.shifts == env.params.height - 3          # standing still: no scroll
+    env.step(3)
+    env.step(3)
+    env.step(3)
+    before = env.strip.shifts
+    for _ in range(4):
+        env.step(0)
+    assert env.speed == 3 and env.strip.shifts - before == 4   # top speed: a row a turn
+
+
+def test_enduro_atari_collisions_only_cost_speed():
+    env, info = play("glyphbench/atari-enduro-v0", enduro_racer, 5, turns=1500)
+    assert env.score.points > 20 and not env.done or info["won"]
+    rammed, _ = play("glyphbench/atari-enduro-v0", enduro_rammer, 5, turns=300)
+    assert not rammed.done and rammed.lives == 1
