@@ -21,7 +21,7 @@ LEFT, RIGHT, ACCEL, BRAKE = 1, 2, 3, 4
 
 @dataclass(frozen=True)
 class EnduroParams(ArcadeParams):
-    height: int = param(10, 6, 40)
+    height: int = param(9, 6, 40)
     lives: int = param(2, 1, 9)
     goal: int = param(5, 1, 1000)          # cars to overtake
     unit: float = param(0.2, 0, 100)
