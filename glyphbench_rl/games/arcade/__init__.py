@@ -15,6 +15,6 @@ Engine-level modules, which the games import (and nothing else of the family):
 """
 
 from . import freeway, pong, spaceinvaders
-from . import enduro, riverraid, skiing, zaxxon
+from . import enduro, riverraid, skiing, upndown, zaxxon
 
-__all__ = ["freeway", "pong", "spaceinvaders", "riverraid", "zaxxon", "skiing", "enduro"]
+__all__ = ["freeway", "pong", "spaceinvaders", "riverraid", "zaxxon", "skiing", "enduro", "upndown"]

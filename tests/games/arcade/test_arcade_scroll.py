@@ -285,3 +285,50 @@ def test_enduro_atari_collisions_only_cost_speed():
     assert env.score.points > 20 and not env.done or info["won"]
     rammed, _ = play("glyphbench/atari-enduro-v0", enduro_rammer, 5, turns=300)
     assert not rammed.done and rammed.lives == 1
+
+
+# -- Up'n Down ------------------------------------------------------------------------------------
+def car_threat(env, r, c):
+    return any(car.c == c and r - 3 <= car.r <= r for car in env.cars)
+
+
+def up_driver(env) -> int:
+    if env.tick >= env.landing and car_threat(env, env.r, env.col):
+        return 5                                    # JUMP
+    flags = [(r, row.index("F")) for r, row in enumerate(env.strip.rows) if "F" in row and r <= env.r]
+    if not flags:
+        return 0
+    fr, fc = max(flags)
+    if fc != env.col:
+        nc = env.col + (1 if fc > env.col else -1)
+        if env.strip.get(env.r, nc) != "#" and not car_threat(env, env.r, nc):
+            return 4 if fc > env.col else 3
+    if fr < env.r and env.r > env.params.height // 2 and not car_threat(env, env.r - 1, env.col):
+        return 1
+    return 0
+
+
+def up_reckless(env) -> int:
+    near = [car for car in env.cars if car.r <= env.r]
+    if not near:
+        return 0
+    car = max(near, key=lambda b: b.r)
+    return 0 if car.c == env.col else (4 if car.c > env.col else 3)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_upndown_collecting_flags_and_jumping_cars_wins(seed):
+    env, info = play("glyphbench/miniatari-upndown-v0", up_driver, seed)
+    assert info["won"] is True and env.score.done == env.params.goal
+    assert env.episode_return == pytest.approx(1.0) and not info["clamped"]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_upndown_driving_into_a_car_wrecks(seed):
+    env, info = play("glyphbench/miniatari-upndown-v0", up_reckless, seed)
+    assert info["won"] is False and 0 <= env.episode_return < 1 and "A car hit you!" in env._messages
+
+
+def test_upndown_atari_scores_flags_and_crushes_on_a_wandering_road():
+    env, info = play("glyphbench/atari-upndown-v0", up_driver, 1, turns=1000)
+    assert env.score.done > 0 and env.channel.narrow < env.channel.wide
