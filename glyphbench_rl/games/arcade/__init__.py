@@ -15,6 +15,6 @@ Engine-level modules, which the games import (and nothing else of the family):
 """
 
 from . import freeway, pong, spaceinvaders
-from . import enduro, riverraid, skiing, upndown, zaxxon
+from . import enduro, riverraid, skiing, stargunner, upndown, zaxxon
 
-__all__ = ["freeway", "pong", "spaceinvaders", "riverraid", "zaxxon", "skiing", "enduro", "upndown"]
+__all__ = ["freeway", "pong", "spaceinvaders", "riverraid", "zaxxon", "skiing", "enduro", "upndown", "stargunner"]

@@ -332,3 +332,33 @@ def test_upndown_driving_into_a_car_wrecks(seed):
 def test_upndown_atari_scores_flags_and_crushes_on_a_wandering_road():
     env, info = play("glyphbench/atari-upndown-v0", up_driver, 1, turns=1000)
     assert env.score.done > 0 and env.channel.narrow < env.channel.wide
+
+
+# -- Stargunner -----------------------------------------------------------------------------------
+def gunner_pilot(env) -> int:
+    if any(b.r == env.r and env.col < b.c <= env.col + 3 for b in env.bolts):
+        return 1 if env.r > 0 else 2                # step out of an enemy shot's row
+    if not env.enemies:
+        return 0
+    e = min(env.enemies, key=lambda e: e.c)
+    if e.r != env.r:
+        return 1 if e.r < env.r else 2
+    return 5
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_stargunner_lining_up_and_firing_wins(seed):
+    env, info = play("glyphbench/miniatari-stargunner-v0", gunner_pilot, seed)
+    assert info["won"] is True and env.score.done == env.params.goal
+    assert env.episode_return == pytest.approx(1.0) and not info["clamped"]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_stargunner_holding_fire_lets_an_enemy_past(seed):
+    env, info = play("glyphbench/miniatari-stargunner-v0", lambda env: 0, seed)
+    assert info["won"] is False and env.episode_return == 0 and env.tick < 200
+
+
+def test_stargunner_atari_scores_under_fire():
+    env, info = play("glyphbench/atari-stargunner-v0", gunner_pilot, 0, turns=1500)
+    assert env.score.done > 5
