@@ -11,10 +11,11 @@ Engine-level modules, which the games import (and nothing else of the family):
   limit), formations that sweep and descend, scripted opponents (``track``, ``chase``),
   countdowns (fuel, oxygen, clocks);
 - ``scroller``: scrolling worlds (``Strip``: the window that moves a line a scroll; ``Channel``:
-  a river or road of wandering width; ``Pacer``: periodic or speed-driven timing).
+  a river or road of wandering width; ``Pacer``: periodic or speed-driven timing; ``Camera``:
+  a view following the player around a wrapping world).
 """
 
 from . import freeway, pong, spaceinvaders
-from . import enduro, riverraid, skiing, stargunner, upndown, zaxxon
+from . import choppercommand, enduro, riverraid, skiing, stargunner, upndown, zaxxon
 
-__all__ = ["freeway", "pong", "spaceinvaders", "riverraid", "zaxxon", "skiing", "enduro", "upndown", "stargunner"]
+__all__ = ["freeway", "pong", "spaceinvaders", "riverraid", "zaxxon", "skiing", "enduro", "upndown", "stargunner", "choppercommand"]

@@ -107,3 +107,21 @@ class Pacer:
 def put_one(line: str, c: int, ch: str) -> str:
     """``line`` with ``ch`` at column ``c``."""
     return line[:c] + ch + line[c + 1:]
+
+
+class Camera:
+    """A view ``view`` columns wide on a world ``world`` columns around (it wraps), kept centred
+    on a followed column: ``follow(x)`` moves the view, ``screen(x)`` is a world column's place in
+    the view (-1 when out of it). A world no wider than the view never moves."""
+    __slots__ = ("world", "view", "left")
+
+    def __init__(self, world: int, view: int) -> None:
+        self.world, self.view, self.left = world, view, 0
+
+    def follow(self, x: int) -> None:
+        if self.world > self.view:
+            self.left = (x - self.view // 2) % self.world
+
+    def screen(self, x: int) -> int:
+        c = (x - self.left) % self.world
+        return c if c < self.view else -1

@@ -362,3 +362,57 @@ def test_stargunner_holding_fire_lets_an_enemy_past(seed):
 def test_stargunner_atari_scores_under_fire():
     env, info = play("glyphbench/atari-stargunner-v0", gunner_pilot, 0, turns=1500)
     assert env.score.done > 5
+
+
+def test_camera_follows_around_a_wrapping_world():
+    from glyphbench_rl.games.arcade.scroller import Camera
+    cam = Camera(40, 10)
+    cam.follow(2)
+    assert cam.left == 37 and cam.screen(2) == 5 and cam.screen(38) == 1 and cam.screen(20) == -1
+    still = Camera(10, 10)
+    still.follow(7)
+    assert still.left == 0 and still.screen(9) == 9
+
+
+# -- Chopper Command ------------------------------------------------------------------------------
+def wdist(env, a, b):
+    """Signed shortest step from column a to column b in the wrapping world."""
+    w = env.params.world
+    d = (b - a) % w
+    return d - w if d > w // 2 else d
+
+
+def chopper_pilot(env) -> int:
+    if not env.enemies:
+        return 0
+    e = min(env.enemies, key=lambda e: -e.r)          # the one closest to the trucks
+    dx = wdist(env, env.x, e.c)
+    if e.r == env.r and dx and abs(dx) <= env.params.reach - 3 and (dx > 0) == (env.face > 0):
+        return 5
+    if abs(dx) < 3 and e.r != env.r:
+        return 1 if dx > 0 else 2                     # keep a lane's distance while climbing
+    if e.r != env.r:
+        return 3 if e.r < env.r else 4
+    return 2 if dx > 0 else 1
+
+
+def chopper_idle(env) -> int:
+    return 3                                          # sit at the top, away from the fight
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_choppercommand_hunting_the_divers_wins(seed):
+    env, info = play("glyphbench/miniatari-choppercommand-v0", chopper_pilot, seed)
+    assert info["won"] is True and env.score.done == env.params.goal and env.trucks
+    assert env.episode_return == pytest.approx(1.0) and not info["clamped"]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_choppercommand_idling_loses_the_convoy(seed):
+    env, info = play("glyphbench/miniatari-choppercommand-v0", chopper_idle, seed)
+    assert info["won"] is False and env.episode_return < 0
+
+
+def test_choppercommand_atari_scrolls_and_scores():
+    env, info = play("glyphbench/atari-choppercommand-v0", chopper_pilot, 0, turns=2000)
+    assert env.score.done > 3 and env.camera.left != 0
