@@ -416,3 +416,58 @@ def test_choppercommand_idling_loses_the_convoy(seed):
 def test_choppercommand_atari_scrolls_and_scores():
     env, info = play("glyphbench/atari-choppercommand-v0", chopper_pilot, 0, turns=2000)
     assert env.score.done > 3 and env.camera.left != 0
+
+
+# -- Defender -------------------------------------------------------------------------------------
+def defender_pilot(env) -> int:
+    landers = {(lander.r, lander.c) for lander in env.landers}
+    w = env.params.world
+    carrying = any(m.data == 3 for m in env.people)
+    if carrying:
+        if (env.r - 1, env.x) in landers or (env.r - 2, env.x) in landers:
+            return 5 if any(r == env.r for r, _ in landers) else 2
+        return 3
+    for lander in env.landers:                        # shoot one in line and in front
+        dx = wdist(env, env.x, lander.c)
+        if lander.r == env.r and dx and (dx > 0) == (env.face > 0) and abs(dx) <= env.params.reach:
+            return 5
+    free = [m for m in env.people if m.data in (0, 2)]
+    grabbed = [lander for lander in env.landers if lander.data is not None]
+    if grabbed:                                       # line up with a kidnapper and shoot it
+        lander = max(grabbed, key=lambda b: b.r)
+        dx = wdist(env, env.x, lander.c)
+        if lander.r != env.r:
+            if abs(dx) < 2:
+                return 1 if dx >= 0 else 2
+            return 3 if lander.r < env.r else 4
+        return 2 if dx > 0 else 1
+    if not free:
+        return 0
+    man = min(free, key=lambda m: abs(wdist(env, env.x, m.c)))
+    dx = wdist(env, env.x, man.c)
+    step = (4 if man.r > env.r else 3) if man.r != env.r else 0
+    if dx and (abs(dx) > abs(man.r - env.r) or not step):
+        step = 2 if dx > 0 else 1
+    dr, dc = ((0, 0), (0, -1), (0, 1), (-1, 0), (1, 0))[step]
+    if (env.r + dr, (env.x + dc) % w) in landers:
+        return 0
+    return step
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_defender_carrying_humans_off_the_top_wins(seed):
+    env, info = play("glyphbench/miniatari-defender-v0", defender_pilot, seed)
+    assert info["won"] is True and env.score.done == env.params.goal
+    assert env.episode_return == pytest.approx(1.0) and not info["clamped"]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_defender_idling_lets_landers_abduct(seed):
+    env, info = play("glyphbench/miniatari-defender-v0", lambda env: 0, seed)
+    assert info["won"] is False and env.episode_return == 0 and env.tick < 300
+    assert len(env.people) < env.params.humans
+
+
+def test_defender_atari_rescues_on_a_wrapping_planet():
+    env, info = play("glyphbench/atari-defender-v0", defender_pilot, 0, turns=3000)
+    assert env.score.done > 0 and env.params.world > env.params.width
