@@ -16,6 +16,6 @@ Engine-level modules, which the games import (and nothing else of the family):
 """
 
 from . import freeway, pong, spaceinvaders
-from . import choppercommand, defender, enduro, riverraid, skiing, stargunner, upndown, zaxxon
+from . import choppercommand, defender, enduro, kungfumaster, riverraid, skiing, stargunner, upndown, zaxxon
 
-__all__ = ["freeway", "pong", "spaceinvaders", "riverraid", "zaxxon", "skiing", "enduro", "upndown", "stargunner", "choppercommand", "defender"]
+__all__ = ["freeway", "pong", "spaceinvaders", "riverraid", "zaxxon", "skiing", "enduro", "upndown", "stargunner", "choppercommand", "defender", "kungfumaster"]

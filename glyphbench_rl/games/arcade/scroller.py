@@ -110,17 +110,19 @@ def put_one(line: str, c: int, ch: str) -> str:
 
 
 class Camera:
-    """A view ``view`` columns wide on a world ``world`` columns around (it wraps), kept centred
-    on a followed column: ``follow(x)`` moves the view, ``screen(x)`` is a world column's place in
-    the view (-1 when out of it). A world no wider than the view never moves."""
-    __slots__ = ("world", "view", "left")
+    """A view ``view`` columns wide on a world ``world`` columns around (it wraps; with
+    ``wrap=False`` a corridor whose ends stop the view), kept centred on a followed column:
+    ``follow(x)`` moves the view, ``screen(x)`` is a world column's place in the view (-1 when
+    out of it). A world no wider than the view never moves."""
+    __slots__ = ("world", "view", "left", "wrap")
 
-    def __init__(self, world: int, view: int) -> None:
-        self.world, self.view, self.left = world, view, 0
+    def __init__(self, world: int, view: int, wrap: bool = True) -> None:
+        self.world, self.view, self.left, self.wrap = world, view, 0, wrap
 
     def follow(self, x: int) -> None:
         if self.world > self.view:
-            self.left = (x - self.view // 2) % self.world
+            left = x - self.view // 2
+            self.left = left % self.world if self.wrap else min(max(0, left), self.world - self.view)
 
     def screen(self, x: int) -> int:
         c = (x - self.left) % self.world

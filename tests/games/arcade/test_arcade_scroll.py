@@ -372,6 +372,11 @@ def test_camera_follows_around_a_wrapping_world():
     still = Camera(10, 10)
     still.follow(7)
     assert still.left == 0 and still.screen(9) == 9
+    hall = Camera(40, 10, wrap=False)
+    hall.follow(2)
+    assert hall.left == 0 and hall.screen(39) == -1
+    hall.follow(39)
+    assert hall.left == 30 and hall.screen(39) == 9
 
 
 # -- Chopper Command ------------------------------------------------------------------------------
@@ -471,3 +476,44 @@ def test_defender_idling_lets_landers_abduct(seed):
 def test_defender_atari_rescues_on_a_wrapping_planet():
     env, info = play("glyphbench/atari-defender-v0", defender_pilot, 0, turns=3000)
     assert env.score.done > 0 and env.params.world > env.params.width
+
+
+# -- Kung-Fu Master -------------------------------------------------------------------------------
+def kungfu_fighter(env) -> int:
+    if any(k.c - k.dc == env.x or k.c == env.x + k.dc * -1 for k in env.knives if abs(k.c - env.x) <= 2):
+        return 7                                      # DUCK a knife about to arrive
+    near = sorted(env.enemies, key=lambda e: abs(e.c - env.x))
+    if not near:
+        return 1 if env.params.world > env.params.width else 0
+    e = near[0]
+    side = 1 if e.c > env.x else -1
+    if side != env.face:
+        return 4 if side > 0 else 3
+    gap = abs(e.c - env.x)
+    if gap == 1:
+        return 5
+    if gap == 2:
+        return 6
+    return 1 if env.face < 0 and gap > 3 and env.params.throwers else 0
+
+
+def kungfu_flailer(env) -> int:
+    return 5                                          # punches the same way forever
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_kungfumaster_facing_and_striking_wins(seed):
+    env, info = play("glyphbench/miniatari-kungfumaster-v0", kungfu_fighter, seed)
+    assert info["won"] is True and env.score.done == env.params.goal
+    assert env.episode_return == pytest.approx(1.0) and not info["clamped"]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_kungfumaster_never_turning_round_is_grabbed_from_behind(seed):
+    env, info = play("glyphbench/miniatari-kungfumaster-v0", kungfu_flailer, seed)
+    assert info["won"] is False and -1 <= env.episode_return < 0
+
+
+def test_kungfumaster_atari_scores_and_climbs():
+    env, info = play("glyphbench/atari-kungfumaster-v0", kungfu_fighter, 0, turns=3000)
+    assert env.score.done > 5
