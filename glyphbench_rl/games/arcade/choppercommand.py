@@ -8,18 +8,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ...core.actions import ActionSet
 from ...core.params import param, require
-from .bodies import Body, Gun, chase
+from .bodies import Body, chase
 from .engine import EMPTY, ArcadeParams, ArcadeTask, register_arcade
-from .scroller import Camera
+from .scroller import FLY_ACTIONS, FLY_SHOT, GROUND, LEFT_ME, RIGHT_ME, Flyer
 
-RIGHT_ME, LEFT_ME, ENEMY, TRUCK, SHOT, GROUND = ">", "<", "X", "T", "-", "_"
-ACTIONS = ActionSet([("NOOP", "hover"), ("LEFT", "fly one cell left (face left)"),
-                     ("RIGHT", "fly one cell right (face right)"), ("UP", "climb one row"),
-                     ("DOWN", "descend one row"), ("FIRE", "shoot the way you face")], noop="NOOP")
-MOVES = ((0, 0), (0, -1), (0, 1), (-1, 0), (1, 0), (0, 0))
-FIRE = 5
+ENEMY, TRUCK = "X", "T"
 
 
 @dataclass(frozen=True)
@@ -41,7 +35,7 @@ class ChopperParams(ArcadeParams):
         require(2 * self.trucks <= self.world, "trucks", "fit the ground", self.trucks)
 
 
-class ChopperCommand(ArcadeTask):
+class ChopperCommand(Flyer, ArcadeTask):
     title = "Chopper Command"
     rules = ("You fly the helicopter (> or <, the way you face) over a desert {world} columns "
              "wide{scroll_text}, with {lives_text}. {trucks} trucks (T) drive on the ground row{convoy_text}. "
@@ -51,32 +45,24 @@ class ChopperCommand(ArcadeTask):
              "enemy costs a life; losing every truck ends the game.")
     rewards = "+{unit} for each enemy shot down; {death} when the game is lost."
     ends = "when you have shot down {goal} enemies or the game is lost"
-    ACTIONS = ACTIONS
+    ACTIONS = FLY_ACTIONS
     Params = ChopperParams
     pattern = "D"
     glyphs = {EMPTY: "sky", GROUND: "ground", TRUCK: "truck", ENEMY: "enemy helicopter",
-              SHOT: "your shot", RIGHT_ME: "you (facing right)", LEFT_ME: "you (facing left)"}
+              FLY_SHOT: "your shot", RIGHT_ME: "you (facing right)", LEFT_ME: "you (facing left)"}
 
     def prompt_fields(self) -> dict:
         p = self.params
-        return {**super().prompt_fields(),
-                "scroll_text": (f" (the {p.width}-column view follows you; it wraps around)"
-                                if p.world > p.width else ""),
+        return {**super().prompt_fields(), **self.fly_fields(),
                 "convoy_text": f", a cell right every {p.convoy} turns" if p.convoy else ""}
-
-    def _still(self) -> list[str]:
-        p = self.params
-        return [EMPTY * p.width] * (p.height - 1) + [GROUND * p.width]
 
     def _setup(self, rng) -> None:
         self.start(rng)
         p = self.params
-        self.r, self.x, self.face = p.height // 2, p.world // 2, 1
-        self.camera = Camera(p.world, p.width)
+        self.fly_start(p.height // 2)
         gap = p.world // p.trucks
         self.trucks = [gap // 2 + k * gap for k in range(p.trucks)]
         self.enemies: list[Body] = []
-        self.gun = Gun(cooldown=1, speed=2, reach=p.reach, limit=1)
         self.level, self.left_in_wave, self.to_launch = 0, p.wave, p.wave
 
     def _shot_hits(self, r: int, c: int) -> bool:
@@ -85,13 +71,7 @@ class ChopperCommand(ArcadeTask):
 
     def _play(self, action: int) -> None:
         p = self.params
-        dr, dc = MOVES[action]
-        if dc:
-            self.face = dc
-        self.r = min(p.height - 2, max(0, self.r + dr))
-        self.x = (self.x + dc) % p.world
-        if action == FIRE:
-            self.gun.fire(self.tick, self.r, self.x, 0, self.face, SHOT)
+        self.fly(action, p.height - 2)
         if self._shots() or self._touch():
             return
         if p.convoy and self.tick % p.convoy == 0:
@@ -158,9 +138,7 @@ class ChopperCommand(ArcadeTask):
         low = self.params.height - 1
         out = [(low, cam.screen(t), TRUCK) for t in self.trucks]
         out += [(e.r, cam.screen(e.c), ENEMY) for e in self.enemies]
-        out += [(s.r, cam.screen(s.c % self.params.world), SHOT) for s in self.gun.shots if s.c != self.x]
-        out.append((self.r, cam.screen(self.x), RIGHT_ME if self.face > 0 else LEFT_ME))
-        return out
+        return self.fly_sprites(out)
 
 
 register_arcade(ChopperCommand, "choppercommand",

@@ -8,18 +8,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ...core.actions import ActionSet
 from ...core.params import param, require
-from .bodies import Body, Gun, chase
+from .bodies import Body, chase
 from .engine import EMPTY, ArcadeParams, ArcadeTask, register_arcade
-from .scroller import Camera
+from .scroller import FLY_ACTIONS, FLY_SHOT, FLY_UP, GROUND, LEFT_ME, RIGHT_ME, Flyer
 
-RIGHT_ME, LEFT_ME, LANDER, HUMAN, SHOT, GROUND = ">", "<", "L", "h", "-", "_"
-ACTIONS = ActionSet([("NOOP", "hover"), ("LEFT", "fly one cell left (face left)"),
-                     ("RIGHT", "fly one cell right (face right)"), ("UP", "climb one row (off the top edge: a carried human is rescued)"),
-                     ("DOWN", "descend one row"), ("FIRE", "shoot the way you face")], noop="NOOP")
-MOVES = ((0, 0), (0, -1), (0, 1), (-1, 0), (1, 0), (0, 0))
-FIRE, UP = 5, 3
+LANDER, HUMAN = "L", "h"
 STAND, GRABBED, FALL, RIDE = range(4)
 
 
@@ -42,7 +36,7 @@ class DefenderParams(ArcadeParams):
         require(self.humans >= 1 and 2 * self.humans <= self.world, "humans", "fit the ground", self.humans)
 
 
-class Defender(ArcadeTask):
+class Defender(Flyer, ArcadeTask):
     title = "Defender"
     rules = ("You fly the ship (> or <, the way you face) over a planet {world} columns wide"
              "{scroll_text}, with {lives_text}. {humans} humans (h) stand on the ground. {landers} "
@@ -53,33 +47,26 @@ class Defender(ArcadeTask):
              "costs a life.")
     rewards = "+{unit} for each human rescued{death_text}."
     ends = "when you have rescued {goal} humans, or too few are left to do it, or the game is lost"
-    ACTIONS = ACTIONS
+    ACTIONS = FLY_ACTIONS
     Params = DefenderParams
     pattern = "D"
-    glyphs = {EMPTY: "sky", GROUND: "ground", HUMAN: "human", LANDER: "lander", SHOT: "your shot",
+    glyphs = {EMPTY: "sky", GROUND: "ground", HUMAN: "human", LANDER: "lander", FLY_SHOT: "your shot",
               RIGHT_ME: "you (facing right)", LEFT_ME: "you (facing left)"}
 
     def prompt_fields(self) -> dict:
         p = self.params
-        return {**super().prompt_fields(),
-                "scroll_text": (f" (the {p.width}-column view follows you; it wraps around)"
-                                if p.world > p.width else ""),
+        return {**super().prompt_fields(), **self.fly_fields(),
                 "renew_text": " (a new human then lands)" if p.renew else "",
                 "death_text": f"; {p.death} when the game is lost" if p.death else ""}
-
-    def _still(self) -> list[str]:
-        p = self.params
-        return [EMPTY * p.width] * (p.height - 1) + [GROUND * p.width]
 
     def _setup(self, rng) -> None:
         self.start(rng)
         p = self.params
-        self.r, self.x, self.face, self.stand = 1, p.world // 2, 1, p.height - 2
-        self.camera = Camera(p.world, p.width)
+        self.fly_start(1)
+        self.stand = p.height - 2
         gap = p.world // p.humans
         self.people = [Body(self.stand, gap // 2 + k * gap, data=STAND) for k in range(p.humans)]
         self.landers: list[Body] = []
-        self.gun = Gun(cooldown=1, speed=2, reach=p.reach, limit=1)
 
     def _hit(self, r: int, c: int) -> bool:
         c %= self.params.world
@@ -87,16 +74,9 @@ class Defender(ArcadeTask):
 
     def _play(self, action: int) -> None:
         p = self.params
-        dr, dc = MOVES[action]
-        if dc:
-            self.face = dc
-        if action == UP and self.r == 0:
-            if self._rescue():
-                return
-        self.r = min(self.stand, max(0, self.r + dr))
-        self.x = (self.x + dc) % p.world
-        if action == FIRE:
-            self.gun.fire(self.tick, self.r, self.x, 0, self.face, SHOT)
+        if action == FLY_UP and self.r == 0 and self._rescue():
+            return
+        self.fly(action, self.stand)
         for _, cell in self.gun.advance(self._hit):
             if cell is not None:
                 self._shoot(cell[0], cell[1] % p.world)
@@ -174,9 +154,7 @@ class Defender(ArcadeTask):
         cam.follow(self.x)
         out = [(m.r, cam.screen(m.c), HUMAN) for m in self.people if m.data != RIDE]
         out += [(lander.r, cam.screen(lander.c), LANDER) for lander in self.landers]
-        out += [(s.r, cam.screen(s.c % self.params.world), SHOT) for s in self.gun.shots if s.c != self.x]
-        out.append((self.r, cam.screen(self.x), RIGHT_ME if self.face > 0 else LEFT_ME))
-        return out
+        return self.fly_sprites(out)
 
     def _extra_hud(self) -> str:
         return "Carrying a human" if any(m.data == RIDE for m in self.people) else ""

@@ -8,10 +8,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ...core.actions import ActionSet
-from ...core.params import param, require
+from ...core.params import param
 from .bodies import Countdown, Gun
 from .engine import EMPTY, ArcadeParams, ArcadeTask, register_arcade
-from .scroller import Channel, Pacer, Strip, put_one
+from .scroller import Channel, Pacer, Strip, banks_fit, put_one
 
 JET, SHIP, HELI, FUEL, BANK, BRIDGE, SHOT = "A", "S", "H", "F", "#", "=", "|"
 ENEMIES = (SHIP, HELI)
@@ -34,8 +34,7 @@ class RiverParams(ArcadeParams):
     fuel: int = param(0, 0, 500)          # turns of fuel (0: no fuel)
     depot: int = param(0, 0, 20)          # every n-th spawn is a fuel depot (0: none)
 
-    def check(self) -> None:
-        require(self.narrow <= self.wide <= self.width - 2, "wide", "fit the field with banks", self.wide)
+    check = banks_fit
 
 
 class RiverRaid(ArcadeTask):

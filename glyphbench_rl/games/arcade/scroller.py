@@ -17,6 +17,9 @@ spawns by tick (``every`` ticks, or a variable ``period`` for a speed).
 
 from __future__ import annotations
 
+from ...core.actions import ActionSet
+from ...core.params import require
+from .bodies import Gun
 from .engine import EMPTY
 
 
@@ -127,3 +130,54 @@ class Camera:
     def screen(self, x: int) -> int:
         c = (x - self.left) % self.world
         return c if c < self.view else -1
+
+
+FLY_ACTIONS = ActionSet([("NOOP", "hover"), ("LEFT", "fly one cell left (face left)"),
+                         ("RIGHT", "fly one cell right (face right)"), ("UP", "climb one row"),
+                         ("DOWN", "descend one row"), ("FIRE", "shoot the way you face")], noop="NOOP")
+FLY_MOVES = ((0, 0), (0, -1), (0, 1), (-1, 0), (1, 0), (0, 0))
+FLY_FIRE, FLY_UP = 5, 3
+RIGHT_ME, LEFT_ME, FLY_SHOT, GROUND = ">", "<", "-", "_"
+
+
+class Flyer:
+    """Mixin for an ``ArcadeTask`` whose ship flies over a ground row on a wrapping world the
+    view follows (Chopper Command, Defender): its Params have ``world`` and ``reach``; it faces
+    the way it last moved and FIRE (``FLY_ACTIONS``) shoots that way. ``fly_start(r)`` in
+    ``_setup``; ``fly(action, lowest)`` moves and fires; ``fly_sprites(out)`` adds the shots and
+    the ship to ``out``, drawn through ``self.camera``."""
+
+    def fly_fields(self) -> dict:
+        p = self.params
+        return {"scroll_text": (f" (the {p.width}-column view follows you; it wraps around)"
+                                if p.world > p.width else "")}
+
+    def _still(self) -> list[str]:
+        p = self.params
+        return [EMPTY * p.width] * (p.height - 1) + [GROUND * p.width]
+
+    def fly_start(self, r: int) -> None:
+        p = self.params
+        self.r, self.x, self.face = r, p.world // 2, 1
+        self.camera = Camera(p.world, p.width)
+        self.gun = Gun(cooldown=1, speed=2, reach=p.reach, limit=1)
+
+    def fly(self, action: int, lowest: int) -> None:
+        dr, dc = FLY_MOVES[action]
+        if dc:
+            self.face = dc
+        self.r = min(lowest, max(0, self.r + dr))
+        self.x = (self.x + dc) % self.params.world
+        if action == FLY_FIRE:
+            self.gun.fire(self.tick, self.r, self.x, 0, self.face, FLY_SHOT)
+
+    def fly_sprites(self, out: list) -> list:
+        cam, w = self.camera, self.params.world
+        out += [(s.r, cam.screen(s.c % w), FLY_SHOT) for s in self.gun.shots if s.c != self.x]
+        out.append((self.r, cam.screen(self.x), RIGHT_ME if self.face > 0 else LEFT_ME))
+        return out
+
+
+def banks_fit(p) -> None:
+    """``check`` for Params with a ``Channel`` (``narrow``, ``wide``) inside ``width``."""
+    require(p.narrow <= p.wide <= p.width - 2, "wide", "fit the field with banks", p.wide)

@@ -8,10 +8,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ...core.actions import ActionSet
-from ...core.params import param, require
+from ...core.params import param
 from .bodies import Body
 from .engine import EMPTY, ArcadeParams, ArcadeTask, register_arcade
-from .scroller import Channel, Pacer, Strip, put_one
+from .scroller import Channel, Pacer, Strip, banks_fit, put_one
 
 BUGGY, AIR, CAR, FLAG, BANK = "A", "^", "C", "F", "#"
 ACTIONS = ActionSet([("NOOP", "keep going"), ("UP", "move one row up the screen"),
@@ -38,8 +38,7 @@ class UpParams(ArcadeParams):
     air: int = param(2, 1, 6)              # turns a jump lasts
     crush: int = param(0, 0, 1)            # 1: a crushed car counts like a flag
 
-    def check(self) -> None:
-        require(self.narrow <= self.wide <= self.width - 2, "wide", "fit the field with banks", self.wide)
+    check = banks_fit
 
 
 class UpNDown(ArcadeTask):
