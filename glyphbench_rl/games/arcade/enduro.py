@@ -68,8 +68,7 @@ class Enduro(ArcadeTask):
         self.strip = Strip(self.still, "down")
         self.lane, self.speed, self.car_r = p.lanes // 2, 0, p.height - 2
         self.pacer, self.since = Pacer(0), 0
-        for _ in range(p.height - 3):
-            self.strip.scroll(self._line())
+        self.strip.preroll(p.height - 3, self._line)
 
     def _line(self) -> str:
         p = self.params

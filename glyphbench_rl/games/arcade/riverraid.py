@@ -71,13 +71,11 @@ class RiverRaid(ArcadeTask):
         self.pacer, self.fuel = Pacer(p.every), Countdown(p.fuel)
         self.spawned = self.lost = self.since = self.placed = 0
         self.bridge_built = False
-        for _ in range(p.height - 4):
-            self.strip.scroll(self._line())
+        self.strip.preroll(p.height - 4, self._line)
 
     def _line(self) -> str:
         p = self.params
-        left, right = self.channel.next(self.draws)
-        line = self.channel.line(BANK)
+        left, right, line = self.channel.step(self.draws, BANK)
         self.since += 1
         if self.spawned - self.lost >= p.goal - 1:
             if not self.bridge_built and self.since > p.spacing:

@@ -48,6 +48,11 @@ class Strip:
         self.rows = [row[1:] + ch for row, ch in zip(rows, line)]
         return gone
 
+    def preroll(self, n: int, make) -> None:
+        """Scroll ``n`` fresh lines in before play starts (what leaves is not counted)."""
+        for _ in range(n):
+            self.scroll(make())
+
     def get(self, r: int, c: int) -> str:
         if 0 <= r < len(self.rows):
             row = self.rows[r]
@@ -86,6 +91,11 @@ class Channel:
                 if right <= self.width - 2 and self.narrow <= right - self.left + 1 <= self.wide:
                     self.right = right
         return self.left, self.right
+
+    def step(self, draws, bank: str) -> tuple[int, int, str]:
+        """The next line: its banks (``next``) and its text (``line``)."""
+        left, right = self.next(draws)
+        return left, right, self.line(bank)
 
     def line(self, bank: str, water: str = EMPTY) -> str:
         """This line as text: banks outside the span, water inside."""

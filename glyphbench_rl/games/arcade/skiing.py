@@ -65,8 +65,7 @@ class Skiing(ArcadeTask):
         self.col, self.made, self.judged, self.since = p.width // 2, 0, 0, p.spacing - 2
         self.left = (p.width - p.gap - 2) // 2
         self.pacer, self.down_until = Pacer(1), 0
-        for _ in range(p.height - p.row - 1):
-            self.strip.scroll(self._line())
+        self.strip.preroll(p.height - p.row - 1, self._line)
 
     def _line(self) -> str:
         p = self.params

@@ -74,13 +74,11 @@ class UpNDown(ArcadeTask):
         self.r, self.col = p.height - 2, p.width // 2
         self.cars: list[Body] = []
         self.pacer, self.since, self.landing = Pacer(p.every), 0, 0
-        for _ in range(p.height - 3):
-            self.strip.scroll(self._line())
+        self.strip.preroll(p.height - 3, self._line)
 
     def _line(self) -> str:
         p = self.params
-        left, right = self.channel.next(self.draws)
-        line = self.channel.line(BANK)
+        left, right, line = self.channel.step(self.draws, BANK)
         self.since += 1
         if self.since >= p.flag_every:
             self.since = 0

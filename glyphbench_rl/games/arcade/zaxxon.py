@@ -71,8 +71,7 @@ class Zaxxon(ArcadeTask):
         self.pacer, self.fuel = Pacer(p.every), Countdown(p.fuel)
         self.since = self.placed = self.walled = 0
         self.volley, self.bullets = Pacer(p.fire_every), set()
-        for _ in range(p.width // 2):
-            self.strip.scroll(self._column())
+        self.strip.preroll(p.width // 2, self._column)
 
     def _column(self) -> str:
         p = self.params

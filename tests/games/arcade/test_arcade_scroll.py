@@ -37,6 +37,9 @@ def test_strip_scrolls_the_world_past_a_fixed_player():
     assert left.scroll("xy") == "ac" and left.rows == ["bx", "dy"] and left.shifts == 1
     left.put(0, 1, "Z")
     assert left.get(0, 1) == "Z" and left.get(5, 0) == "" and put_one("...", 1, "o") == ".o."
+    fresh = iter("xyz")
+    down.preroll(2, lambda: next(fresh) * 3)
+    assert down.rows == ["yyy", "xxx", "n.."] and down.shifts == 3
 
 
 def test_channel_wanders_one_column_a_line_within_its_widths():
