@@ -11,6 +11,8 @@ from glyphbench_rl.games.arcade.scroller import Channel, Pacer, Strip, put_one
 from glyphbench_rl.games.common.lanes import Draws
 
 SEEDS = (0, 3, 11)
+GAMES = ("riverraid", "zaxxon", "skiing", "enduro", "upndown", "choppercommand", "defender",
+         "stargunner", "kungfumaster")
 
 
 def play(task_id: str, policy, seed: int, turns: int | None = None):
@@ -25,6 +27,20 @@ def play(task_id: str, policy, seed: int, turns: int | None = None):
 
 def toward(col: int, target: int, left: int = 1, right: int = 2, stay: int = 0) -> int:
     return stay if col == target else (left if target < col else right)
+
+
+@pytest.mark.parametrize("game", GAMES)
+def test_presets_registered_once_each_with_bounded_mini_returns(game):
+    from glyphbench_rl.core.registry import get_spec
+    from glyphbench_rl.games.arcade.engine import bound
+    mini, atari = get_spec(f"glyphbench/miniatari-{game}-v0"), get_spec(f"glyphbench/atari-{game}-v0")
+    assert (mini.suite, mini.tier) == ("MiniAtari", "standard") and mini.max_turns <= 512
+    assert (atari.suite, atari.tier) == ("Atari", "extended") and atari.max_turns >= 5000
+    assert mini.game is atari.game
+    m, a = make(mini.id), make(atari.id)
+    assert a.params.height * a.params.width >= m.params.height * m.params.width and a.params.goal >= m.params.goal
+    lo, hi = bound(m.pattern, m.params)
+    assert -1 <= lo and hi == pytest.approx(1.0)
 
 
 # -- the engine -----------------------------------------------------------------------------------
