@@ -128,12 +128,13 @@ class Zaxxon(ArcadeTask):
             self.gun.fire(self.tick, self.r, self.col + 1, 0, 1, SHOT)
         if self._crashed():
             return
-        self.bullets = {(b.r, b.c) for b in self.flak.shots}
-        for shot, cell in self.gun.advance(self._shot_hits):
-            if cell is not None:
-                self._strike(*cell)
-        if self.done:
-            return
+        if self.gun.shots:
+            self.bullets = {(b.r, b.c) for b in self.flak.shots}
+            for shot, cell in self.gun.advance(self._shot_hits):
+                if cell is not None:
+                    self._strike(*cell)
+            if self.done:
+                return
         if self.pacer.due(self.tick):
             self.strip.scroll(self._column())
             for shot in self.gun.shots:
@@ -156,7 +157,7 @@ class Zaxxon(ArcadeTask):
             self.lose_life("Out of fuel!")
 
     def _crashed(self) -> bool:
-        if self.strip.get(self.r, self.col) != EMPTY:
+        if self.strip.rows[self.r][self.col] != EMPTY:
             self.lose_life("You crashed!")
             return True
         if any(b.r == self.r and b.c == self.col for b in self.flak.shots):
