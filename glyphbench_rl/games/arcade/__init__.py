@@ -15,6 +15,9 @@ Engine-level modules, which the games import (and nothing else of the family):
 - ``hopping``: lane hopping: drifting rows that carry a rider, pyramid hops, floors and ladders.
 - ``shooter``: the fixed-bottom shooter family's ``Shooter`` (cannon, lanes, gun, bombs) and
   ``Pack`` of enemies, ``march`` (formations), ``bounce``.
+- ``scroller``: scrolling worlds (``Strip``: the window that moves a line a scroll; ``Channel``:
+  a river or road of wandering width; ``Pacer``: periodic or speed-driven timing; ``Camera``:
+  a view following the player around a wrapping world).
 """
 
 from . import amidar  # noqa: F401
@@ -24,13 +27,22 @@ from . import atlantis  # noqa: F401
 from . import bankheist  # noqa: F401
 from . import beamrider  # noqa: F401
 from . import centipede  # noqa: F401
+from . import choppercommand  # noqa: F401
+from . import defender  # noqa: F401
 from . import demonattack  # noqa: F401
+from . import enduro  # noqa: F401
 from . import freeway  # noqa: F401
 from . import frostbite  # noqa: F401
 from . import gopher  # noqa: F401
 from . import kangaroo  # noqa: F401
+from . import kungfumaster  # noqa: F401
 from . import mspacman  # noqa: F401
 from . import phoenix  # noqa: F401
 from . import pong  # noqa: F401
 from . import qbert  # noqa: F401
+from . import riverraid  # noqa: F401
+from . import skiing  # noqa: F401
 from . import spaceinvaders  # noqa: F401
+from . import stargunner  # noqa: F401
+from . import upndown  # noqa: F401
+from . import zaxxon  # noqa: F401

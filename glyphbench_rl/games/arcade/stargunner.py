@@ -1,0 +1,152 @@
+"""Stargunner: a side-scrolling shooter. Your ship keeps to the left columns while enemies stream
+in from the right edge, weaving as they come; shoot them before one gets past your column. On
+the Atari preset a star field scrolls by and enemies fire back (pattern D; the MiniAtari preset
+pays no death penalty)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ...core.actions import ActionSet
+from ...core.params import param, require
+from .bodies import Body, Gun
+from .engine import EMPTY, ArcadeParams, ArcadeTask, register_arcade
+from .scroller import Pacer, Strip
+
+SHIP, ENEMY, SHOT, BOLT, STAR = ">", "E", "-", "~", "*"
+ACTIONS = ActionSet([("NOOP", "hold position"), ("UP", "move one row up"), ("DOWN", "move one row down"),
+                     ("LEFT", "move one column back"), ("RIGHT", "move one column forward"),
+                     ("FIRE", "shoot right")], noop="NOOP")
+MOVES = ((0, 0), (-1, 0), (1, 0), (0, -1), (0, 1), (0, 0))
+FIRE = 5
+
+
+@dataclass(frozen=True)
+class GunnerParams(ArcadeParams):
+    width: int = param(14, 8, 60)
+    height: int = param(8, 5, 30)
+    goal: int = param(5, 1, 500)
+    unit: float = param(0.2, 0, 100)
+    death: float = param(0.0, -1, 0)
+    zone: int = param(3, 1, 30)           # the last column you may fly to
+    spawn: int = param(4, 1, 30)          # turns between enemies
+    pace: int = param(2, 1, 6)            # turns per column an enemy flies
+    weave: float = param(0.3, 0, 1)       # chance an enemy shifts a row as it flies
+    fire: float = param(0.0, 0, 1)        # chance an enemy fires as it flies
+    stars: float = param(0.0, 0, 0.5)     # star density of the scrolling backdrop
+
+    def check(self) -> None:
+        require(self.zone + 4 < self.width, "zone", "leave room for the enemies", self.zone)
+
+
+class Stargunner(ArcadeTask):
+    title = "Stargunner"
+    rules = ("You fly the ship (>) on a {width}x{height} view, with {lives_text}; you may move "
+             "anywhere in columns 0 to {zone}. Enemies (E) enter at the right edge every {spawn} "
+             "turns and fly one column left every {pace} turns, sometimes shifting a row.{fire_text} "
+             "FIRE sends your shot (-) right two cells a turn. An enemy that reaches your column "
+             "or touches you costs a life.{star_text}")
+    rewards = "+{unit} for each enemy shot down{death_text}."
+    ends = "when you have shot down {goal} enemies or the game is lost"
+    ACTIONS = ACTIONS
+    Params = GunnerParams
+    pattern = "D"
+    glyphs = {EMPTY: "space", STAR: "star (scenery)", ENEMY: "enemy", SHOT: "your shot",
+              BOLT: "enemy shot", SHIP: "you (the ship)"}
+
+    def prompt_fields(self) -> dict:
+        p = self.params
+        return {**super().prompt_fields(),
+                "fire_text": " Enemies fire shots (~) left, one cell a turn." if p.fire else "",
+                "star_text": " Stars (*) are scenery." if p.stars else "",
+                "death_text": f"; {p.death} when the game is lost" if p.death else ""}
+
+    def _setup(self, rng) -> None:
+        self.start(rng)
+        p = self.params
+        self.strip = Strip([EMPTY * p.width] * p.height, "left")
+        self.r, self.col = p.height // 2, 1
+        self.enemies: list[Body] = []
+        self.gun = Gun(cooldown=1, speed=2, reach=p.width, limit=2)
+        self.bolts: list[Body] = []
+        self.spawner, self.star_cols = Pacer(p.spawn), []
+        if p.stars:
+            for _ in range(p.width):
+                self.strip.scroll(self._stars())
+
+    def _stars(self) -> str:
+        """The next backdrop column: one of a few made at the start (cheap per turn)."""
+        if not self.star_cols:
+            p = self.params
+            self.star_cols = ["".join(STAR if self.draws.random() < p.stars else EMPTY
+                                      for _ in range(p.height)) for _ in range(8)]
+        return self.star_cols[self.draws.below(8)]
+
+    def _shot_hits(self, r: int, c: int) -> bool:
+        return c >= self.params.width or any(e.r == r and e.c == c for e in self.enemies)
+
+    def _play(self, action: int) -> None:
+        p = self.params
+        dr, dc = MOVES[action]
+        self.r = min(p.height - 1, max(0, self.r + dr))
+        self.col = min(p.zone, max(0, self.col + dc))
+        if action == FIRE:
+            self.gun.fire(self.tick, self.r, self.col + 1, 0, 1, SHOT)
+        if self._struck():
+            return
+        if p.stars and self.tick % 2 == 0:
+            self.strip.scroll(self._stars())
+        if self.tick % p.pace == 0:
+            for e in self.enemies:
+                e.c -= 1
+                if p.weave and self.draws.random() < p.weave:
+                    e.r = min(p.height - 1, max(0, e.r + (1 if self.draws.random() < 0.5 else -1)))
+                if p.fire and self.draws.random() < p.fire:
+                    self.bolts.append(Body(e.r, e.c - 1, glyph=BOLT))
+        kept = []
+        for b in self.bolts:
+            b.c -= 1
+            if b.c >= 0:
+                kept.append(b)
+        self.bolts = kept
+        if self.spawner.due(self.tick):
+            self.enemies.append(Body(self.draws.below(p.height), p.width - 1, glyph=ENEMY))
+        if self._struck():
+            return
+        if any(e.c <= self.col for e in self.enemies):
+            self.lose_life("An enemy got past you!")
+
+    def _struck(self) -> bool:
+        """Shots against enemies (they move first), then anything touching the ship."""
+        for shot, cell in self.gun.advance(self._shot_hits):
+            if cell is not None and cell[1] < self.params.width:
+                self.enemies = [e for e in self.enemies if (e.r, e.c) != cell]
+                self.score.gain()
+                self.say("Enemy down!")
+                if self.done:
+                    return True
+        me = (self.r, self.col)
+        if any((e.r, e.c) == me for e in self.enemies) or any((b.r, b.c) == me for b in self.bolts):
+            self.lose_life("You were hit!")
+            return True
+        return False
+
+    def _respawn(self) -> None:
+        self.enemies = [e for e in self.enemies if e.c > self.params.width // 2]
+        self.bolts, self.gun.shots = [], []
+
+    def _rows(self) -> list[str]:
+        return self.strip.rows[:]
+
+    def _sprites(self):
+        out = [(e.r, e.c, ENEMY) for e in self.enemies]
+        out += [(b.r, b.c, BOLT) for b in self.bolts]
+        out += [(s.r, s.c, SHOT) for s in self.gun.shots]
+        out.append((self.r, self.col, SHIP))
+        return out
+
+
+register_arcade(Stargunner, "stargunner",
+                mini=dict(max_turns=200),
+                atari=dict(width=30, height=16, lives=3, goal=30, unit=1.0, death=-1.0, zone=14,
+                           spawn=3, pace=2, weave=0.3, fire=0.04, stars=0.05, max_turns=10000))
