@@ -1,0 +1,145 @@
+"""The duel family (paddle/ball and sports): the engine's ball physics, serves, possession and
+scripted opponents; per MiniAtari task a scripted win and a scripted loss on several seeds; per
+Atari task a scripted policy that scores."""
+
+from __future__ import annotations
+
+import pytest
+
+from glyphbench_rl import make
+from glyphbench_rl.games.arcade.duel import Ball, Match, Possession, clamp, deflect, pursue, serve
+
+SEEDS = (0, 3, 11)
+
+
+def play(task_id: str, policy, seed: int, turns: int | None = None):
+    env = make(task_id)
+    env.reset(seed=seed)
+    done, n = False, 0
+    while not done and (turns is None or n < turns):
+        _, _, term, trunc, info = env.step(policy(env))
+        done, n = term or trunc, n + 1
+    return env, info
+
+
+class Fixed:
+    def __init__(self, x):
+        self.x = x
+
+    def random(self):
+        return self.x
+
+    def below(self, n):
+        return int(self.x * n)
+
+
+# -- the engine ----------------------------------------------------------------------------------
+def test_ball_reflects_off_named_walls_and_reports_open_edges():
+    b = Ball(1, 5, dr=-1, dc=1)
+    assert b.advance(1, 8, 1, 6) == "" and (b.r, b.c, b.dr) == (2, 6, 1)   # mirrored off the top
+    b = Ball(3, 6, dr=1, dc=1)
+    assert b.advance(1, 8, 1, 6) == "" and (b.c, b.dc) == (5, -1)
+    b = Ball(8, 3, dr=1, dc=0)
+    assert b.advance(1, 8, 1, 6, walls="tlr") == "b" and b.r == 8
+
+
+def test_paddle_offset_deflects_by_third_and_serve_slants():
+    assert [deflect(i, 3) for i in range(3)] == [-1, 0, 1]
+    assert [deflect(i, 6) for i in range(6)] == [-1, -1, 0, 0, 1, 1] and deflect(0, 1) == 0
+    b = Ball(0, 0)
+    serve(b, 4, 7, -1, Fixed(0.9))
+    assert (b.r, b.c, b.dr, b.dc) == (4, 7, 1, -1)
+    serve(b, 4, 7, 1, Fixed(0.0), rows=True)
+    assert (b.dr, b.dc) == (1, -1)
+
+
+def test_pursue_steps_toward_the_target_with_a_probability():
+    assert pursue(0, 0, 5, 2, 0.7, Fixed(0.5)) == (1, 0)
+    assert pursue(0, 0, 1, -4, 0.7, Fixed(0.5)) == (0, -1)
+    assert pursue(0, 0, 5, 2, 0.7, Fixed(0.8)) == (0, 0)
+    assert clamp(9, 1, 6) == 6 and clamp(-2, 1, 6) == 1
+
+
+def test_possession_and_match_points_into_games():
+    side = Possession("you")
+    assert side.flip() == "cpu" and not side.mine()
+    m = Match(points=4, lead=2)
+    assert [m.point(True) for _ in range(3)] == [None] * 3 and m.call() == "40-0"
+    assert m.point(False) is None and m.point(True) is True and (m.mine, m.theirs) == (0, 0)
+    m = Match(points=2, lead=1)
+    assert m.point(False) is None and m.point(False) is False
+
+
+# -- breakout --------------------------------------------------------------------------------------
+def landing_col(env):
+    """The column where the falling ball reaches the paddle row (side walls reflect it)."""
+    p, b = env.params, env.ball
+    r, c, dc = b.r, b.c, b.dc
+    while r < env.prow:
+        if not 0 <= c + dc <= p.width - 1:
+            dc = -dc
+        r, c = r + 1, c + dc
+    return c
+
+
+def rise(env, c, dc):
+    """Follow a ball leaving the paddle at column ``c`` with slant ``dc`` (the ceiling and side
+    walls reflect it): True if it meets a brick, else the column where it falls back."""
+    p = env.params
+    r, dr = env.prow - 1, -1
+    while r < env.prow:
+        if not 0 <= c + dc <= p.width - 1:
+            dc = -dc
+        if r + dr < 0:
+            dr = -dr
+        r, c = r + dr, c + dc
+        if (r, c) in env.bricks:
+            return True
+    return c
+
+
+def breakout_aimer(env):
+    """Strike the falling ball with the paddle third that sends it into a brick, now or on the
+    next return; else vary the slant."""
+    p, b = env.params, env.ball
+    if env.held:
+        return 1
+    if b.dr < 0:
+        target = (p.width - p.paddle) // 2          # wait in the middle while it rises
+    else:
+        land = landing_col(env)
+        slants = [deflect(o, p.paddle) for o in range(p.paddle)]
+        ends = [rise(env, land, dc) for dc in slants]
+        pick = [o for o, end in enumerate(ends) if end is True]
+        pick += [o for o, end in enumerate(ends) if end is not True
+                 and any(rise(env, end, dc) is True for dc in slants)]
+        target = land - (pick[0] if pick else env.tick % p.paddle)
+    target = clamp(target, 0, p.width - p.paddle)
+    return 0 if target == env.pad else (2 if target < env.pad else 3)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_breakout_aiming_breaks_the_goal_and_wins(seed):
+    env, info = play("glyphbench/miniatari-breakout-v0", breakout_aimer, seed)
+    assert info["won"] is True and env.score.done == env.params.goal
+    assert env.episode_return == pytest.approx(1.0) and not info["clamped"]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_breakout_idle_paddle_loses_the_ball(seed):
+    env, info = play("glyphbench/miniatari-breakout-v0", lambda e: 2, seed)
+    assert info["won"] is False and env.done and env.episode_return < 1
+
+
+def test_breakout_brick_breaks_and_reflects():
+    env = make("glyphbench/miniatari-breakout-v0")
+    env.reset(seed=0)
+    env.held, b = False, env.ball
+    b.r, b.c, b.dr, b.dc = 2, 5, -1, 0
+    env.step(0)
+    assert (1, 5) not in env.bricks and b.dr == 1 and b.r == 2 and env.frame.grid[1][5] == "."
+
+
+def test_atari_breakout_scores():
+    env, info = play("glyphbench/atari-breakout-v0", breakout_aimer, 0, turns=1500)
+    assert env.episode_return > 0 and env.score.done > 0
