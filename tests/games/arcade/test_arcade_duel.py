@@ -143,3 +143,72 @@ def test_breakout_brick_breaks_and_reflects():
 def test_atari_breakout_scores():
     env, info = play("glyphbench/atari-breakout-v0", breakout_aimer, 0, turns=1500)
     assert env.episode_return > 0 and env.score.done > 0
+
+
+# -- tennis ----------------------------------------------------------------------------------------
+def arrival_col(env, row):
+    """The column where the ball comes onto ``row`` (the side walls reflect it)."""
+    p, b = env.params, env.ball
+    r, c, dc = b.r, b.c, b.dc
+    while r != row:
+        if not 0 <= c + dc <= p.width - 1:
+            dc = -dc
+        r, c = r + b.dr, c + dc
+    return c
+
+
+def step_to(env, r, c, tr, tc):
+    """The action (NOOP, UP, DOWN, LEFT, RIGHT) that steps from (r, c) toward (tr, tc)."""
+    if c != tc:
+        return 3 if tc < c else 4
+    if r != tr:
+        return 1 if tr < r else 2
+    return 0
+
+
+def tennis_placer(env):
+    """Volley at the net: meet the ball on the row behind the net with the side of you that
+    sends it away from the opponent (a ball already past that row is met on the baseline)."""
+    p, b = env.params, env.ball
+    row = p.height // 2 + 1
+    if b.dr < 0:
+        return step_to(env, env.me[0], env.me[1], row, env.me[1])
+    if b.r > row or (b.r == row and abs(b.c - env.me[1]) > 1):
+        row = p.height - 1
+    land = arrival_col(env, row)
+    away = 1 if env.cpu[1] < p.width // 2 else -1
+    target = clamp(land - away, 0, p.width - 1)
+    if abs(target - env.me[1]) + abs(row - env.me[0]) > abs(b.r - row):   # no time to place it
+        target = land
+    return step_to(env, env.me[0], env.me[1], row, target)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_tennis_placing_the_ball_wins_the_match(seed):
+    env, info = play("glyphbench/miniatari-tennis-v0", tennis_placer, seed)
+    assert info["won"] is True and env.score.mine == env.params.goal
+    assert env.episode_return == pytest.approx((env.score.mine - env.score.theirs) * env.params.unit)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_tennis_standing_in_the_corner_loses(seed):
+    env, info = play("glyphbench/miniatari-tennis-v0", lambda e: 3, seed)
+    assert info["won"] is False and env.score.theirs == env.params.goal and env.episode_return < 0
+
+
+def test_tennis_return_slants_by_side_and_points_make_games():
+    env = make("glyphbench/miniatari-tennis-v0")
+    env.reset(seed=1)
+    b, me = env.ball, env.me
+    b.r, b.c, b.dr, b.dc = me[0] - 1, me[1] + 1, 1, 0
+    env.step(0)
+    assert b.dr == -1 and b.dc == 1                    # met on your right: it leaves right
+    before = env.score.mine
+    for _ in range(env.params.points):
+        env._score(True)
+    assert env.score.mine == before + 1 and env.match.mine == 0
+
+
+def test_atari_tennis_scores():
+    env, info = play("glyphbench/atari-tennis-v0", tennis_placer, 0, turns=3000)
+    assert env.score.mine > 0 and env.episode_return > 0
