@@ -212,3 +212,55 @@ def test_tennis_return_slants_by_side_and_points_make_games():
 def test_atari_tennis_scores():
     env, info = play("glyphbench/atari-tennis-v0", tennis_placer, 0, turns=3000)
     assert env.score.mine > 0 and env.episode_return > 0
+
+
+# -- ice hockey ------------------------------------------------------------------------------------
+def hockey_forward(env):
+    """Take the puck (poke it from a carrier beside you), carry it up a lane in the mouth the
+    opponent is not in, shoot when that lane is clear."""
+    p, me, cpu, pk = env.params, env.me, env.cpu, env.puck
+    beside = abs(me[0] - cpu[0]) + abs(me[1] - cpu[1]) == 1
+    if env.has.holder == "cpu":
+        return 5 if beside else step_to(env, me[0], me[1], cpu[0], cpu[1])
+    if not env.has.mine():
+        return step_to(env, me[0], me[1], pk.r, pk.c)
+    lanes = range(env.left, env.left + p.mouth)
+    lane = max(lanes, key=lambda c: abs(c - cpu[1]))
+    clear = not (cpu[1] == me[1] and cpu[0] < me[0])
+    if me[1] in lanes and clear and me[0] <= p.height // 2:
+        return 5
+    return step_to(env, me[0], me[1], 1 if me[1] == lane else me[0], lane)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_icehockey_forward_scores_first_to_w(seed):
+    env, info = play("glyphbench/miniatari-icehockey-v0", hockey_forward, seed)
+    assert info["won"] is True and env.score.mine == env.params.goal and env.episode_return > 0
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_icehockey_skating_away_concedes(seed):
+    env, info = play("glyphbench/miniatari-icehockey-v0", lambda e: 3, seed)
+    assert info["won"] is False and env.score.theirs == env.params.goal and env.episode_return == pytest.approx(-1)
+
+
+def test_icehockey_shot_reflects_off_boards_and_scores_in_the_mouth():
+    env = make("glyphbench/miniatari-icehockey-v0")
+    env.reset(seed=0)
+    env.me[:] = [2, env.left]
+    env.cpu[:] = [8, 0]
+    env.has.give("you")
+    env.step(5)                                   # shot straight up the mouth
+    env.step(0)
+    assert env.score.mine == 1 and env.has.holder is None
+    env.me[:], env.cpu[:] = [2, 0], [8, 0]
+    env.has.give("you")
+    env.step(5)                                   # outside the mouth: it slants and comes off the board
+    env.step(0)
+    env.step(0)
+    assert env.score.mine == 1 and env.puck.dr == 1
+
+
+def test_atari_icehockey_scores():
+    env, info = play("glyphbench/atari-icehockey-v0", hockey_forward, 0, turns=3000)
+    assert env.score.mine > 0 and env.episode_return > 0
