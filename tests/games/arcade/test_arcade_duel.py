@@ -264,3 +264,48 @@ def test_icehockey_shot_reflects_off_boards_and_scores_in_the_mouth():
 def test_atari_icehockey_scores():
     env, info = play("glyphbench/atari-icehockey-v0", hockey_forward, 0, turns=3000)
     assert env.score.mine > 0 and env.episode_return > 0
+
+
+# -- boxing ----------------------------------------------------------------------------------------
+def boxer(env):
+    """Square up beside the opponent on its row; punch when ready; otherwise step out of line."""
+    me, cpu = env.me, env.cpu
+    lined = me[0] == cpu[0] and abs(me[1] - cpu[1]) == 1
+    if lined and env.tick + 1 >= env.ready["you"]:
+        return 5
+    if lined:                                       # not ready: leave its row
+        return 1 if me[0] > 0 else 2
+    side = 1 if me[1] > cpu[1] else -1
+    return step_to(env, me[0], me[1], cpu[0], clamp(cpu[1] + side, 0, env.params.width - 1))
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_boxing_timed_punches_win(seed):
+    env, info = play("glyphbench/miniatari-boxing-v0", boxer, seed)
+    assert info["won"] is True and env.score.mine == env.params.goal and env.episode_return > 0
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_boxing_standing_still_is_beaten(seed):
+    env, info = play("glyphbench/miniatari-boxing-v0", lambda e: 0, seed)
+    assert info["won"] is False and env.episode_return == pytest.approx(-1)
+
+
+def test_boxing_punch_lands_beside_knocks_back_and_cools_down():
+    env = make("glyphbench/miniatari-boxing-v0", chance=0.0, jab=0.0)     # a still, passive opponent
+    env.reset(seed=0)
+    env.me[:], env.cpu[:] = [3, 5], [3, 4]
+    env.step(5)
+    assert env.score.mine == 1 and env.cpu[1] == 3
+    env.cpu[:] = [3, 4]
+    env.step(5)                                     # cooling down: no punch
+    assert env.score.mine == 1
+    env.me[:], env.cpu[:] = [3, 5], [4, 4]
+    env.ready["you"] = 0
+    env.step(5)                                     # not on your row: a miss
+    assert env.score.mine == 1
+
+
+def test_atari_boxing_scores():
+    env, info = play("glyphbench/atari-boxing-v0", boxer, 0, turns=2000)
+    assert env.score.mine > 0 and env.episode_return > 0
