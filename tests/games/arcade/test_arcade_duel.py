@@ -309,3 +309,58 @@ def test_boxing_punch_lands_beside_knocks_back_and_cools_down():
 def test_atari_boxing_scores():
     env, info = play("glyphbench/atari-boxing-v0", boxer, 0, turns=2000)
     assert env.score.mine > 0 and env.episode_return > 0
+
+
+# -- fishing derby ---------------------------------------------------------------------------------
+def shark_next(env):
+    p, (_, c, d) = env.params, env.shark
+    return c + d if 0 <= c + d < p.width else c - d
+
+
+def angler(env):
+    """Wait in a fish's lane just ahead of it inside your half; reel unless that would take the
+    fish through the shark's next cell."""
+    me = env.me
+    if env.caught["you"]:
+        reel_ok = not (me[0] - 2 <= 1 and shark_next(env) == me[1])
+        return 5 if reel_ok else 0
+    free = [f for f in env.fish if not env._hooked(f)]
+    best = min(free, key=lambda f: abs(f[0] - me[0]) + abs(clamp(f[1] + 2 * f[2], 0, env.half - 1) - me[1]))
+    col = clamp(best[1] + 2 * best[2], 0, env.half - 1) if 0 <= best[1] < env.half else (
+        env.half - 1 if best[2] < 0 else 0)
+    return step_to(env, me[0], me[1], best[0], col)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_fishingderby_angler_wins_the_derby(seed):
+    env, info = play("glyphbench/miniatari-fishingderby-v0", angler, seed)
+    assert info["won"] is True and env.score.mine == env.params.goal and env.episode_return > 0
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_fishingderby_idle_hook_loses(seed):
+    env, info = play("glyphbench/miniatari-fishingderby-v0", lambda e: 1, seed)
+    assert info["won"] is False and env.score.theirs == env.params.goal and env.episode_return == pytest.approx(-1)
+
+
+def test_fishingderby_hooked_fish_rises_reels_and_the_shark_eats():
+    env = make("glyphbench/miniatari-fishingderby-v0", chance=0.0)
+    env.reset(seed=0)
+    f = env.fish[0]
+    env.caught["you"], env.me[:] = f, [5, 2]
+    env.shark[:] = [1, 10, 1]
+    env.step(5)
+    assert env.me[0] == 3 and f[0] == 3
+    env.step(5)
+    env.step(0)
+    assert env.score.mine == 1 and env.caught["you"] is None
+    g = env.fish[1]
+    env.caught["you"], env.me[:] = g, [2, 4]
+    env.shark[:] = [1, 3, 1]                         # it swims onto column 4 as the fish rises
+    env.step(0)
+    assert env.score.mine == 1 and env.caught["you"] is None and env.me[0] == 2
+
+
+def test_atari_fishingderby_scores():
+    env, info = play("glyphbench/atari-fishingderby-v0", angler, 0, turns=2000)
+    assert env.score.mine > 0 and env.episode_return > 0
