@@ -364,3 +364,66 @@ def test_fishingderby_hooked_fish_rises_reels_and_the_shark_eats():
 def test_atari_fishingderby_scores():
     env, info = play("glyphbench/atari-fishingderby-v0", angler, 0, turns=2000)
     assert env.score.mine > 0 and env.episode_return > 0
+
+
+# -- surround --------------------------------------------------------------------------------------
+def open_area(env, r, c, blocked):
+    """Cells reachable from (r, c) through open cells."""
+    if not env._free(r, c) or (r, c) in blocked:
+        return 0
+    seen, todo = {(r, c)}, [(r, c)]
+    while todo:
+        r, c = todo.pop()
+        for dr, dc in ((1, 0), (-1, 0), (0, 1), (0, -1)):
+            n = (r + dr, c + dc)
+            if n not in seen and n not in blocked and env._free(*n):
+                seen.add(n)
+                todo.append(n)
+    return len(seen)
+
+
+def cycle_rider(env):
+    """Head for the largest open region (ties: keep the heading), keeping away from the rival's
+    next cells."""
+    me, cpu = env.me, env.cpu
+    blocked = {(me[0], me[1]), (cpu[0], cpu[1])} | {(cpu[0] + dr, cpu[1] + dc) for dr, dc in ((1, 0), (-1, 0), (0, 1), (0, -1))}
+    best, score = 0, None
+    for a in (1, 2, 3, 4):
+        dr, dc = HEADING[a]
+        if (dr, dc) == (-me[2], -me[3]):
+            continue
+        s = (open_area(env, me[0] + dr, me[1] + dc, blocked), (dr, dc) == (me[2], me[3]))
+        if score is None or s > score:
+            best, score = a, s
+    return best
+
+
+HEADING = {1: (-1, 0), 2: (0, 1), 3: (0, -1), 4: (1, 0)}
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_surround_keeping_open_space_outlasts_the_rival(seed):
+    env, info = play("glyphbench/miniatari-surround-v0", cycle_rider, seed)
+    assert info["won"] is True and env.episode_return == pytest.approx(1)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_surround_riding_straight_crashes(seed):
+    env, info = play("glyphbench/miniatari-surround-v0", lambda e: 0, seed)
+    assert info["won"] is False and env.episode_return == pytest.approx(-1)
+
+
+def test_surround_reversal_ignored_trails_block_and_head_on_is_a_draw():
+    env = make("glyphbench/miniatari-surround-v0", chance=0.0)
+    env.reset(seed=0)
+    r, c = env.me[0], env.me[1]
+    env.step(4)                                       # DOWN while heading up: ignored
+    assert (env.me[0], env.me[1]) == (r - 1, c) and (r, c) in env.walls and env.frame.grid[r][c] == "#"
+    env.me[:], env.cpu[:] = [5, 3, 0, 1], [5, 5, 0, -1]
+    env.step(0)
+    assert env.done and env.episode_return == 0 and env.won is False
+
+
+def test_atari_surround_scores():
+    env, info = play("glyphbench/atari-surround-v0", cycle_rider, 0)
+    assert env.score.mine > 0 and env.episode_return > 0
