@@ -427,3 +427,64 @@ def test_surround_reversal_ignored_trails_block_and_head_on_is_a_draw():
 def test_atari_surround_scores():
     env, info = play("glyphbench/atari-surround-v0", cycle_rider, 0)
     assert env.score.mine > 0 and env.episode_return > 0
+
+
+# -- bowling ---------------------------------------------------------------------------------------
+def path_table(env):
+    """best[r][c]: the most standing pins a ball on row ``r`` at column ``c`` can still meet on
+    the rows above, hooking a column a row (a dynamic programme from the top row down)."""
+    w = env.params.width
+    best = [[0] * (w + 2) for _ in range(env.params.height)]
+    for r in range(1, env.params.height):
+        for c in range(w):
+            best[r][c] = max(((r - 1, c + d) in env.pins) + best[r - 1][c + d]
+                             for d in (-1, 0, 1) if 0 <= c + d < w)
+    return best
+
+
+def bowler(env):
+    """Stand under the column that starts the richest hooking path, throw, then hook along it."""
+    p = env.params
+    best = path_table(env)
+    if env.ball is None:
+        start = p.height - 2
+        aim = max(range(p.width), key=lambda c: (best[start][c] + ((start, c) in env.pins), -abs(c - env.col)))
+        if aim != env.col:
+            return 1 if aim < env.col else 2
+        return 3
+    r, c = env.ball
+    moves = [a for a in (0, 1, 2) if 0 <= c + (0, -1, 1)[a] < p.width]
+    return max(moves, key=lambda a: ((r - 1, c + (0, -1, 1)[a]) in env.pins) + best[r - 1][c + (0, -1, 1)[a]])
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_bowling_hooking_through_the_rack_wins(seed):
+    env, info = play("glyphbench/miniatari-bowling-v0", bowler, seed)
+    assert info["won"] is True and env.score.done == env.params.goal and env.episode_return == pytest.approx(1)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_bowling_gutter_balls_run_out_of_frames(seed):
+    env, info = play("glyphbench/miniatari-bowling-v0", lambda e: 1 if e.ball is None and e.col > 0 else 3, seed)
+    assert info["won"] is False and env.done and env.score.done == 0 and env.turn < env.max_turns
+
+
+def test_bowling_ball_knocks_what_it_meets_and_frames_reset_the_rack():
+    env = make("glyphbench/miniatari-bowling-v0", scatter=0.0)
+    env.reset(seed=0)
+    head = max(env.pins)                              # the head pin, nearest you
+    env.col = head[1]
+    env.step(3)
+    while env.ball is not None:
+        env.step(0)
+    assert head not in env.pins and env.score.done == 2 and env.roll == 1   # head pin and the one behind it in line
+    for _ in range(3):
+        env.step(3)
+        while env.ball is not None:
+            env.step(0)
+    assert env.frame_no == 2 and len(env.pins) == 10 and env.roll == 0
+
+
+def test_atari_bowling_scores():
+    env, info = play("glyphbench/atari-bowling-v0", bowler, 0)
+    assert env.score.done > 0 and env.episode_return > 0
