@@ -12,6 +12,6 @@ Engine-level modules, which the games import (and nothing else of the family):
   countdowns (fuel, oxygen, clocks).
 """
 
-from . import bowling, boxing, breakout, fishingderby, freeway, icehockey, pong, spaceinvaders, surround, tennis
+from . import bowling, boxing, breakout, doubledunk, fishingderby, freeway, icehockey, pong, spaceinvaders, surround, tennis
 
-__all__ = ["bowling", "boxing", "breakout", "fishingderby", "freeway", "icehockey", "pong", "spaceinvaders", "surround", "tennis"]
+__all__ = ["bowling", "boxing", "breakout", "doubledunk", "fishingderby", "freeway", "icehockey", "pong", "spaceinvaders", "surround", "tennis"]

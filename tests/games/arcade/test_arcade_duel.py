@@ -488,3 +488,57 @@ def test_bowling_ball_knocks_what_it_meets_and_frames_reset_the_rack():
 def test_atari_bowling_scores():
     env, info = play("glyphbench/atari-bowling-v0", bowler, 0)
     assert env.score.done > 0 and env.episode_return > 0
+
+
+# -- double dunk -----------------------------------------------------------------------------------
+def dunker(env):
+    """On offence drive round the defender to the hoop and shoot close in when nobody is beside
+    you; on defence stand in front of the carrier and swipe."""
+    from glyphbench_rl.games.arcade.doubledunk import distance
+    me, cpu, hoop = env.me, env.cpu, env.hoop
+    near = distance(me, tuple(cpu)) == 1
+    if not env.has.mine():
+        return 5 if near else step_to(env, me[0], me[1], cpu[0] - 1, cpu[1])
+    if distance(me, hoop) <= 2 and (not near or env.tick % 6 == 0):
+        return 5
+    if me[1] == cpu[1] and cpu[0] < me[0]:          # the defender is in front: sidestep
+        return 3 if me[1] > 0 and me[1] > env.params.width // 2 - 2 else 4
+    return step_to(env, me[0], me[1], 1, hoop[1])
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_doubledunk_driving_and_swiping_wins(seed):
+    env, info = play("glyphbench/miniatari-doubledunk-v0", dunker, seed)
+    assert info["won"] is True and env.score.mine == env.params.goal and env.episode_return > 0
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_doubledunk_standing_still_loses(seed):
+    env, info = play("glyphbench/miniatari-doubledunk-v0", lambda e: 0, seed)
+    assert info["won"] is False and env.score.theirs == env.params.goal and env.episode_return == pytest.approx(-1)
+
+
+def test_doubledunk_possession_changes_after_every_shot_and_points_by_distance():
+    env = make("glyphbench/atari-doubledunk-v0", chance=0.0)
+    env.reset(seed=0)
+    env.has.give("you")
+    env.me[:], env.cpu[:] = [1, env.hoop[1] + 1], [10, 0]
+    tries = 0
+    while env.score.mine == 0 and tries < 50:
+        env.has.give("you")
+        env.me[:], env.cpu[:] = [1, env.hoop[1] + 1], [10, 0]
+        env.step(5)
+        assert env.has.holder == "cpu" and env.cpu[0] == env.params.height - 1   # the opponent checks it
+        tries += 1
+    assert env.score.mine == env.params.inside
+    while env.score.mine == env.params.inside and tries < 200:
+        env.has.give("you")
+        env.me[:], env.cpu[:] = [env.params.height - 1, 0], [1, 0]
+        env.step(5)
+        tries += 1
+    assert env.score.mine == env.params.inside + env.params.outside
+
+
+def test_atari_doubledunk_scores():
+    env, info = play("glyphbench/atari-doubledunk-v0", dunker, 0, turns=3000)
+    assert env.score.mine > 0 and env.episode_return > 0
