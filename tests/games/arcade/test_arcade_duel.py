@@ -118,19 +118,6 @@ def breakout_aimer(env):
     return 0 if target == env.pad else (2 if target < env.pad else 3)
 
 
-@pytest.mark.parametrize("seed", SEEDS)
-def test_breakout_aiming_breaks_the_goal_and_wins(seed):
-    env, info = play("glyphbench/miniatari-breakout-v0", breakout_aimer, seed)
-    assert info["won"] is True and env.score.done == env.params.goal
-    assert env.episode_return == pytest.approx(1.0) and not info["clamped"]
-
-
-@pytest.mark.parametrize("seed", SEEDS)
-def test_breakout_idle_paddle_loses_the_ball(seed):
-    env, info = play("glyphbench/miniatari-breakout-v0", lambda e: 2, seed)
-    assert info["won"] is False and env.done and env.episode_return < 1
-
-
 def test_breakout_brick_breaks_and_reflects():
     env = make("glyphbench/miniatari-breakout-v0")
     env.reset(seed=0)
@@ -138,11 +125,6 @@ def test_breakout_brick_breaks_and_reflects():
     b.r, b.c, b.dr, b.dc = 2, 5, -1, 0
     env.step(0)
     assert (1, 5) not in env.bricks and b.dr == 1 and b.r == 2 and env.frame.grid[1][5] == "."
-
-
-def test_atari_breakout_scores():
-    env, info = play("glyphbench/atari-breakout-v0", breakout_aimer, 0, turns=1500)
-    assert env.episode_return > 0 and env.score.done > 0
 
 
 # -- tennis ----------------------------------------------------------------------------------------
@@ -183,19 +165,6 @@ def tennis_placer(env):
     return step_to(env, env.me[0], env.me[1], row, target)
 
 
-@pytest.mark.parametrize("seed", SEEDS)
-def test_tennis_placing_the_ball_wins_the_match(seed):
-    env, info = play("glyphbench/miniatari-tennis-v0", tennis_placer, seed)
-    assert info["won"] is True and env.score.mine == env.params.goal
-    assert env.episode_return == pytest.approx((env.score.mine - env.score.theirs) * env.params.unit)
-
-
-@pytest.mark.parametrize("seed", SEEDS)
-def test_tennis_standing_in_the_corner_loses(seed):
-    env, info = play("glyphbench/miniatari-tennis-v0", lambda e: 3, seed)
-    assert info["won"] is False and env.score.theirs == env.params.goal and env.episode_return < 0
-
-
 def test_tennis_return_slants_by_side_and_points_make_games():
     env = make("glyphbench/miniatari-tennis-v0")
     env.reset(seed=1)
@@ -207,11 +176,6 @@ def test_tennis_return_slants_by_side_and_points_make_games():
     for _ in range(env.params.points):
         env._score(True)
     assert env.score.mine == before + 1 and env.match.mine == 0
-
-
-def test_atari_tennis_scores():
-    env, info = play("glyphbench/atari-tennis-v0", tennis_placer, 0, turns=3000)
-    assert env.score.mine > 0 and env.episode_return > 0
 
 
 # -- ice hockey ------------------------------------------------------------------------------------
@@ -232,18 +196,6 @@ def hockey_forward(env):
     return step_to(env, me[0], me[1], 1 if me[1] == lane else me[0], lane)
 
 
-@pytest.mark.parametrize("seed", SEEDS)
-def test_icehockey_forward_scores_first_to_w(seed):
-    env, info = play("glyphbench/miniatari-icehockey-v0", hockey_forward, seed)
-    assert info["won"] is True and env.score.mine == env.params.goal and env.episode_return > 0
-
-
-@pytest.mark.parametrize("seed", SEEDS)
-def test_icehockey_skating_away_concedes(seed):
-    env, info = play("glyphbench/miniatari-icehockey-v0", lambda e: 3, seed)
-    assert info["won"] is False and env.score.theirs == env.params.goal and env.episode_return == pytest.approx(-1)
-
-
 def test_icehockey_shot_reflects_off_boards_and_scores_in_the_mouth():
     env = make("glyphbench/miniatari-icehockey-v0")
     env.reset(seed=0)
@@ -261,11 +213,6 @@ def test_icehockey_shot_reflects_off_boards_and_scores_in_the_mouth():
     assert env.score.mine == 1 and env.puck.dr == 1
 
 
-def test_atari_icehockey_scores():
-    env, info = play("glyphbench/atari-icehockey-v0", hockey_forward, 0, turns=3000)
-    assert env.score.mine > 0 and env.episode_return > 0
-
-
 # -- boxing ----------------------------------------------------------------------------------------
 def boxer(env):
     """Square up beside the opponent on its row; punch when ready; otherwise step out of line."""
@@ -277,18 +224,6 @@ def boxer(env):
         return 1 if me[0] > 0 else 2
     side = 1 if me[1] > cpu[1] else -1
     return step_to(env, me[0], me[1], cpu[0], clamp(cpu[1] + side, 0, env.params.width - 1))
-
-
-@pytest.mark.parametrize("seed", SEEDS)
-def test_boxing_timed_punches_win(seed):
-    env, info = play("glyphbench/miniatari-boxing-v0", boxer, seed)
-    assert info["won"] is True and env.score.mine == env.params.goal and env.episode_return > 0
-
-
-@pytest.mark.parametrize("seed", SEEDS)
-def test_boxing_standing_still_is_beaten(seed):
-    env, info = play("glyphbench/miniatari-boxing-v0", lambda e: 0, seed)
-    assert info["won"] is False and env.episode_return == pytest.approx(-1)
 
 
 def test_boxing_punch_lands_beside_knocks_back_and_cools_down():
@@ -304,11 +239,6 @@ def test_boxing_punch_lands_beside_knocks_back_and_cools_down():
     env.ready["you"] = 0
     env.step(5)                                     # not on your row: a miss
     assert env.score.mine == 1
-
-
-def test_atari_boxing_scores():
-    env, info = play("glyphbench/atari-boxing-v0", boxer, 0, turns=2000)
-    assert env.score.mine > 0 and env.episode_return > 0
 
 
 # -- fishing derby ---------------------------------------------------------------------------------
@@ -331,18 +261,6 @@ def angler(env):
     return step_to(env, me[0], me[1], best[0], col)
 
 
-@pytest.mark.parametrize("seed", SEEDS)
-def test_fishingderby_angler_wins_the_derby(seed):
-    env, info = play("glyphbench/miniatari-fishingderby-v0", angler, seed)
-    assert info["won"] is True and env.score.mine == env.params.goal and env.episode_return > 0
-
-
-@pytest.mark.parametrize("seed", SEEDS)
-def test_fishingderby_idle_hook_loses(seed):
-    env, info = play("glyphbench/miniatari-fishingderby-v0", lambda e: 1, seed)
-    assert info["won"] is False and env.score.theirs == env.params.goal and env.episode_return == pytest.approx(-1)
-
-
 def test_fishingderby_hooked_fish_rises_reels_and_the_shark_eats():
     env = make("glyphbench/miniatari-fishingderby-v0", chance=0.0)
     env.reset(seed=0)
@@ -359,11 +277,6 @@ def test_fishingderby_hooked_fish_rises_reels_and_the_shark_eats():
     env.shark[:] = [1, 3, 1]                         # it swims onto column 4 as the fish rises
     env.step(0)
     assert env.score.mine == 1 and env.caught["you"] is None and env.me[0] == 2
-
-
-def test_atari_fishingderby_scores():
-    env, info = play("glyphbench/atari-fishingderby-v0", angler, 0, turns=2000)
-    assert env.score.mine > 0 and env.episode_return > 0
 
 
 # -- surround --------------------------------------------------------------------------------------
@@ -401,18 +314,6 @@ def cycle_rider(env):
 HEADING = {1: (-1, 0), 2: (0, 1), 3: (0, -1), 4: (1, 0)}
 
 
-@pytest.mark.parametrize("seed", SEEDS)
-def test_surround_keeping_open_space_outlasts_the_rival(seed):
-    env, info = play("glyphbench/miniatari-surround-v0", cycle_rider, seed)
-    assert info["won"] is True and env.episode_return == pytest.approx(1)
-
-
-@pytest.mark.parametrize("seed", SEEDS)
-def test_surround_riding_straight_crashes(seed):
-    env, info = play("glyphbench/miniatari-surround-v0", lambda e: 0, seed)
-    assert info["won"] is False and env.episode_return == pytest.approx(-1)
-
-
 def test_surround_reversal_ignored_trails_block_and_head_on_is_a_draw():
     env = make("glyphbench/miniatari-surround-v0", chance=0.0)
     env.reset(seed=0)
@@ -422,11 +323,6 @@ def test_surround_reversal_ignored_trails_block_and_head_on_is_a_draw():
     env.me[:], env.cpu[:] = [5, 3, 0, 1], [5, 5, 0, -1]
     env.step(0)
     assert env.done and env.episode_return == 0 and env.won is False
-
-
-def test_atari_surround_scores():
-    env, info = play("glyphbench/atari-surround-v0", cycle_rider, 0)
-    assert env.score.mine > 0 and env.episode_return > 0
 
 
 # -- bowling ---------------------------------------------------------------------------------------
@@ -457,18 +353,6 @@ def bowler(env):
     return max(moves, key=lambda a: ((r - 1, c + (0, -1, 1)[a]) in env.pins) + best[r - 1][c + (0, -1, 1)[a]])
 
 
-@pytest.mark.parametrize("seed", SEEDS)
-def test_bowling_hooking_through_the_rack_wins(seed):
-    env, info = play("glyphbench/miniatari-bowling-v0", bowler, seed)
-    assert info["won"] is True and env.score.done == env.params.goal and env.episode_return == pytest.approx(1)
-
-
-@pytest.mark.parametrize("seed", SEEDS)
-def test_bowling_gutter_balls_run_out_of_frames(seed):
-    env, info = play("glyphbench/miniatari-bowling-v0", lambda e: 1 if e.ball is None and e.col > 0 else 3, seed)
-    assert info["won"] is False and env.done and env.score.done == 0 and env.turn < env.max_turns
-
-
 def test_bowling_ball_knocks_what_it_meets_and_frames_reset_the_rack():
     env = make("glyphbench/miniatari-bowling-v0", scatter=0.0)
     env.reset(seed=0)
@@ -485,11 +369,6 @@ def test_bowling_ball_knocks_what_it_meets_and_frames_reset_the_rack():
     assert env.frame_no == 2 and len(env.pins) == 10 and env.roll == 0
 
 
-def test_atari_bowling_scores():
-    env, info = play("glyphbench/atari-bowling-v0", bowler, 0)
-    assert env.score.done > 0 and env.episode_return > 0
-
-
 # -- double dunk -----------------------------------------------------------------------------------
 def dunker(env):
     """On offence drive round the defender to the hoop and shoot close in when nobody is beside
@@ -504,18 +383,6 @@ def dunker(env):
     if me[1] == cpu[1] and cpu[0] < me[0]:          # the defender is in front: sidestep
         return 3 if me[1] > 0 and me[1] > env.params.width // 2 - 2 else 4
     return step_to(env, me[0], me[1], 1, hoop[1])
-
-
-@pytest.mark.parametrize("seed", SEEDS)
-def test_doubledunk_driving_and_swiping_wins(seed):
-    env, info = play("glyphbench/miniatari-doubledunk-v0", dunker, seed)
-    assert info["won"] is True and env.score.mine == env.params.goal and env.episode_return > 0
-
-
-@pytest.mark.parametrize("seed", SEEDS)
-def test_doubledunk_standing_still_loses(seed):
-    env, info = play("glyphbench/miniatari-doubledunk-v0", lambda e: 0, seed)
-    assert info["won"] is False and env.score.theirs == env.params.goal and env.episode_return == pytest.approx(-1)
 
 
 def test_doubledunk_possession_changes_after_every_shot_and_points_by_distance():
@@ -539,6 +406,48 @@ def test_doubledunk_possession_changes_after_every_shot_and_points_by_distance()
     assert env.score.mine == env.params.inside + env.params.outside
 
 
-def test_atari_doubledunk_scores():
-    env, info = play("glyphbench/atari-doubledunk-v0", dunker, 0, turns=3000)
-    assert env.score.mine > 0 and env.episode_return > 0
+# -- every game: the MiniAtari win and loss paths, the Atari scorer ---------------------------------
+def mini_policies():
+    """(game, a scripted winner, a scripted loser)."""
+    return [
+        ("breakout", breakout_aimer, lambda e: 2),                       # the paddle parked left
+        ("tennis", tennis_placer, lambda e: 3),                          # standing in the left corner
+        ("icehockey", hockey_forward, lambda e: 3),                      # skating off to the left
+        ("doubledunk", dunker, lambda e: 0),                             # standing still
+        ("boxing", boxer, lambda e: 0),
+        ("fishingderby", angler, lambda e: 1),                           # the hook kept high
+        ("surround", cycle_rider, lambda e: 0),                          # riding straight on
+        ("bowling", bowler, lambda e: 1 if e.ball is None and e.col > 0 else 3),   # gutter balls
+    ]
+
+
+WIN_LOSS = [(g, w, lose, seed) for g, w, lose in mini_policies() for seed in SEEDS]
+
+
+@pytest.mark.parametrize("game,winner,loser,seed", WIN_LOSS, ids=[f"{g}-{s}" for g, _, _, s in WIN_LOSS])
+def test_mini_scripted_win_and_loss(game, winner, loser, seed):
+    env, info = play(f"glyphbench/miniatari-{game}-v0", winner, seed)
+    assert info["won"] is True and env.episode_return == pytest.approx(env.score.points if env.pattern == "A"
+                                                                       else (env.score.mine - env.score.theirs) * env.params.unit)
+    assert env.episode_return > 0 and not info["clamped"]
+    if env.pattern == "A":
+        assert env.score.done == env.params.goal and env.episode_return == pytest.approx(1)
+    else:
+        assert env.score.mine == env.params.goal
+    env, info = play(f"glyphbench/miniatari-{game}-v0", loser, seed)
+    assert info["won"] is False and env.done and env.turn < env.max_turns
+    if env.pattern == "A":
+        assert env.episode_return < 1
+    else:
+        assert env.score.theirs == env.params.goal and env.episode_return < 0
+
+
+ATARI = [("breakout", breakout_aimer, 1500), ("tennis", tennis_placer, 3000), ("icehockey", hockey_forward, 3000),
+         ("doubledunk", dunker, 3000), ("boxing", boxer, 2000), ("fishingderby", angler, 2000),
+         ("surround", cycle_rider, 3000), ("bowling", bowler, 3000)]
+
+
+@pytest.mark.parametrize("game,policy,turns", ATARI, ids=[g for g, _, _ in ATARI])
+def test_atari_scripted_policy_scores(game, policy, turns):
+    env, info = play(f"glyphbench/atari-{game}-v0", policy, 0, turns=turns)
+    assert env.episode_return > 0 and (env.score.done if env.pattern == "A" else env.score.mine) > 0
