@@ -49,25 +49,34 @@ class Surround(ArcadeTask):
         p = self.params
         self.still = self._still()
         self.still_version += 1
-        self.walls: set = set()
+        self.span = p.width + 2                   # the occupancy grid has a wall border
+        self.occ = bytearray([1]) * self.span + (bytearray([1]) + bytearray(p.width) + bytearray([1])) * p.height \
+            + bytearray([1]) * self.span
         self.me, self.cpu = [p.height - 3, 2, -1, 0], [2, p.width - 3, 1, 0]   # row, col, heading
 
     def _free(self, r: int, c: int) -> bool:
-        return 0 <= r < self.params.height and 0 <= c < self.params.width and (r, c) not in self.walls
+        return -1 <= r <= self.params.height and -1 <= c <= self.params.width and not self.occ[(r + 1) * self.span + c + 1]
 
     def run(self, r: int, c: int, dr: int, dc: int) -> int:
         """Open cells straight ahead of (r, c) along (dr, dc)."""
+        occ, step = self.occ, dr * self.span + dc
+        i = (r + 1) * self.span + c + 1 + step
         n = 0
-        while self._free(r + dr, c + dc):
-            r, c, n = r + dr, c + dc, n + 1
+        while not occ[i]:
+            i, n = i + step, n + 1
         return n
 
     def _steer(self) -> None:
         cpu = self.cpu
         if self.draws.random() >= self.params.chance:
             return
-        best = max(HEADINGS[1:], key=lambda h: (self.run(cpu[0], cpu[1], *h) if h != (-cpu[2], -cpu[3]) else -1,
-                                                h == (cpu[2], cpu[3])))
+        r, c, hr, hc = cpu
+        best, most = (hr, hc), self.run(r, c, hr, hc)
+        for h in HEADINGS[1:]:
+            if h[0] != -hr or h[1] != -hc:
+                n = self.run(r, c, h[0], h[1])
+                if n > most:
+                    best, most = h, n
         cpu[2], cpu[3] = best
 
     def _play(self, action: int) -> None:
@@ -77,7 +86,7 @@ class Surround(ArcadeTask):
             me[2], me[3] = head
         self._steer()
         for who in (me, cpu):
-            self.walls.add((who[0], who[1]))
+            self.occ[(who[0] + 1) * self.span + who[1] + 1] = 1
             self.set_still(who[0], who[1], TRAIL)
         nm, nc = (me[0] + me[2], me[1] + me[3]), (cpu[0] + cpu[2], cpu[1] + cpu[3])
         me[0], me[1], cpu[0], cpu[1] = *nm, *nc

@@ -319,7 +319,7 @@ def test_surround_reversal_ignored_trails_block_and_head_on_is_a_draw():
     env.reset(seed=0)
     r, c = env.me[0], env.me[1]
     env.step(4)                                       # DOWN while heading up: ignored
-    assert (env.me[0], env.me[1]) == (r - 1, c) and (r, c) in env.walls and env.frame.grid[r][c] == "#"
+    assert (env.me[0], env.me[1]) == (r - 1, c) and not env._free(r, c) and env.frame.grid[r][c] == "#"
     env.me[:], env.cpu[:] = [5, 3, 0, 1], [5, 5, 0, -1]
     env.step(0)
     assert env.done and env.episode_return == 0 and env.won is False
