@@ -2,7 +2,7 @@
 Fish swim in lanes below the surface, one per lane, across both halves. A fish that swims onto
 your hook is hooked and rises a row a turn (two while you REEL); at the surface it is caught. A
 shark patrols the row under the surface and eats a hooked fish that rises through its cell.
-The rival moves its hook toward a fish with a probability and reels with another. Pattern C:
+The rival moves its hook toward the nearest free fish with a probability and reels with another. Pattern C:
 first to ``goal`` fish."""
 
 from __future__ import annotations
@@ -66,6 +66,7 @@ class FishingDerby(ArcadeTask):
         self.half = p.width // 2
         self.me, self.cpu = [2, self.half // 2], [2, self.half + (p.width - self.half) // 2]
         self.caught = {"you": None, "cpu": None}     # the fish on each hook
+        self.lane = {f[0]: f for f in self.fish}     # each lane's row: its fish
 
     def _play(self, action: int) -> None:
         p, me, cpu = self.params, self.me, self.cpu
@@ -74,9 +75,10 @@ class FishingDerby(ArcadeTask):
         if not 0 <= sh[1] < p.width:
             sh[2] = -sh[2]
             sh[1] += 2 * sh[2]
+        mine, theirs, w = self.caught["you"], self.caught["cpu"], p.width
         for f in self.fish:
-            if self.tick % f[3] == 0 and not self._hooked(f):
-                f[1] = (f[1] + f[2]) % p.width
+            if self.tick % f[3] == 0 and f is not mine and f is not theirs:
+                f[1] = (f[1] + f[2]) % w
         if self.caught["you"]:
             self._rise("you", me, 2 if action == REEL else 1)
         else:
@@ -87,16 +89,13 @@ class FishingDerby(ArcadeTask):
         if self.caught["cpu"]:
             self._rise("cpu", cpu, 2 if self.draws.random() < p.reel else 1)
         else:
-            free = [f for f in self.fish if not self._hooked(f)]
-            near = min(free, key=lambda f: abs(f[0] - cpu[0]) + abs(f[1] - cpu[1]))
+            near = min((f for f in self.fish if f is not mine), key=lambda f: abs(f[0] - cpu[0]) + abs(f[1] - cpu[1]))
             dr, dc = pursue(cpu[0], cpu[1], near[0], clamp(near[1], self.half, p.width - 1), p.chance, self.draws)
             cpu[0], cpu[1] = cpu[0] + dr, cpu[1] + dc
         for side, hook in (("you", me), ("cpu", cpu)):
-            if self.caught[side] is None:
-                for f in self.fish:
-                    if f[0] == hook[0] and f[1] == hook[1] and not self._hooked(f):
-                        self.caught[side] = f
-                        break
+            f = self.lane.get(hook[0])
+            if f and self.caught[side] is None and f[0] == hook[0] and f[1] == hook[1] and not self._hooked(f):
+                self.caught[side] = f
 
     def _hooked(self, f: list) -> bool:
         return f is self.caught["you"] or f is self.caught["cpu"]
@@ -124,9 +123,15 @@ class FishingDerby(ArcadeTask):
         hook[0] = 2
         self.caught[side] = None
 
+    def _rows(self) -> list[str]:
+        rows, w = self.still[:], self.params.width
+        for f in self.fish:                          # a free fish is alone on its lane's row
+            if not self._hooked(f):
+                rows[f[0]] = EMPTY * f[1] + FISH + EMPTY * (w - 1 - f[1])
+        return rows
+
     def _sprites(self):
-        out = [(f[0], f[1], HOOKED if self._hooked(f) else FISH) for f in self.fish]
-        out += [(self.shark[0], self.shark[1], SHARK), (self.cpu[0], self.cpu[1], CPU), (self.me[0], self.me[1], YOU)]
+        out = [(self.shark[0], self.shark[1], SHARK), (self.cpu[0], self.cpu[1], CPU), (self.me[0], self.me[1], YOU)]
         if self.caught["you"]:
             out.append((self.me[0], self.me[1], HOOKED))
         if self.caught["cpu"]:
