@@ -21,7 +21,8 @@ ACTIONS = ActionSet([("NOOP", "stand still"), ("UP", "step one row toward the ho
                      ("SHOOT", "shoot with the ball; on defence, swipe at the ball beside you")], noop="NOOP")
 MOVES = ((0, 0), (-1, 0), (1, 0), (0, -1), (0, 1), (0, 0))
 SHOOT = 5
-MAKES = (0.7, 0.45, 0.2)               # close (within 2), mid (within 5), long
+MAKES = (0.7, 0.45, 0.2)               # close, mid, long
+CLOSE, MID = 2, 5                      # the close and mid ranges (cells from the hoop)
 
 
 @dataclass(frozen=True)
@@ -45,7 +46,7 @@ class DoubleDunk(ArcadeTask):
     title = "Double Dunk"
     rules = ("A {width}x{height} half court; the hoop (U) is at the top middle. The side with the "
              "ball (o, carried just above its player) drives; SHOOT scores with chance {close} within "
-             "2 cells of the hoop, {mid} within 5, {far} beyond (halved with a defender beside the "
+             "{near} cells of the hoop, {mid} within {midrange}, {far} beyond (halved with a defender beside the "
              "shooter); a basket is worth {inside} within {arc} cells, {outside} beyond. Made or "
              "missed, the other side then checks the ball at the bottom. On defence, SHOOT beside the "
              "carrier steals with chance {steal}. The opponent (X) steps with chance {chance} a turn, "
@@ -58,7 +59,8 @@ class DoubleDunk(ArcadeTask):
     glyphs = {EMPTY: "court", HOOP: "hoop", BALL: "ball", YOU: "you", CPU: "opponent"}
 
     def prompt_fields(self) -> dict:
-        return {**super().prompt_fields(), "close": MAKES[0], "mid": MAKES[1], "far": MAKES[2]}
+        return {**super().prompt_fields(), "close": MAKES[0], "mid": MAKES[1], "far": MAKES[2], "near": CLOSE,
+                "midrange": MID}
 
     def _still(self) -> list[str]:
         p = self.params
@@ -87,7 +89,7 @@ class DoubleDunk(ArcadeTask):
 
     def _shoot(self, side: str, who: list, other: list) -> None:
         p, d = self.params, distance(who, self.hoop)
-        make = MAKES[0 if d <= 2 else 1 if d <= 5 else 2] / (2 if distance(who, tuple(other)) == 1 else 1)
+        make = MAKES[0 if d <= CLOSE else 1 if d <= MID else 2] / (2 if distance(who, tuple(other)) == 1 else 1)
         mine = side == "you"
         if self.draws.random() < make:
             pts = p.inside if d <= p.arc else p.outside
@@ -123,7 +125,7 @@ class DoubleDunk(ArcadeTask):
             if not self._swipe("cpu"):
                 guard = (me[0] - 1, me[1]) if me[0] > 1 else (me[0], me[1] + (1 if cpu[1] > me[1] else -1))
                 self._step(cpu, me, *pursue(cpu[0], cpu[1], *guard, 1.0, self.draws))
-        elif distance(cpu, self.hoop) <= 2:
+        elif distance(cpu, self.hoop) <= CLOSE:
             self._shoot("cpu", cpu, me)
         else:
             dr, dc = pursue(cpu[0], cpu[1], 1, self.hoop[1], 1.0, self.draws)
