@@ -17,7 +17,9 @@ Engine-level modules, which the games import (and nothing else of the family):
   ``Pack`` of enemies, ``march`` (formations), ``bounce``.
 - ``scroller``: scrolling worlds (``Strip``: the window that moves a line a scroll; ``Channel``:
   a river or road of wandering width; ``Pacer``: periodic or speed-driven timing; ``Camera``:
-  a view following the player around a wrapping world).
+  a view following the player around a wrapping world);
+- ``duel``: paddle, ball and sports duels (``Ball`` with reflecting walls, paddle-third
+  ``deflect``, ``serve``, the scripted ``pursue``, ``Possession``, tennis-style ``Match``).
 """
 
 from . import amidar  # noqa: F401
@@ -26,14 +28,20 @@ from . import asterix  # noqa: F401
 from . import atlantis  # noqa: F401
 from . import bankheist  # noqa: F401
 from . import beamrider  # noqa: F401
+from . import bowling  # noqa: F401
+from . import boxing  # noqa: F401
+from . import breakout  # noqa: F401
 from . import centipede  # noqa: F401
 from . import choppercommand  # noqa: F401
 from . import defender  # noqa: F401
 from . import demonattack  # noqa: F401
+from . import doubledunk  # noqa: F401
 from . import enduro  # noqa: F401
+from . import fishingderby  # noqa: F401
 from . import freeway  # noqa: F401
 from . import frostbite  # noqa: F401
 from . import gopher  # noqa: F401
+from . import icehockey  # noqa: F401
 from . import kangaroo  # noqa: F401
 from . import kungfumaster  # noqa: F401
 from . import mspacman  # noqa: F401
@@ -44,5 +52,7 @@ from . import riverraid  # noqa: F401
 from . import skiing  # noqa: F401
 from . import spaceinvaders  # noqa: F401
 from . import stargunner  # noqa: F401
+from . import surround  # noqa: F401
+from . import tennis  # noqa: F401
 from . import upndown  # noqa: F401
 from . import zaxxon  # noqa: F401
