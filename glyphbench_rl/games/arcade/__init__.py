@@ -13,5 +13,6 @@ Engine-level modules, which the games import (and nothing else of the family):
 """
 
 from . import freeway, pong, spaceinvaders
+from . import alien
 
-__all__ = ["freeway", "pong", "spaceinvaders"]
+__all__ = ["freeway", "pong", "spaceinvaders", "alien"]

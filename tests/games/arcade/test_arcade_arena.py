@@ -1,0 +1,103 @@
+"""The arena family (free-roam shooters): the engine's core mechanic, and per game a scripted
+win path and loss path on the MiniAtari preset and a scoring policy on the Atari preset."""
+
+from __future__ import annotations
+
+import copy
+
+import pytest
+
+from glyphbench_rl import make
+
+NOOP, UP, DOWN, LEFT, RIGHT, FIRE = range(6)
+
+
+def play(task_id: str, policy, seed: int, turns: int | None = None):
+    env = make(task_id)
+    env.reset(seed=seed)
+    done, n = False, 0
+    while not done and (turns is None or n < turns):
+        _, _, term, trunc, info = env.step(policy(env))
+        done, n = term or trunc, n + 1
+    return env, info
+
+
+def value(env, lives: int, ret: float) -> float:
+    """How good a position is for a hunter: alive, paid, lined up with a foe it faces."""
+    if env.lives < lives or (env.done and not env.won):
+        return -1000.0
+    v = 100 * (env.episode_return - ret)
+    if env.won:
+        return v + 500
+    best = 0.0
+    for f in env.foes:
+        dr, dc = f.r - env.r, f.c - env.c
+        d = abs(dr) + abs(dc)
+        if d <= 1:
+            v -= 50
+        near = -min(abs(dr), abs(dc)) - 0.1 * d
+        if (dr == 0 or dc == 0) and d <= env.params.reach + 1:
+            near += 3 if (env.face == ((dr > 0) - (dr < 0), (dc > 0) - (dc < 0))) else 1
+        best = max(best, near) if best else near
+    return v + best + extra(env)
+
+
+def extra(env) -> float:
+    goal = getattr(env, "target", None)
+    return -abs(goal[0] - env.r) - abs(goal[1] - env.c) if goal else 0.0
+
+
+def hunter(env) -> int:
+    """Two-ply lookahead over copies of the game (the foes' moves are deterministic enough)."""
+    lives, ret = env.lives, env.episode_return
+    n = len(env.action_names) if hasattr(env, "action_names") else 6
+    scored = []
+    for a in range(n):
+        e1 = copy.deepcopy(env)
+        e1.step(a)
+        v1 = value(e1, lives, ret)
+        if v1 > -1000 and not e1.done:
+            best2 = -1e9
+            for b in range(n):
+                e2 = copy.deepcopy(e1)
+                e2.step(b)
+                best2 = max(best2, value(e2, lives, ret))
+            v1 = 0.5 * v1 + 0.5 * best2
+        scored.append((v1, -a, a))
+    return max(scored)[2]
+
+
+# -- the engine's core mechanic -----------------------------------------------------------------
+def test_foes_close_on_the_dominant_axis_every_k_ticks_and_a_shot_flies_its_reach():
+    env = make("glyphbench/miniatari-alien-v0")
+    env.reset(seed=0)
+    env.foes[:] = []
+    foe = env.add_foe(env.r - 4 if env.r >= 4 else env.r + 4, env.c)
+    start = (foe.r, foe.c)
+    k = env.params.every
+    for _ in range(k - env.tick % k - 1):
+        env.step(NOOP)
+    assert (foe.r, foe.c) == start
+    env.step(NOOP)
+    assert abs(foe.r - env.r) == 3 and foe.c == env.c          # one step along the long axis
+    env.step(UP if foe.r < env.r else DOWN)                     # face it
+    env.step(FIRE)
+    assert env.kills == 1 and foe not in env.foes and env.episode_return == pytest.approx(env.params.unit)
+
+
+# -- alien ---------------------------------------------------------------------------------------
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_alien_hunter_wins(seed):
+    env, info = play("glyphbench/miniatari-alien-v0", hunter, seed)
+    assert info["won"] is True and env.episode_return == pytest.approx(1.0)
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_alien_standing_still_is_caught(seed):
+    env, info = play("glyphbench/miniatari-alien-v0", lambda e: NOOP, seed)
+    assert info["won"] is False and env.episode_return == pytest.approx(-1.0)
+
+
+def test_alien_atari_scores_and_crushes_eggs():
+    env, _ = play("glyphbench/atari-alien-v0", hunter, 0, turns=150)
+    assert env.episode_return > 0 and env.kills > 0
