@@ -31,7 +31,7 @@ class Alien(ArenaTask):
     rules = ("You ({lives_text}) walk the corridors of a {width}x{height} hull between pillar "
              "walls (#). {foes} aliens (A) each step one cell toward you every {every} turns; one "
              "that reaches you kills you. FIRE sends a flame (*) {reach} cells the way you face; "
-             "it kills the first alien it meets.{egg_text}{volley_text}")
+             "it kills the first alien it meets.{turn_text}{egg_text}{volley_text}")
     rewards = "+{unit} for each {what}; {death} when the game is lost."
     ends = "when you have scored {goal} times or the game is lost"
     Params = AlienParams

@@ -63,7 +63,8 @@ class ArenaTask(ArcadeTask):
         return {**super().prompt_fields(),
                 "volley_text": (f" Every {p.volley} turns a foe in line with you fires a shell "
                                 f"({SHELL}) at you; a shell that hits you costs a life.") if p.volley else "",
-                "wrap_text": " The field wraps around at its edges." if p.wrap else ""}
+                "wrap_text": " The field wraps around at its edges." if p.wrap else "",
+                "turn_text": " A move into a wall or a foe only turns you to face it."}
 
     # -- set-up --------------------------------------------------------------------------------------
     def start_arena(self, rng, r: int, c: int) -> None:
@@ -109,10 +110,8 @@ class ArenaTask(ArcadeTask):
             if 0 <= r < p.height and 0 <= c < p.width:
                 if self._enter(r, c) or self.done:
                     return
-                if self.still[r][c] not in self.SOLID:
+                if self.still[r][c] not in self.SOLID and not any(f.r == r and f.c == c for f in self.foes):
                     self.r, self.c = r, c
-            if self._caught():
-                return
         if action == FIRE:
             self.gun.fire(self.tick, self.r, self.c, *self.face, SHOT)
         self._shots()

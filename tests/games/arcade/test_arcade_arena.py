@@ -35,11 +35,22 @@ def value(env, lives: int, ret: float) -> float:
         d = abs(dr) + abs(dc)
         if d <= 1:
             v -= 50
+        elif d == 2:
+            v -= 8
         near = -min(abs(dr), abs(dc)) - 0.1 * d
-        if (dr == 0 or dc == 0) and d <= env.params.reach + 1:
+        if (dr == 0 or dc == 0) and d <= env.params.reach + 1 and clear(env, dr, dc, d):
             near += 3 if (env.face == ((dr > 0) - (dr < 0), (dc > 0) - (dc < 0))) else 1
         best = max(best, near) if best else near
-    return v + best + extra(env)
+    mid = abs(env.r - env.params.height // 2) + abs(env.c - env.params.width // 2)
+    p = env.params
+    walls = sum(not (0 <= env.r + a < p.height and 0 <= env.c + b < p.width)
+                or env.still[env.r + a][env.c + b] in env.SOLID for a, b in ((1, 0), (-1, 0), (0, 1), (0, -1)))
+    return v + best - 0.1 * mid - walls + extra(env)
+
+
+def clear(env, dr: int, dc: int, d: int) -> bool:
+    sr, sc = (dr > 0) - (dr < 0), (dc > 0) - (dc < 0)
+    return all(env.still[env.r + sr * k][env.c + sc * k] not in env.SOLID for k in range(1, d))
 
 
 def extra(env) -> float:
@@ -100,4 +111,22 @@ def test_alien_standing_still_is_caught(seed):
 
 def test_alien_atari_scores_and_crushes_eggs():
     env, _ = play("glyphbench/atari-alien-v0", hunter, 0, turns=150)
+    assert env.episode_return > 0 and env.kills > 0
+
+
+# -- berzerk -------------------------------------------------------------------------------------
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_berzerk_hunter_wins(seed):
+    env, info = play("glyphbench/miniatari-berzerk-v0", hunter, seed)
+    assert info["won"] is True and env.episode_return == pytest.approx(1.0)
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_berzerk_touching_the_wall_kills(seed):
+    env, info = play("glyphbench/miniatari-berzerk-v0", lambda e: LEFT, seed)
+    assert info["won"] is False and env.episode_return == pytest.approx(-1.0) and env.turn == 1
+
+
+def test_berzerk_atari_scores():
+    env, _ = play("glyphbench/atari-berzerk-v0", hunter, 0, turns=150)
     assert env.episode_return > 0 and env.kills > 0
