@@ -167,16 +167,17 @@ class ArenaTask(ArcadeTask):
             dr, dc = chase(foe.r, foe.c, self.r, self.c)
             if not (dr or dc):
                 continue
-            if dr:
-                s = (self.c > foe.c) - (self.c < foe.c) or 1
+            if dr:       # blocked on the long axis: slide the way it slid before, else toward you
+                s = foe.dc or (self.c > foe.c) - (self.c < foe.c) or 1
                 steps = ((dr, 0), (0, s), (0, -s))
             else:
-                s = (self.r > foe.r) - (self.r < foe.r) or 1
+                s = foe.dr or (self.r > foe.r) - (self.r < foe.r) or 1
                 steps = ((0, dc), (s, 0), (-s, 0))
-            for sr, sc in steps:
+            for k, (sr, sc) in enumerate(steps):
                 r, c = foe.r + sr, foe.c + sc
                 if (r, c) == (self.r, self.c) or (0 <= r < p.height and 0 <= c < p.width and self.free(r, c)):
                     foe.r, foe.c = r, c
+                    foe.dr, foe.dc = (sr, sc) if k else (0, 0)
                     break
         return self._caught()
 
