@@ -47,6 +47,8 @@ class ArenaParams(ArcadeParams):
     volley: int = param(0, 0, 100)       # ticks between foe shells (0: foes do not shoot)
     wrap: int = param(0, 0, 1)           # 1: the field wraps around at its edges
     air: int = param(0, 0, 10000)        # oxygen or fuel in ticks (0: none)
+    hp: int = param(1, 1, 9)             # shots that kill a foe
+    reinforce: int = param(0, 0, 500)    # ticks between reinforcements up to ``foes`` (0: on a kill)
 
 
 class ArenaTask(ArcadeTask):
@@ -94,7 +96,7 @@ class ArenaTask(ArcadeTask):
         return next((r, c) for r in rows for c in cols if self.free(r, c) and (r, c) != (self.r, self.c))
 
     def add_foe(self, r: int, c: int, dr: int = 0, dc: int = 0, glyph: str | None = None, data=None) -> Body:
-        foe = Body(r, c, dr, dc, glyph or self.FOE, data)
+        foe = Body(r, c, dr, dc, glyph or self.FOE, self.params.hp if data is None else data)
         self.foes.append(foe)
         return foe
 
@@ -123,6 +125,8 @@ class ArenaTask(ArcadeTask):
             return
         if self.air is not None and self.air.tick() and self.lose_life(self.air_out):
             return
+        if p.reinforce and self.tick % p.reinforce == 0 and len(self.foes) < p.foes:
+            self.stock(one=True)
         self._turn()
 
     air_out = "You ran out of air."
@@ -207,8 +211,21 @@ class ArenaTask(ArcadeTask):
         return False
 
     # -- hooks ---------------------------------------------------------------------------------------
+    def stock(self, far: int = 6, one: bool = False) -> None:
+        """Bring the foes up to ``foes`` on the field (or add ``one``), never more than the kills
+        left to ``goal``."""
+        p = self.params
+        while len(self.foes) < p.foes and self.kills + len(self.foes) < p.goal:
+            self.add_foe(*self.spot(far))
+            if one:
+                break
+
     def _hit(self, foe: Body) -> None:
-        """Your shot struck ``foe``: it dies and scores one unit."""
+        """Your shot struck ``foe``: it loses a hit point; at none it dies and scores one unit."""
+        foe.data -= 1
+        if foe.data > 0:
+            self.say(f"{self.foe_name.capitalize()} hit!")
+            return
         self.foes.remove(foe)
         self.kills += 1
         self.say(f"{self.foe_name.capitalize()} destroyed!")

@@ -97,8 +97,9 @@ def test_foes_close_on_the_dominant_axis_every_k_ticks_and_a_shot_flies_its_reac
 
 
 # -- per game: a win path, a loss path (mini) and a scoring policy (Atari) -------------------------
-HUNTED = ["alien", "berzerk", "wizardofwor"]
-LOSERS = {"alien": lambda e: NOOP, "berzerk": lambda e: LEFT, "wizardofwor": lambda e: NOOP}
+HUNTED = ["alien", "berzerk", "wizardofwor", "battlezone"]
+LOSERS = {"alien": lambda e: NOOP, "berzerk": lambda e: LEFT, "wizardofwor": lambda e: NOOP,
+          "battlezone": lambda e: NOOP}
 
 
 @pytest.mark.parametrize("seed", [0, 1, 2])
@@ -133,3 +134,14 @@ def test_alien_atari_eggs_score_when_crushed():
     env.step(LEFT)
     env.step(LEFT)
     assert env.episode_return == pytest.approx(env.params.unit)
+
+
+def test_battlezone_an_enemy_in_line_fires_a_shell_that_kills():
+    env = make("glyphbench/miniatari-battlezone-v0")
+    env.reset(seed=0)
+    tank = env.foes[0]
+    tank.r, tank.c = env.r, env.c - 4
+    obs = ""
+    while not env.done:
+        obs = env.step(NOOP)[0]
+    assert env.won is False and "shell hit you" in obs and env.turn <= env.params.volley + 3
