@@ -33,13 +33,15 @@ def value(env, lives: int, ret: float) -> float:
     for f in env.foes:
         dr, dc = f.r - env.r, f.c - env.c
         d = abs(dr) + abs(dc)
+        near = -min(abs(dr), abs(dc)) - 0.1 * d
+        sights = False
+        if (dr == 0 or dc == 0) and d <= env.params.reach + 1 and clear(env, dr, dc, d):
+            sights = env.face == ((dr > 0) - (dr < 0), (dc > 0) - (dc < 0))
+            near += 3 if sights else 1
         if d <= 1:
             v -= 50
-        elif d == 2:
+        elif d == 2 and not sights:
             v -= 8
-        near = -min(abs(dr), abs(dc)) - 0.1 * d
-        if (dr == 0 or dc == 0) and d <= env.params.reach + 1 and clear(env, dr, dc, d):
-            near += 3 if (env.face == ((dr > 0) - (dr < 0), (dc > 0) - (dc < 0))) else 1
         best = max(best, near) if best else near
     mid = abs(env.r - env.params.height // 2) + abs(env.c - env.params.width // 2)
     p = env.params
@@ -58,24 +60,40 @@ def extra(env) -> float:
     return -abs(goal[0] - env.r) - abs(goal[1] - env.c) if goal else 0.0
 
 
-def hunter(env) -> int:
-    """Two-ply lookahead over copies of the game (the foes' moves are deterministic enough)."""
+def search(env, lives: int, ret: float, depth: int) -> float:
+    """The best value reachable in ``depth`` more turns (the top three first moves explored)."""
+    if depth == 0 or env.done:
+        return value(env, lives, ret)
+    tried = []
+    for a in range(6):
+        e = copy.deepcopy(env)
+        e.step(a)
+        tried.append((value(e, lives, ret), e))
+    tried.sort(key=lambda t: -t[0])
+    best = -1e9
+    for v, e in tried[:3]:
+        if v > -1000:
+            v = 0.5 * v + 0.5 * search(e, lives, ret, depth - 1)
+        best = max(best, v)
+    return best
+
+
+def hunter(env, depth: int = 2) -> int:
+    """Lookahead over copies of the game (the foes' moves are deterministic enough)."""
     lives, ret = env.lives, env.episode_return
-    n = len(env.action_names) if hasattr(env, "action_names") else 6
     scored = []
-    for a in range(n):
-        e1 = copy.deepcopy(env)
-        e1.step(a)
-        v1 = value(e1, lives, ret)
-        if v1 > -1000 and not e1.done:
-            best2 = -1e9
-            for b in range(n):
-                e2 = copy.deepcopy(e1)
-                e2.step(b)
-                best2 = max(best2, value(e2, lives, ret))
-            v1 = 0.5 * v1 + 0.5 * best2
-        scored.append((v1, -a, a))
+    for a in range(6):
+        e = copy.deepcopy(env)
+        e.step(a)
+        v = value(e, lives, ret)
+        if v > -1000 and not e.done:
+            v = 0.5 * v + 0.5 * search(e, lives, ret, depth - 1)
+        scored.append((v, -a, a))
     return max(scored)[2]
+
+
+def deep_hunter(env) -> int:
+    return hunter(env, 3)
 
 
 # -- the engine's core mechanic -----------------------------------------------------------------
@@ -97,7 +115,8 @@ def test_foes_close_on_the_dominant_axis_every_k_ticks_and_a_shot_flies_its_reac
 
 
 # -- per game: a win path, a loss path (mini) and a scoring policy (Atari) -------------------------
-HUNTED = ["alien", "berzerk", "wizardofwor", "battlezone"]
+HUNTED = ["alien", "berzerk", "wizardofwor", "battlezone", "robotank"]
+POLICY = {"robotank": deep_hunter}
 LOSERS = {"alien": lambda e: NOOP, "berzerk": lambda e: LEFT, "wizardofwor": lambda e: NOOP,
           "battlezone": lambda e: NOOP}
 
@@ -105,7 +124,7 @@ LOSERS = {"alien": lambda e: NOOP, "berzerk": lambda e: LEFT, "wizardofwor": lam
 @pytest.mark.parametrize("seed", [0, 1, 2])
 @pytest.mark.parametrize("game", HUNTED)
 def test_mini_hunter_wins(game, seed):
-    env, info = play(f"glyphbench/miniatari-{game}-v0", hunter, seed)
+    env, info = play(f"glyphbench/miniatari-{game}-v0", POLICY.get(game, hunter), seed)
     assert info["won"] is True and env.episode_return == pytest.approx(1.0) and not info["clamped"]
 
 
@@ -118,7 +137,7 @@ def test_mini_loss_path(game, seed):
 
 @pytest.mark.parametrize("game", HUNTED)
 def test_atari_hunter_scores(game):
-    env, _ = play(f"glyphbench/atari-{game}-v0", hunter, 0, turns=120)
+    env, _ = play(f"glyphbench/atari-{game}-v0", POLICY.get(game, hunter), 0, turns=120)
     assert env.episode_return > 0 and env.kills > 0
 
 
@@ -145,3 +164,23 @@ def test_battlezone_an_enemy_in_line_fires_a_shell_that_kills():
     while not env.done:
         obs = env.step(NOOP)[0]
     assert env.won is False and "shell hit you" in obs and env.turn <= env.params.volley + 3
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_robotank_a_still_tank_is_rammed_and_loses_unpaid(seed):
+    env, info = play("glyphbench/miniatari-robotank-v0", lambda e: NOOP, seed)
+    assert info["won"] is False and env.episode_return == 0 and env.turn < env.max_turns
+
+
+def test_robotank_atari_hits_knock_out_systems_in_order():
+    env = make("glyphbench/atari-robotank-v0")
+    env.reset(seed=0)
+    assert not env.broken("video")
+    env.lose_life("hit")
+    assert env.broken("video") and not env.broken("cannon")
+    env.lose_life("hit")
+    assert env.broken("cannon") and env.gun.reach == env.params.reach // 2
+    foe = env.foes[0]
+    foe.r, foe.c, foe.data = env.r - 2, env.c, 2
+    env.step(FIRE)
+    assert foe in env.foes and foe.data == 1                  # two hits to destroy a robot tank
