@@ -13,6 +13,6 @@ Engine-level modules, which the games import (and nothing else of the family):
 """
 
 from . import freeway, pong, spaceinvaders
-from . import alien, battlezone, berzerk, robotank, wizardofwor
+from . import alien, battlezone, berzerk, robotank, timepilot, wizardofwor
 
-__all__ = ["freeway", "pong", "spaceinvaders", "alien", "berzerk", "wizardofwor", "battlezone", "robotank"]
+__all__ = ["freeway", "pong", "spaceinvaders", "alien", "berzerk", "wizardofwor", "battlezone", "robotank", "timepilot"]

@@ -115,7 +115,7 @@ def test_foes_close_on_the_dominant_axis_every_k_ticks_and_a_shot_flies_its_reac
 
 
 # -- per game: a win path, a loss path (mini) and a scoring policy (Atari) -------------------------
-HUNTED = ["alien", "berzerk", "wizardofwor", "battlezone", "robotank"]
+HUNTED = ["alien", "berzerk", "wizardofwor", "battlezone", "robotank", "timepilot"]
 POLICY = {"robotank": deep_hunter}
 LOSERS = {"alien": lambda e: NOOP, "berzerk": lambda e: LEFT, "wizardofwor": lambda e: NOOP,
           "battlezone": lambda e: NOOP}
@@ -167,8 +167,9 @@ def test_battlezone_an_enemy_in_line_fires_a_shell_that_kills():
 
 
 @pytest.mark.parametrize("seed", [0, 1])
-def test_robotank_a_still_tank_is_rammed_and_loses_unpaid(seed):
-    env, info = play("glyphbench/miniatari-robotank-v0", lambda e: NOOP, seed)
+@pytest.mark.parametrize("game", ["robotank", "timepilot"])
+def test_a_still_player_is_rammed_and_loses_unpaid(game, seed):
+    env, info = play(f"glyphbench/miniatari-{game}-v0", lambda e: NOOP, seed)
     assert info["won"] is False and env.episode_return == 0 and env.turn < env.max_turns
 
 
@@ -184,3 +185,20 @@ def test_robotank_atari_hits_knock_out_systems_in_order():
     foe.r, foe.c, foe.data = env.r - 2, env.c, 2
     env.step(FIRE)
     assert foe in env.foes and foe.data == 1                  # two hits to destroy a robot tank
+
+
+def test_timepilot_atari_the_boss_takes_hits_and_starts_the_next_era():
+    env = make("glyphbench/atari-timepilot-v0")
+    env.reset(seed=0)
+    env.foes[:] = []
+    env.since = env.params.boss - 1
+    foe = env.add_foe(env.r - 2, env.c)
+    env.step(FIRE)
+    boss = next(f for f in env.foes if f.glyph == "B")
+    env.foes[:] = [boss]
+    boss.r, boss.c = env.r - 2, env.c
+    for _ in range(env.params.boss_hp):
+        boss.r, boss.c = env.r - 2, env.c
+        env.step(FIRE)
+        env.step(NOOP)
+    assert foe not in env.foes and boss not in env.foes and env.era == 2
