@@ -96,6 +96,15 @@ def deep_hunter(env) -> int:
     return hunter(env, 3)
 
 
+def rammer(env) -> int:
+    """Fly straight at the nearest foe."""
+    f = min(env.foes, key=lambda f: abs(f.r - env.r) + abs(f.c - env.c))
+    dr, dc = f.r - env.r, f.c - env.c
+    if abs(dr) >= abs(dc) and dr:
+        return DOWN if dr > 0 else UP
+    return RIGHT if dc > 0 else LEFT
+
+
 # -- the engine's core mechanic -----------------------------------------------------------------
 def test_foes_close_on_the_dominant_axis_every_k_ticks_and_a_shot_flies_its_reach():
     env = make("glyphbench/miniatari-alien-v0")
@@ -115,7 +124,7 @@ def test_foes_close_on_the_dominant_axis_every_k_ticks_and_a_shot_flies_its_reac
 
 
 # -- per game: a win path, a loss path (mini) and a scoring policy (Atari) -------------------------
-HUNTED = ["alien", "berzerk", "wizardofwor", "battlezone", "robotank", "timepilot"]
+HUNTED = ["alien", "berzerk", "wizardofwor", "battlezone", "robotank", "timepilot", "asteroids"]
 POLICY = {"robotank": deep_hunter}
 LOSERS = {"alien": lambda e: NOOP, "berzerk": lambda e: LEFT, "wizardofwor": lambda e: NOOP,
           "battlezone": lambda e: NOOP}
@@ -167,9 +176,9 @@ def test_battlezone_an_enemy_in_line_fires_a_shell_that_kills():
 
 
 @pytest.mark.parametrize("seed", [0, 1])
-@pytest.mark.parametrize("game", ["robotank", "timepilot"])
-def test_a_still_player_is_rammed_and_loses_unpaid(game, seed):
-    env, info = play(f"glyphbench/miniatari-{game}-v0", lambda e: NOOP, seed)
+@pytest.mark.parametrize("game", ["robotank", "timepilot", "asteroids"])
+def test_a_careless_player_is_rammed_and_loses_unpaid(game, seed):
+    env, info = play(f"glyphbench/miniatari-{game}-v0", rammer if game == "asteroids" else (lambda e: NOOP), seed)
     assert info["won"] is False and env.episode_return == 0 and env.turn < env.max_turns
 
 
@@ -202,3 +211,16 @@ def test_timepilot_atari_the_boss_takes_hits_and_starts_the_next_era():
         env.step(FIRE)
         env.step(NOOP)
     assert foe not in env.foes and boss not in env.foes and env.era == 2
+
+
+def test_asteroids_the_field_wraps_and_atari_rocks_split():
+    env = make("glyphbench/atari-asteroids-v0")
+    env.reset(seed=0)
+    env.foes[:] = []
+    env.r, env.c = 0, 3
+    env.step(UP)
+    assert (env.r, env.c) == (env.params.height - 1, 3)              # off the top, in at the bottom
+    rock = env.add_foe(env.r - 2, env.c, 0, 0, "O")
+    env.step(FIRE)
+    assert rock not in env.foes and {f.glyph for f in env.foes} == {"o"}
+    assert env.episode_return == pytest.approx(env.params.unit)
