@@ -13,6 +13,6 @@ Engine-level modules, which the games import (and nothing else of the family):
 """
 
 from . import freeway, pong, spaceinvaders
-from . import alien, asteroids, battlezone, berzerk, robotank, timepilot, wizardofwor
+from . import alien, asteroids, battlezone, berzerk, robotank, timepilot, wizardofwor, yarsrevenge
 
-__all__ = ["freeway", "pong", "spaceinvaders", "alien", "berzerk", "wizardofwor", "battlezone", "robotank", "timepilot", "asteroids"]
+__all__ = ["freeway", "pong", "spaceinvaders", "alien", "berzerk", "wizardofwor", "battlezone", "robotank", "timepilot", "asteroids", "yarsrevenge"]

@@ -224,3 +224,51 @@ def test_asteroids_the_field_wraps_and_atari_rocks_split():
     env.step(FIRE)
     assert rock not in env.foes and {f.glyph for f in env.foes} == {"o"}
     assert env.episode_return == pytest.approx(env.params.unit)
+
+
+# -- yars' revenge -------------------------------------------------------------------------------
+def safe(env, action: int, turns: int = 3) -> bool:
+    e = copy.deepcopy(env)
+    lives = e.lives
+    e.step(action)
+    for _ in range(turns):
+        if e.done or e.lives < lives:
+            break
+        e.step(NOOP)
+    return e.lives == lives and e.won is not False
+
+
+def yar(env) -> int:
+    """Break the shield block by block from a few cells away, then shoot the Qotile; dodge."""
+    blocks = [r for r, row in enumerate(env.still) if "#" in row]
+    row = blocks[0] if blocks else env.qrow
+    col = env.params.width - 3 - env.params.reach + 1
+    if env.r != row:
+        want = DOWN if row > env.r else UP
+    elif env.c < col:
+        want = RIGHT
+    elif env.face != (0, 1):
+        want = RIGHT
+    else:
+        want = FIRE
+    for a in (want, UP, DOWN, LEFT, NOOP, RIGHT):
+        if safe(env, a):
+            return a
+    return want
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_yarsrevenge_breaking_the_shield_then_the_qotile_wins(seed):
+    env, info = play("glyphbench/miniatari-yarsrevenge-v0", yar, seed)
+    assert info["won"] is True and env.episode_return == pytest.approx(1.0) and not info["clamped"]
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_yarsrevenge_sitting_in_the_swirls_path_loses(seed):
+    env, info = play("glyphbench/miniatari-yarsrevenge-v0", lambda e: NOOP, seed)
+    assert info["won"] is False and env.episode_return == pytest.approx(-1.0)
+
+
+def test_yarsrevenge_atari_scores_native_points():
+    env, _ = play("glyphbench/atari-yarsrevenge-v0", yar, 0, turns=150)
+    assert env.episode_return >= env.params.block_pts
