@@ -13,6 +13,6 @@ Engine-level modules, which the games import (and nothing else of the family):
 """
 
 from . import freeway, pong, spaceinvaders
-from . import alien, asteroids, battlezone, berzerk, robotank, timepilot, wizardofwor, yarsrevenge
+from . import alien, asteroids, battlezone, berzerk, robotank, seaquest, timepilot, wizardofwor, yarsrevenge
 
-__all__ = ["freeway", "pong", "spaceinvaders", "alien", "berzerk", "wizardofwor", "battlezone", "robotank", "timepilot", "asteroids", "yarsrevenge"]
+__all__ = ["freeway", "pong", "spaceinvaders", "alien", "berzerk", "wizardofwor", "battlezone", "robotank", "timepilot", "asteroids", "yarsrevenge", "seaquest"]

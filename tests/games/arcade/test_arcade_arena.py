@@ -272,3 +272,52 @@ def test_yarsrevenge_sitting_in_the_swirls_path_loses(seed):
 def test_yarsrevenge_atari_scores_native_points():
     env, _ = play("glyphbench/atari-yarsrevenge-v0", yar, 0, turns=150)
     assert env.episode_return >= env.params.block_pts
+
+
+# -- seaquest ------------------------------------------------------------------------------------
+def diver_hunter(env) -> int:
+    """Swim to the nearest diver; go up when the load is full or the air runs low; dodge."""
+    p = env.params
+    up = env.carried >= p.divers or env.air.left <= env.r + 4 or not env.swimmers
+    if up:
+        want = UP if env.r > 0 else NOOP
+    else:
+        d = min(env.swimmers, key=lambda d: abs(d.r - env.r) + abs(d.c - env.c))
+        if d.r != env.r:
+            want = DOWN if d.r > env.r else UP
+        else:
+            want = RIGHT if d.c > env.c else LEFT
+    for a in (want, FIRE, UP, DOWN, LEFT, RIGHT, NOOP):
+        if safe(env, a, 2):
+            return a
+    return want
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_seaquest_rescuing_a_full_load_and_surfacing_wins(seed):
+    env, info = play("glyphbench/miniatari-seaquest-v0", diver_hunter, seed)
+    assert info["won"] is True and env.episode_return == pytest.approx(1.0) and not info["clamped"]
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_seaquest_staying_under_runs_out_of_air(seed):
+    env, info = play("glyphbench/miniatari-seaquest-v0", lambda e: DOWN if e.r < 1 else NOOP, seed)
+    assert info["won"] is False and -1 <= env.episode_return < 0
+
+
+def test_seaquest_air_runs_down_only_under_water():
+    env = make("glyphbench/miniatari-seaquest-v0")
+    env.reset(seed=0)
+    env.foes[:] = []
+    env.step(NOOP)
+    assert env.air.left == env.params.air
+    env.step(DOWN)
+    env.step(NOOP)
+    assert env.air.left == env.params.air - 2
+    env.step(UP)
+    assert env.air.left == env.params.air
+
+
+def test_seaquest_atari_scores():
+    env, _ = play("glyphbench/atari-seaquest-v0", diver_hunter, 0, turns=200)
+    assert env.episode_return > 0
