@@ -144,6 +144,8 @@ class ArenaTask(ArcadeTask):
         return self.still[r][c] in self.SOLID or any(f.r == r and f.c == c for f in self.foes)
 
     def _shots(self) -> None:
+        if not self.gun.shots:
+            return
         for shot, cell in self.gun.advance(self._struck):
             if cell is None:
                 continue
@@ -196,6 +198,8 @@ class ArenaTask(ArcadeTask):
         return self.lose_life(why)
 
     def _volley(self) -> bool:
+        if not self.shells.shots and self.tick < self.shells.ready:
+            return False
         if self.shells.ready_at(self.tick):
             for foe in self.foes:
                 if foe.r == self.r or foe.c == self.c:

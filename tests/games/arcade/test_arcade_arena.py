@@ -13,12 +13,14 @@ NOOP, UP, DOWN, LEFT, RIGHT, FIRE = range(6)
 
 
 def play(task_id: str, policy, seed: int, turns: int | None = None):
+    """Run ``policy`` (env -> action) from ``reset(seed)`` to the end or for ``turns`` turns."""
     env = make(task_id)
     env.reset(seed=seed)
-    done, n = False, 0
-    while not done and (turns is None or n < turns):
-        _, _, term, trunc, info = env.step(policy(env))
-        done, n = term or trunc, n + 1
+    info: dict = {}
+    for _ in range(turns or env.max_turns):
+        *_, term, trunc, info = env.step(policy(env))
+        if term or trunc:
+            break
     return env, info
 
 
