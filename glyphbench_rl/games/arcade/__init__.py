@@ -19,15 +19,22 @@ Engine-level modules, which the games import (and nothing else of the family):
   a river or road of wandering width; ``Pacer``: periodic or speed-driven timing; ``Camera``:
   a view following the player around a wrapping world);
 - ``duel``: paddle, ball and sports duels (``Ball`` with reflecting walls, paddle-third
-  ``deflect``, ``serve``, the scripted ``pursue``, ``Possession``, tennis-style ``Match``).
+  ``deflect``, ``serve``, the scripted ``pursue``, ``Possession``, tennis-style ``Match``);
+- ``arena``: free-roam shooters (``ArenaTask``: facing fire with a reach, chasers that slide
+  around walls, drifting foes, foe shells, wrap-around fields, an air or fuel countdown,
+  reinforcements).
 """
 
+from . import alien  # noqa: F401
 from . import amidar  # noqa: F401
 from . import assault  # noqa: F401
 from . import asterix  # noqa: F401
+from . import asteroids  # noqa: F401
 from . import atlantis  # noqa: F401
 from . import bankheist  # noqa: F401
+from . import battlezone  # noqa: F401
 from . import beamrider  # noqa: F401
+from . import berzerk  # noqa: F401
 from . import bowling  # noqa: F401
 from . import boxing  # noqa: F401
 from . import breakout  # noqa: F401
@@ -49,10 +56,15 @@ from . import phoenix  # noqa: F401
 from . import pong  # noqa: F401
 from . import qbert  # noqa: F401
 from . import riverraid  # noqa: F401
+from . import robotank  # noqa: F401
+from . import seaquest  # noqa: F401
 from . import skiing  # noqa: F401
 from . import spaceinvaders  # noqa: F401
 from . import stargunner  # noqa: F401
 from . import surround  # noqa: F401
 from . import tennis  # noqa: F401
+from . import timepilot  # noqa: F401
 from . import upndown  # noqa: F401
+from . import wizardofwor  # noqa: F401
+from . import yarsrevenge  # noqa: F401
 from . import zaxxon  # noqa: F401
