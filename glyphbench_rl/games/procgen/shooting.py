@@ -533,25 +533,6 @@ class ShooterTask(ProcgenTask):
     def _velocity(self) -> Cell:
         return self.player.vr, self.player.vc
 
-    def _hud(self) -> str:
-        """The engine's HUD text (score, extras, motion: the non-empty ones joined by " | "),
-        the score's words remembered while the return stays (most turns pay nothing)."""
-        ret = self.episode_return
-        score = self._score
-        if score is None or score[0] != ret:
-            score = self._score = (ret, f"Score {ret:.2f}")
-        text = score[1]
-        extras = self._extras()
-        if extras:
-            text += " | " + extras
-        if self.shows_motion:
-            motion = self._motion()
-            if motion:
-                text += " | " + motion
-        return text
-
-    _score: tuple[float, str] | None = None
-
     # the frame's one pass over the bodies (``_in_view``), made by ``_motion`` for ``_grid``
     _memo: tuple[int, int, dict[int, list[tuple[int, str]]], list[tuple]] | None = None
 

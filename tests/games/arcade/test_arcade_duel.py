@@ -8,18 +8,9 @@ import pytest
 
 from glyphbench_rl import make
 from glyphbench_rl.games.arcade.duel import Ball, Match, Possession, clamp, deflect, pursue, serve
+from arcade_play import play
 
 SEEDS = (0, 3, 11)
-
-
-def play(task_id: str, policy, seed: int, turns: int | None = None):
-    env = make(task_id)
-    env.reset(seed=seed)
-    done, n = False, 0
-    while not done and (turns is None or n < turns):
-        _, _, term, trunc, info = env.step(policy(env))
-        done, n = term or trunc, n + 1
-    return env, info
 
 
 class Fixed:

@@ -6,18 +6,9 @@ from __future__ import annotations
 import pytest
 
 from glyphbench_rl import make
+from arcade_play import play
 
 NOOP = 0
-
-
-def play(task_id: str, policy, seed: int, turns: int | None = None):
-    env = make(task_id)
-    env.reset(seed=seed)
-    done, n = False, 0
-    while not done and (turns is None or n < turns):
-        _, _, term, trunc, info = env.step(policy(env))
-        done, n = term or trunc, n + 1
-    return env, info
 
 
 # -- policies (they read the game's state, as a scripted player would read the grid) -------------

@@ -9,20 +9,11 @@ import pytest
 from glyphbench_rl import make
 from glyphbench_rl.games.arcade.scroller import Channel, Pacer, Strip, put_one
 from glyphbench_rl.games.common.lanes import Draws
+from arcade_play import play
 
 SEEDS = (0, 3, 11)
 GAMES = ("riverraid", "zaxxon", "skiing", "enduro", "upndown", "choppercommand", "defender",
          "stargunner", "kungfumaster")
-
-
-def play(task_id: str, policy, seed: int, turns: int | None = None):
-    env = make(task_id)
-    env.reset(seed=seed)
-    done, n = False, 0
-    while not done and (turns is None or n < turns):
-        _, _, term, trunc, info = env.step(policy(env))
-        done, n = term or trunc, n + 1
-    return env, info
 
 
 def toward(col: int, target: int, left: int = 1, right: int = 2, stay: int = 0) -> int:
