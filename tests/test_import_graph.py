@@ -24,8 +24,7 @@ ENGINE_LEVEL = {
     "classics": {"versus"},
     "minigrid": {"engine", "world", "grid", "rooms", "solver"},
     "procgen": {"engine", "mazes", "platforms", "scrolling", "shooting"},
-    "craftax": {"state", "tables", "bestiary", "rules", "mobs", "worldgen", "noise", "view", "task",
-                "scenarios", "planner"},
+    "craftax": {"state", "tables"},
     "nethack": {"engine", "render", "levels", "boxoban", "boxoban_env", "custom", "lean", "rawstep"},
 }
 SHARED = "common"
