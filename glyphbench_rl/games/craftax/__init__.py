@@ -6,3 +6,12 @@ Modules: ``state`` (upstream's EnvState in numpy), ``tables`` (enumerations and 
 spawning), ``worldgen`` (the nine levels), ``view`` (the observation), ``task`` (the task
 class), ``scenarios`` (the tasks as data). The ``craftax`` package itself is only a test oracle.
 """
+
+from ...core import register_variants
+from . import suite  # noqa: F401  (defines the scenarios)
+from .scenarios import SCENARIOS
+from .task import CraftaxTask
+
+for _name, _scenario in SCENARIOS.items():
+    register_variants(CraftaxTask, "Craftax",
+                      {f"glyphbench/craftax-{_name}-v0": dict(scenario=_name, max_turns=_scenario.horizon)})

@@ -1,0 +1,422 @@
+"""The Craftax tasks as data: one ``Scenario`` per task, on the one engine with Craftax's rules.
+
+A scenario says how the world is made (a generated world, started on the surface or on a floor's
+up-ladder; or a blank grass world for the drills), the edits made to it (cleared squares, blocks
+scattered or stamped, mobs placed), the start kit and vitals, the engine switches (``Settings``),
+the events that happen during play (a wave at a turn, a knight once strength reaches 3), the
+reward terms and the success test. Tests and terms are read from the task's ``Tally`` counters
+(``task.Tally``), written as ``"got.wood"`` (a count) or ``"holds.iron >= 1 and holds.coal >= 1"``
+(a test).
+
+Where a task needs something Craftax lacks, it is an edit of the state, never a rule change: a
+floor's ladder gate of 8 kills becomes a gate of k by starting the floor's kill count at 8 - k;
+a fight with more mobs than Craftax keeps at once (3 melee, 3 passive, 2 ranged per floor) sends
+the rest in as slots free up.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field, replace
+from typing import Callable
+
+import numpy as np
+
+from .state import Settings
+from .tables import BlockType
+
+# ------------------------------------------------------------------------------------------------
+# tests over the tally
+
+
+_CLAUSE = re.compile(r"^\s*([a-z_.]+)\s*(>=|<=|==|>|<)\s*(-?[0-9.]+)\s*$")
+_OPS = {">=": float.__ge__, "<=": float.__le__, "==": float.__eq__, ">": float.__gt__, "<": float.__lt__}
+
+
+def parse_test(text: str, tally) -> Callable:
+    """``"a.b >= 3 and c < 2"`` -> a function of the tally giving True or False; a bare counter
+    name (``"got.wood"``) -> a function giving that counter. Counters are compiled once by
+    ``tally.getter`` (an unknown one is a KeyError naming it)."""
+    if not re.search(r"[<>=]", text):
+        return tally.getter(text.strip())
+    clauses = []
+    for part in text.split(" and "):
+        m = _CLAUSE.match(part)
+        if not m:
+            raise ValueError(f"bad scenario test {text!r}: each clause is 'counter op number'")
+        clauses.append((tally.getter(m.group(1)), _OPS[m.group(2)], float(m.group(3))))
+    if len(clauses) == 1:
+        (get, op, n), = clauses
+        return lambda t: op(float(get(t)), n)
+    return lambda t: all(op(float(get(t)), n) for get, op, n in clauses)
+
+
+@dataclass(frozen=True)
+class Term:
+    """A reward term: ``unit`` per unit of ``test`` (a counter, ``per`` of it making one unit,
+    capped at ``cap`` units), or ``unit`` once when ``test`` (a test) first holds. ``says`` names
+    it in the prompt ("each wood collected")."""
+    name: str
+    test: str
+    unit: float
+    says: str
+    cap: int = 1
+    per: int = 1
+
+    def units(self, tally, fn) -> int:
+        value = fn(tally)
+        if isinstance(value, bool):
+            return int(value)
+        return min(int(value) // self.per, self.cap)
+
+    @property
+    def counts(self) -> bool:
+        return not re.search(r"[<>=]", self.test)
+
+
+# ------------------------------------------------------------------------------------------------
+# edits of the start state
+
+
+def _floor_block(state) -> int:
+    r, c = state.player_position
+    return int(state.map[state.player_level, r, c])
+
+
+def _cells(state, dmin: int, dmax: int, metric: str = "manhattan"):
+    """Cells of the player's level at distance dmin..dmax from the player, in bounds."""
+    pr, pc = (int(v) for v in state.player_position)
+    rows, cols = state.map.shape[1:]
+    out = []
+    for r in range(max(0, pr - dmax), min(rows, pr + dmax + 1)):
+        for c in range(max(0, pc - dmax), min(cols, pc + dmax + 1)):
+            d = abs(r - pr) + abs(c - pc) if metric == "manhattan" else max(abs(r - pr), abs(c - pc))
+            if dmin <= d <= dmax:
+                out.append((r, c))
+    return out
+
+
+def _free(state, r: int, c: int, floor: int) -> bool:
+    level = state.player_level
+    return (int(state.map[level, r, c]) == floor and not state.mob_map[level, r, c]
+            and int(state.item_map[level, r, c]) == 0
+            and (r, c) != tuple(int(v) for v in state.player_position))
+
+
+@dataclass(frozen=True)
+class Clear:
+    """Make the square of ``radius`` (Chebyshev) around the player plain floor, mobs removed."""
+    radius: int
+
+    def apply(self, state, rng, ctx) -> None:
+        floor, level = ctx.floor, state.player_level
+        for r, c in _cells(state, 0, self.radius, "chebyshev"):
+            if int(state.item_map[level, r, c]) == 0:
+                state.map[level, r, c] = floor
+        _remove_mobs(state, lambda r, c: max(abs(r - ctx.r0), abs(c - ctx.c0)) <= self.radius)
+
+
+@dataclass(frozen=True)
+class Scatter:
+    """``count`` cells of ``block`` at Manhattan distance dmin..dmax, on free floor (or on
+    cells of block ``on``: ore into stone, say)."""
+    block: BlockType
+    count: int
+    dmin: int
+    dmax: int
+    on: int | None = None
+
+    def apply(self, state, rng, ctx) -> None:
+        if self.on is None:
+            spots = [p for p in _cells(state, self.dmin, self.dmax) if _free(state, *p, ctx.floor)]
+        else:
+            level = state.player_level
+            spots = [p for p in _cells(state, self.dmin, self.dmax) if int(state.map[level, p[0], p[1]]) == self.on]
+        for i in rng.permutation(len(spots))[:self.count]:
+            r, c = spots[i]
+            state.map[state.player_level, r, c] = self.block
+
+
+@dataclass(frozen=True)
+class Stamp:
+    """``block`` at offsets (row, col) from the player."""
+    block: BlockType
+    offsets: tuple
+
+    def apply(self, state, rng, ctx) -> None:
+        for dr, dc in self.offsets:
+            r, c = ctx.r0 + dr, ctx.c0 + dc
+            if 0 <= r < state.map.shape[1] and 0 <= c < state.map.shape[2]:
+                state.map[state.player_level, r, c] = self.block
+
+
+@dataclass(frozen=True)
+class Remove:
+    """Every ``block`` within ``radius`` (Chebyshev) of the player becomes ``into``."""
+    block: BlockType
+    radius: int
+    into: BlockType = BlockType.GRASS
+
+    def apply(self, state, rng, ctx) -> None:
+        level = state.player_level
+        for r, c in _cells(state, 0, self.radius, "chebyshev"):
+            if int(state.map[level, r, c]) == self.block:
+                state.map[level, r, c] = self.into
+
+
+@dataclass(frozen=True)
+class Mobs:
+    """``count`` mobs called ``name`` on free floor at Manhattan distance dmin..dmax; those that
+    do not fit Craftax's per-floor slots come in later, as slots free up."""
+    name: str
+    count: int
+    dmin: int
+    dmax: int
+
+    def apply(self, state, rng, ctx) -> None:
+        for _ in range(self.count):
+            ctx.reserve.append((self.name, self.dmin, self.dmax))
+        ctx.admit(state, rng)
+
+
+@dataclass(frozen=True)
+class NoMobs:
+    """Remove every mob of the player's level."""
+
+    def apply(self, state, rng, ctx) -> None:
+        _remove_mobs(state, lambda r, c: True)
+
+
+@dataclass(frozen=True)
+class Gate:
+    """The ladder of the player's level opens after ``k`` kills (the count starts at 8 - k)."""
+    k: int
+
+    def apply(self, state, rng, ctx) -> None:
+        state.monsters_killed[state.player_level] = max(0, 8 - self.k)
+
+
+@dataclass(frozen=True)
+class GateAt:
+    """The ladder of ``level`` opens after ``k`` kills there."""
+    levels: tuple
+    k: int
+
+    def apply(self, state, rng, ctx) -> None:
+        for level in self.levels:
+            state.monsters_killed[level] = max(0, 8 - self.k)
+
+
+@dataclass(frozen=True)
+class Potions:
+    """One potion of each colour whose (hidden, per-episode) effect is in ``effects``: 0 heal,
+    1 harm, 2 mana, 3 mana loss, 4 energy, 5 energy loss."""
+    effects: tuple
+
+    def apply(self, state, rng, ctx) -> None:
+        for colour, effect in enumerate(state.potion_mapping):
+            state.inventory.potions[colour] = int(int(effect) in self.effects)
+
+
+@dataclass(frozen=True)
+class MoveLadder:
+    """The surface's down-ladder moves to (row, col) offset from the player, on cleared floor."""
+    offset: tuple
+
+    def apply(self, state, rng, ctx) -> None:
+        from .tables import ItemType
+        r0, c0 = (int(v) for v in state.down_ladders[0])
+        state.item_map[0, r0, c0] = ItemType.NONE
+        r, c = ctx.r0 + self.offset[0], ctx.c0 + self.offset[1]
+        state.map[0, r, c] = ctx.floor
+        state.item_map[0, r, c] = ItemType.LADDER_DOWN
+        state.down_ladders[0] = (r, c)
+
+
+@dataclass(frozen=True)
+class NearLadder:
+    """The player starts at a walkable cell dmin..dmax steps (Chebyshev) from the level's
+    down-ladder, one it can walk to."""
+    dmin: int
+    dmax: int
+
+    def apply(self, state, rng, ctx) -> None:
+        from .rules import walkable
+        level = state.player_level
+        target = tuple(int(v) for v in state.down_ladders[level])
+        seen, frontier, found = {target}, [target], []
+        while frontier:
+            nxt = []
+            for r, c in frontier:
+                for dr, dc in ((1, 0), (-1, 0), (0, 1), (0, -1)):
+                    p = (r + dr, c + dc)
+                    if p not in seen and 0 <= p[0] < state.map.shape[1] and 0 <= p[1] < state.map.shape[2] \
+                            and walkable(state, level, p):
+                        seen.add(p)
+                        nxt.append(p)
+                        if self.dmin <= max(abs(p[0] - target[0]), abs(p[1] - target[1])) <= self.dmax \
+                                and not state.mob_map[level, p[0], p[1]]:
+                            found.append(p)
+            frontier = nxt
+        if found:
+            state.player_position[:] = found[int(rng.integers(len(found)))]
+            ctx.r0, ctx.c0 = (int(v) for v in state.player_position)
+
+
+def _remove_mobs(state, where) -> None:
+    from .task import MOB_KINDS
+    level = state.player_level
+    for kind in MOB_KINDS:
+        mobs = getattr(state, kind)
+        for i in np.flatnonzero(mobs.mask[level]):
+            r, c = (int(v) for v in mobs.position[level, i])
+            if where(r, c):
+                mobs.mask[level, i] = False
+                state.mob_map[level, r, c] = False
+
+
+# ------------------------------------------------------------------------------------------------
+# the scenario
+
+
+class Context:
+    """What building and playing a scenario keeps beside the state: the spawn point, the level's
+    floor block, mobs waiting for a free slot."""
+
+    def __init__(self, state) -> None:
+        self.r0, self.c0 = (int(v) for v in state.player_position)
+        self.floor = _floor_block(state)
+        self.reserve: list[tuple[str, int, int]] = []
+
+    def admit(self, state, rng) -> None:
+        from .mobs import add_mob
+        waiting = []
+        for name, dmin, dmax in self.reserve:
+            spots = [p for p in _cells(state, dmin, dmax) if _free(state, *p, self.floor)]
+            if not spots or not add_mob(state, name, spots[int(rng.integers(len(spots)))]):
+                waiting.append((name, dmin, dmax))
+        self.reserve = waiting
+
+
+@dataclass(frozen=True)
+class Event:
+    """Once ``when`` (a test) holds, ``edits`` run (mobs arrive, say)."""
+    when: str
+    edits: tuple
+    says: str = ""
+
+
+@dataclass(frozen=True)
+class Scenario:
+    name: str
+    objective: str                      # one or two sentences for the prompt
+    success: str                        # a test; "" for tasks that run to the horizon
+    terms: tuple                        # Term, ...
+    horizon: int
+    world: str = "overworld"            # "overworld" (generated) or "blank" (grass everywhere)
+    floor: int = 0                      # the level the player starts on (at its up-ladder)
+    settings: Settings = Settings()
+    kit: dict = field(default_factory=dict)      # inventory fields
+    player: dict = field(default_factory=dict)   # other State fields (vitals, attributes ...)
+    edits: tuple = ()
+    events: tuple = ()
+    death: float = -1.0                 # added on the step the player dies
+    time: int = 0                       # the starting timestep (day length 300)
+    topics: tuple = ("craft",)          # rule sections the prompt includes (view.rules_text)
+    progress_keys: tuple = ()           # counters shown in the HUD
+    success_message: str = "Objective complete."
+
+    # -- building ---------------------------------------------------------------------------------
+    def build(self, rng: np.random.Generator):
+        """The start state and its Context."""
+        from . import worldgen
+        state = (worldgen.generate(rng, self.settings) if self.world == "overworld"
+                 else worldgen.blank(self.settings))
+        if self.floor:
+            state.player_level = self.floor
+            state.player_position = state.up_ladders[self.floor].copy()
+        state.timestep = self.time
+        for k, v in self.kit.items():
+            if k in ("armour", "potions"):
+                getattr(state.inventory, k)[:] = v
+            else:
+                setattr(state.inventory, k, v)
+        for k, v in self.player.items():
+            if isinstance(getattr(state, k), np.ndarray):
+                getattr(state, k)[:] = v
+            else:
+                setattr(state, k, v)
+        from .rules import light_level
+        state.light_level = light_level(state.timestep, self.settings)
+        ctx = Context(state)
+        for edit in self.edits:
+            edit.apply(state, rng, ctx)
+        return state, ctx
+
+    def run_events(self, task, state, tally) -> None:
+        """After each step: waiting mobs take free slots; events whose test now holds run once
+        (``task.ctx``, ``task.play_rng`` and ``task.fired`` are the episode's)."""
+        ctx, rng = task.ctx, task.play_rng
+        if ctx.reserve:
+            ctx.admit(state, rng)
+        for i, (event, when) in enumerate(task.events):
+            if i not in task.fired and when(tally):
+                task.fired.add(i)
+                ctx.r0, ctx.c0 = (int(v) for v in state.player_position)
+                for edit in event.edits:
+                    edit.apply(state, rng, ctx)
+                if event.says:
+                    task.say(event.says)
+
+    # -- text ---------------------------------------------------------------------------------------
+    def intro(self) -> str:
+        from .view import LEVEL_NAMES
+        where = "on the surface" if not self.floor else f"on floor {self.floor} ({LEVEL_NAMES[self.floor]})"
+        return f"You play Craftax, starting {where}."
+
+    def reward_text(self) -> str:
+        parts = []
+        for t in self.terms:
+            if t.counts and t.cap > 1:
+                parts.append(f"+{t.unit:g} for {t.says} (up to {t.cap})")
+            else:
+                parts.append(f"+{t.unit:g} {t.says}")
+        if self.death:
+            parts.append(f"{self.death:+g} if you die")
+        return "; ".join(parts) + "."
+
+    def ends_text(self) -> str:
+        return "when the objective is complete or you die" if self.success else "when you die"
+
+    def progress(self, tally) -> str:
+        return " ".join(f"{k.split('.')[-1].capitalize()} {_fmt(tally.value(k))}"
+                        for k in self.progress_keys)
+
+    def check(self, tally) -> None:
+        """Compile every test and counter of the scenario (a KeyError names a bad one)."""
+        for text in [t.test for t in self.terms] + [e.when for e in self.events] + \
+                [self.success] * bool(self.success):
+            parse_test(text, tally)
+        for key in self.progress_keys:
+            tally.getter(key)
+
+
+def _fmt(v) -> str:
+    return f"{v:g}" if isinstance(v, float) else str(v)
+
+
+SCENARIOS: dict[str, Scenario] = {}
+
+
+def scenario(**kw) -> Scenario:
+    s = Scenario(**kw)
+    if s.name in SCENARIOS:
+        raise ValueError(f"scenario {s.name} defined twice")
+    SCENARIOS[s.name] = s
+    return s
+
+
+def variant(base: Scenario, **kw) -> Scenario:
+    s = replace(base, **kw)
+    SCENARIOS[s.name] = s
+    return s

@@ -1,0 +1,272 @@
+"""CraftaxTask: one task class that plays any scenario of ``scenarios`` on the engine.
+
+A scenario is data (``scenarios.Scenario``): how the world is made and edited, the start kit, the
+engine switches, the objective and the reward terms. The task builds the world at reset, steps
+the engine (``rules.step``), keeps the ``Tally`` of what happened (``Tally.counters``: items got
+and held, kills by mob, blocks placed, floors reached, achievements ...), pays the scenario's
+reward terms from it and ends the episode on the scenario's success test or on death. Nothing here
+changes a rule of the game: upstream's native reward is not paid; the scenario's terms are.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import ClassVar
+
+import numpy as np
+
+from ...core import GlyphTask
+from ...core.actions import ActionSet
+from ...core.params import param
+from ..common.lanes import Draws
+from . import rules, view
+from .bestiary import MOB_NAMES
+from .scenarios import SCENARIOS, Scenario, parse_test
+from .tables import Action, Achievement, BlockType
+
+ACTION_TEXT = {
+    "NOOP": "do nothing", "LEFT": "move or face west", "RIGHT": "move or face east",
+    "UP": "move or face north", "DOWN": "move or face south",
+    "DO": "act on the facing cell: collect, mine, attack, drink, eat, open",
+    "SLEEP": "sleep until energy is full", "PLACE_STONE": "place stone ahead",
+    "PLACE_TABLE": "place a crafting table ahead", "PLACE_FURNACE": "place a furnace ahead",
+    "PLACE_PLANT": "plant a sapling on grass ahead", "REST": "rest until health is full",
+    "DESCEND": "go down the ladder you stand on", "ASCEND": "go up the ladder you stand on",
+    "SHOOT_ARROW": "shoot an arrow ahead", "PLACE_TORCH": "place a torch ahead",
+    "READ_BOOK": "read a book to learn a spell", "CAST_FIREBALL": "cast a fireball ahead",
+    "CAST_ICEBALL": "cast an iceball ahead",
+}
+
+
+def _describe(name: str) -> str:
+    if name in ACTION_TEXT:
+        return ACTION_TEXT[name]
+    words = name.lower().split("_")
+    if words[0] == "make":
+        return "craft " + " ".join(words[1:]).replace("armour", "armour piece")
+    if words[0] == "drink":
+        return f"drink a {words[-1]} potion"
+    if words[0] == "enchant":
+        return f"enchant your {words[-1]} at a facing enchantment table"
+    if words[:2] == ["level", "up"]:
+        return f"spend 1 XP on {words[-1]}"
+    return name.lower().replace("_", " ")
+
+
+ACTIONS = ActionSet([(a.name, _describe(a.name)) for a in Action], noop="NOOP")
+
+# inventory fields the tally follows (counts; tools are tiers)
+ITEMS = ("wood", "stone", "coal", "iron", "diamond", "sapling", "ruby", "sapphire", "arrows",
+         "torches", "books", "pickaxe", "sword", "bow")
+PLACED = {Action.PLACE_STONE: BlockType.STONE, Action.PLACE_TABLE: BlockType.CRAFTING_TABLE,
+          Action.PLACE_FURNACE: BlockType.FURNACE, Action.PLACE_PLANT: BlockType.PLANT}
+MOB_KINDS = ("passive_mobs", "melee_mobs", "ranged_mobs")
+CASTS = (Action.CAST_FIREBALL, Action.CAST_ICEBALL)
+DRINKS = tuple(range(Action.DRINK_POTION_RED, Action.DRINK_POTION_YELLOW + 1))
+POTION_EFFECTS = ("heal", "harm", "mana", "drain", "energy", "tire")   # upstream's effect order
+
+
+class Tally:
+    """What happened so far in an episode, as named counters a scenario's tests read:
+    ``holds.X`` (inventory now), ``got.X`` (units gained in total), ``kills.NAME`` (by mob name,
+    ``kills.monsters`` = melee and ranged, ``kills.all``), ``placed.X`` (blocks placed: stone,
+    crafting_table, furnace, plant, torch), ``level``, ``deepest``, ``turn``, ``night`` (turns
+    lived on the surface at night), ``ate``, ``drank``, ``cast``, ``potion.EFFECT`` (potions drunk
+    by effect), ``health``, ``done.X`` (an achievement, 0 or 1), ``str``/``dex``/``int``, ``xp``,
+    ``enchant.sword``, ``spells``, ``gate`` (the level's kill count toward its ladder), ``boss``.
+
+    ``getter(key)`` compiles a counter to a function of the tally, once; a step only updates the
+    few running counts (items got, kills, placements), so a test costs a few attribute reads."""
+
+    def __init__(self, state) -> None:
+        self.state = state
+        self.got = dict.fromkeys(ITEMS, 0)
+        self.kills: dict[str, int] = {"monsters": 0, "all": 0}
+        self.placed = {b.name.lower(): 0 for b in PLACED.values()} | {"torch": 0}
+        self.counts = {"turn": 0, "night": 0, "ate": 0, "drank": 0, "cast": 0,
+                       "deepest": state.player_level}
+        self.potions = dict.fromkeys(POTION_EFFECTS, 0)
+        self._held = self._holdings(state)
+
+    @staticmethod
+    def _holdings(state) -> tuple:
+        inv = state.inventory
+        return (inv.wood, inv.stone, inv.coal, inv.iron, inv.diamond, inv.sapling, inv.ruby,
+                inv.sapphire, inv.arrows, inv.torches, inv.books, inv.pickaxe, inv.sword, inv.bow)
+
+    def getter(self, key: str):
+        head, _, tail = key.partition(".")
+        s = self.state
+        simple = {"level": lambda t: t.state.player_level, "health": lambda t: t.state.player_health,
+                  "str": lambda t: t.state.player_strength, "dex": lambda t: t.state.player_dexterity,
+                  "int": lambda t: t.state.player_intelligence, "xp": lambda t: t.state.player_xp,
+                  "spells": lambda t: int(t.state.learned_spells.sum()),
+                  "gate": lambda t: int(t.state.monsters_killed[t.state.player_level]),
+                  "boss": lambda t: t.state.boss_progress}
+        if key in simple:
+            return simple[key]
+        if key in self.counts:
+            return lambda t: t.counts[key]
+        if head == "holds" and tail in ITEMS:
+            return lambda t: getattr(t.state.inventory, tail)
+        if key == "holds.armour":
+            return lambda t: int(np.count_nonzero(t.state.inventory.armour))
+        if head == "got" and tail in ITEMS:
+            return lambda t: t.got[tail]
+        if head == "kills":
+            return lambda t: t.kills.get(tail, 0)
+        if head == "placed" and tail in self.placed:
+            return lambda t: t.placed[tail]
+        if head == "potion" and tail in self.potions:
+            return lambda t: t.potions[tail]
+        if head == "done" and tail.upper() in Achievement.__members__:
+            index = Achievement[tail.upper()].value
+            return lambda t: int(t.state.achievements[index])
+        if key == "enchant.sword":
+            return lambda t: t.state.sword_enchantment
+        raise KeyError(f"unknown Craftax counter {key!r} (see task.Tally)")
+
+    def value(self, key: str) -> float:
+        return self.getter(key)(self)
+
+    def before_step(self, state, action: int) -> None:
+        """Remember what a step can change that the tally counts by difference."""
+        self._vitals = (state.player_food, state.player_drink, state.player_mana)
+        level = self._level = state.player_level
+        self._live = [(k, i, int(mobs.type_id[level, i]))
+                      for k, mobs in enumerate((state.passive_mobs, state.melee_mobs, state.ranged_mobs))
+                      for i in np.flatnonzero(mobs.mask[level])]
+        if action in PLACED:
+            self._ahead = self._facing_block(state)
+        elif action == Action.PLACE_TORCH:
+            self._torches = state.inventory.torches
+        elif action in DRINKS:
+            self._potions = state.inventory.potions.copy()
+
+    @staticmethod
+    def _facing_block(state) -> int:
+        r, c = rules.facing(state)
+        if not rules.in_bounds(state, (r, c)):
+            return -1
+        return int(state.map[state.player_level, r, c])
+
+    def after_mobs(self, state) -> None:
+        """Called by the step after the mobs moved and before any spawn: a slot live before the
+        step whose mob is now gone with no health left was a kill (a despawned mob keeps its
+        health; spawning could reuse the slot, which is why this runs before it)."""
+        level = self._level
+        for k, i, type_id in self._live:
+            mobs = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)[k]
+            if not mobs.mask[level, i] and mobs.health[level, i] <= 0:
+                name = MOB_NAMES[k][type_id]
+                self.kills[name] = self.kills.get(name, 0) + 1
+                self.kills["all"] += 1
+                if k:
+                    self.kills["monsters"] += 1
+
+    def after_step(self, state, action: int) -> None:
+        counts = self.counts
+        counts["turn"] += 1
+        held = self._holdings(state)
+        if held != self._held:
+            for k, old, new in zip(ITEMS, self._held, held):
+                if new > old:
+                    self.got[k] += new - old
+            self._held = held
+        food, drink, mana = self._vitals
+        if state.player_food > food:
+            counts["ate"] += 1
+        if state.player_drink > drink:
+            counts["drank"] += 1
+        if action in CASTS and state.player_mana < mana:
+            counts["cast"] += 1
+        if action in PLACED:
+            block = PLACED[action]
+            if self._ahead != block and self._facing_block(state) == block:
+                self.placed[block.name.lower()] += 1
+        elif action == Action.PLACE_TORCH:
+            if state.inventory.torches < self._torches:
+                self.placed["torch"] += 1
+        elif action in DRINKS:
+            colour = action - Action.DRINK_POTION_RED
+            if state.inventory.potions[colour] < self._potions[colour]:
+                self.potions[POTION_EFFECTS[int(state.potion_mapping[colour])]] += 1
+        if state.player_level == 0 and state.light_level < view.NIGHT_LIGHT:
+            counts["night"] += 1
+        if state.player_level > counts["deepest"]:
+            counts["deepest"] = state.player_level
+
+
+@dataclass(frozen=True)
+class CraftaxParams:
+    scenario: str = param("firstday", choices=tuple(SCENARIOS))
+
+
+class CraftaxTask(GlyphTask):
+    title = "Craftax"
+    Params = CraftaxParams
+    ACTIONS = ACTIONS
+    glyphs = view.GLYPHS
+    extra_chars = view.EXTRA_CHARS
+    default_max_turns = 200
+    rules = "{intro} {objective} {game_rules}"
+    rewards = "{reward_text}"
+    ends = "{ends_text}"
+
+    scenario: Scenario
+
+    def _init(self) -> None:
+        self.scenario = SCENARIOS[self.params.scenario]
+        self.settings = self.scenario.settings
+
+
+    def prompt_fields(self) -> dict:
+        s = self.scenario
+        return {"intro": s.intro(), "objective": s.objective, "game_rules": view.rules_text(s.topics),
+                "reward_text": s.reward_text(), "ends_text": s.ends_text()}
+
+    def _setup(self, rng: np.random.Generator) -> None:
+        self.draws = Draws(self.stream("craftax"))
+        self.state, self.ctx = self.scenario.build(rng)
+        self.play_rng = self.stream("scenario")
+        self.tally = Tally(self.state)
+        # (term, its test compiled, units paid); a term drops out once it can pay no more
+        self._open = [[term, parse_test(term.test, self.tally), 0] for term in self.scenario.terms]
+        self._success = parse_test(self.scenario.success, self.tally) if self.scenario.success else None
+        self.events = [(e, parse_test(e.when, self.tally)) for e in self.scenario.events]
+        self.fired: set[int] = set()             # scenario events already run
+
+    def _act(self, action: int) -> None:
+        state, tally = self.state, self.tally
+        tally.before_step(state, action)
+        rules.step(state, action, self.settings, self.draws, after_mobs=tally.after_mobs)
+        tally.after_step(state, action)
+        self.scenario.run_events(self, state, tally)
+        self._score(state, tally)
+
+    def _score(self, state, tally: Tally) -> None:
+        finished = False
+        for entry in self._open:
+            term, test, paid = entry
+            units = term.units(tally, test)
+            if units > paid:
+                entry[2] = units
+                self.reward(term.unit * (units - paid))
+                finished = finished or units >= term.cap
+        if finished:
+            self._open = [e for e in self._open if e[2] < e[0].cap]
+        if state.player_health <= 0:
+            self.reward(self.scenario.death)
+            self.say("You died.")
+            self.finish(won=False)
+        elif self._success is not None and self._success(tally):
+            self.say(self.scenario.success_message)
+            self.finish(won=True)
+
+    def _grid(self) -> list[str]:
+        return view.grid(self.state)
+
+    def _hud(self) -> str:
+        goal = self.scenario.progress(self.tally)   # (a few counters, formatted)
+        hud = view.hud(self.state, self.settings)
+        return f"{hud} | {goal}" if goal else hud
