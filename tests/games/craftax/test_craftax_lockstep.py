@@ -189,7 +189,11 @@ class Lockstep:
         fn(self.ours)
         fn(self.theirs)
 
-    def run(self, actions, label: str = "") -> None:
+    def run(self, actions, label: str = "", check=None, loot: bool = False) -> None:
+        """Step both with each action and compare. ``check(ours, theirs, where)`` runs before
+        the package's mobs are removed; ``loot`` (a chest opened: random loot) compares only
+        the loot's deterministic parts, then copies the package's inventory and achievements
+        into ours to go on in lockstep."""
         for action in actions:
             action = int(action)
             self.key, sub = jax.random.split(self.key)
@@ -207,8 +211,19 @@ class Lockstep:
                 assert live.size == int(fired), where
                 if fired:
                     assert tuple(p.position[level, live[0]]) == tuple(self.ours.player_position)
+            if check is not None:
+                check(self.ours, self.theirs, where)
             strip_mobs(self.theirs)
             strip_mobs(self.ours)
+            if loot:
+                for name in ("bow", "books"):
+                    a, b = getattr(self.ours.inventory, name), getattr(self.theirs.inventory, name)
+                    assert a == b, f"{where}: {name} {a} != {b}"
+                opened = Achievement.OPEN_CHEST
+                assert self.ours.achievements[opened] == self.theirs.achievements[opened], where
+                self.ours.inventory = self.theirs.copy().inventory
+                self.ours.achievements[:] = self.theirs.achievements
+                reward = float(reward_t)
             assert abs(reward - float(reward_t)) < 1e-4, f"{where}: reward {reward} != {reward_t}"
             assert_same(self.ours, self.theirs, where)
             self.n += 1
@@ -371,3 +386,79 @@ def test_from_the_package_reset(package):
     s = State.from_upstream(start)
     ls = Lockstep(package, s)
     ls.run([A.NOOP, A.LEFT, A.LEFT, A.UP, A.UP, A.RIGHT, A.DOWN] + [A.NOOP] * 60, "reset")
+
+
+MOB_HITS = [  # (class, type_id, health, sword, strength, intelligence, sword enchantment)
+    ("passive_mobs", 0, 3.0, 4, 1, 1, 0),      # cow: killed, eaten
+    ("passive_mobs", 1, 4.0, 1, 1, 1, 0),      # bat: 2 damage, lives
+    ("melee_mobs", 0, 5.0, 1, 1, 1, 0),        # zombie: 2 damage, lives
+    ("melee_mobs", 0, 2.0, 1, 1, 1, 0),        # zombie: killed
+    ("melee_mobs", 4, 12.0, 4, 3, 3, 1),       # knight (0.5 physical defence), fire sword
+    ("melee_mobs", 6, 20.0, 4, 3, 3, 2),       # pigman (fire-proof), ice sword
+    ("ranged_mobs", 6, 9.0, 4, 3, 3, 2),       # fire elemental, ice sword
+    ("ranged_mobs", 7, 9.0, 3, 5, 5, 2),       # ice elemental, ice sword: no ice damage
+    ("ranged_mobs", 0, 3.0, 0, 5, 1, 0),       # skeleton, bare hands x2 strength
+]
+
+
+def test_melee_hits_on_mobs(package):
+    """DO on a mob in front: upstream's damage (sword, strength, enchantment vs the mob's
+    defence), the kill bookkeeping (food from passive mobs, monsters_killed, achievements).
+    The mob's attack cooldown is set so that it does not strike back this step; its health
+    and life are compared before the package's mobs (which may have moved) are removed."""
+    s = blank_state()
+    s.player_food = 2
+    ls = Lockstep(package, s)
+    for kind, type_id, health, sword, strength, intelligence, enchant in MOB_HITS:
+        def setup(st):
+            r, c = (int(x) for x in st.player_position)
+            mobs = getattr(st, kind)
+            mobs.mask[0, 0], mobs.position[0, 0] = True, (r - 1, c)
+            mobs.health[0, 0], mobs.type_id[0, 0], mobs.attack_cooldown[0, 0] = health, type_id, 9
+            st.mob_map[0, r - 1, c] = True
+            st.inventory.sword, st.sword_enchantment = sword, enchant
+            st.player_strength, st.player_intelligence = strength, intelligence
+            st.player_direction = int(A.UP)
+        ls.edit(setup)
+
+        def check(ours, theirs, where, kind=kind):
+            a, b = getattr(ours, kind), getattr(theirs, kind)
+            assert a.mask[0, 0] == b.mask[0, 0], f"{where}: {kind} alive {a.mask[0, 0]}"
+            assert np.isclose(a.health[0, 0], b.health[0, 0]), \
+                f"{where}: {kind} health {a.health[0, 0]} != {b.health[0, 0]}"
+        ls.run([A.DO], f"hit {kind} {type_id}", check=check)
+    ours = ls.ours
+    assert ours.achievements[Achievement.EAT_COW] and ours.achievements[Achievement.DEFEAT_ZOMBIE]
+    assert ours.monsters_killed[0] > 10
+
+
+def test_chests_and_the_necromancer(package):
+    s = blank_state()
+    s.player_level = 1
+    s.achievements[Achievement.ENTER_DUNGEON] = True
+    put(s, {(-1, 0): B.CHEST, (1, 0): B.CHEST}, level=1)
+    ls = Lockstep(package, s)
+    ls.run([A.DO], "first chest", loot=True)          # the dungeon's first chest: the bow
+    assert ls.ours.inventory.bow == 1 and ls.ours.chests_opened[1]
+    ls.run([A.DOWN, A.DO], "second chest", loot=True)
+
+    def sewers(st):
+        st.player_level = 3
+        st.achievements[Achievement.ENTER_SEWERS] = True
+        put(st, {(0, 1): B.CHEST, (0, -1): B.CHEST}, level=3)
+    ls.edit(sewers)
+    ls.run([A.RIGHT, A.DO, A.LEFT, A.DO], "sewer chests", loot=True)   # a book, then none
+    assert ls.ours.inventory.books == 1
+
+    def graveyard(st):
+        st.player_level = 8
+        st.achievements[Achievement.ENTER_GRAVEYARD] = True
+        st.boss_progress, st.boss_timesteps_to_spawn_this_round = 6, 0
+        put(st, {(-1, 0): B.NECROMANCER}, level=8)
+        st.player_food = st.player_drink = 0          # the boss fight: the needs do not hurt
+    ls.edit(graveyard)
+    ls.run([A.UP, A.DO, A.DO], "necromancer")          # hit, then invulnerable (spawn wave)
+    assert ls.ours.boss_progress == 7
+    ls.edit(lambda st: setattr(st, "boss_timesteps_to_spawn_this_round", 0))
+    ls.run([A.DO] + [A.NOOP] * 20, "defeat")
+    assert ls.ours.achievements[Achievement.DEFEAT_NECROMANCER]
