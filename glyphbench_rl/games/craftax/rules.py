@@ -59,6 +59,7 @@ _LAVA, _CHEST, _RIPE = int(BlockType.LAVA), int(BlockType.CHEST), int(BlockType.
 _PLANT, _NECRO = int(BlockType.PLANT), int(BlockType.NECROMANCER)
 _TABLE, _FURNACE = int(BlockType.CRAFTING_TABLE), int(BlockType.FURNACE)
 _NOOP, _DO, _SLEEP, _REST = int(Action.NOOP), int(Action.DO), int(Action.SLEEP), int(Action.REST)
+_DESCEND, _ASCEND = int(Action.DESCEND), int(Action.ASCEND)
 
 # The mob tables the player's melee hit needs (upstream MOB_TYPE_DEFENSE_MAPPING and
 # MOB_ACHIEVEMENT_MAP). They are mob tables (``bestiary``'s, written by another helper at the
@@ -155,9 +156,12 @@ def attack_mob(state: State, r: int, c: int, damage, can_eat: bool = True) -> tu
     (upstream attack_mob): melee, passive, then ranged mobs are looked up; a mob whose health
     falls to 0 dies: the kill achievement (a passive kill only when ``can_eat``, which also
     gives food +6 and resets hunger), the mob map cleared, and a monster (melee or ranged) kill
-    counted in ``monsters_killed``. Returns (a mob was hit, a mob was killed)."""
+    counted in ``monsters_killed``. Returns (a mob was hit, a mob was killed). The mob map
+    (kept exact by ``mobs``) is read first: no mob there, no lookup."""
     level = state.player_level
     hit = killed = False
+    if not state.mob_map.item(level, r, c):
+        return hit, killed
     for cls, mobs_ in ((1, state.melee_mobs), (0, state.passive_mobs), (2, state.ranged_mobs)):
         mask = mobs_.mask[level]
         for i in range(mask.shape[0]):
@@ -218,19 +222,20 @@ def change_floor(state: State, action: int, settings) -> None:
     previous level's down ladder. Being on a level other than the overworld whose entry
     achievement is missing unlocks it and gives 1 XP (whatever the action)."""
     level = state.player_level
-    r, c = int(state.player_position[0]), int(state.player_position[1])
-    item = state.item_map.item(level, r, c)
-    if action == Action.DESCEND and level < NUM_LEVELS - 1 and (settings.god_mode or (
-            item == ItemType.LADDER_DOWN
-            and state.monsters_killed[level] >= MONSTERS_KILLED_TO_CLEAR_LEVEL)):
-        level += 1
-        state.player_position[:] = state.up_ladders[level]
-    elif action == Action.ASCEND and level > 0 and (settings.god_mode or item == ItemType.LADDER_UP):
-        level -= 1
-        state.player_position[:] = state.down_ladders[level]
-    state.player_level = level
+    if action == _DESCEND or action == _ASCEND:
+        r, c = int(state.player_position[0]), int(state.player_position[1])
+        item = state.item_map.item(level, r, c)
+        if action == _DESCEND and level < NUM_LEVELS - 1 and (settings.god_mode or (
+                item == ItemType.LADDER_DOWN
+                and state.monsters_killed[level] >= MONSTERS_KILLED_TO_CLEAR_LEVEL)):
+            level += 1
+            state.player_position[:] = state.up_ladders[level]
+        elif action == _ASCEND and level > 0 and (settings.god_mode or item == ItemType.LADDER_UP):
+            level -= 1
+            state.player_position[:] = state.down_ladders[level]
+        state.player_level = level
     achievement = LEVEL_ACHIEVEMENT[level]
-    if achievement is not None and not state.achievements[achievement]:
+    if achievement is not None and not state.achievements.item(achievement):
         unlock(state, achievement)
         state.player_xp += XP_PER_NEW_LEVEL
 
@@ -350,6 +355,7 @@ def open_chest(state: State, r: int, c: int, draws) -> None:
         inv.bow = 1
     if first and level in BOOK_CHEST_LEVELS:
         inv.books += 1
+    np.minimum(inv.potions, STACK_LIMIT, out=inv.potions)
     state.chests_opened[level] = True
     unlock(state, Achievement.OPEN_CHEST)
 
@@ -539,14 +545,20 @@ def move(state: State, action: int, settings) -> None:
 
 
 def grow_plants(state: State) -> None:
-    """Growing plants (level 0) age by one; at ``PLANT_RIPE_AGE`` their block is a ripe plant."""
+    """Growing plants (level 0) age by one (a free slot's age stays 0); at ``PLANT_RIPE_AGE``
+    their block is a ripe plant."""
     mask = state.growing_plants_mask
     age = state.growing_plants_age
+    if not mask.tobytes().strip(b"\x00"):          # no plant growing (the common case)
+        if age.tobytes().strip(b"\x00"):
+            age[:] = 0
+        return
     age += 1
     age *= mask
-    for i in np.flatnonzero(age >= PLANT_RIPE_AGE):
-        r, c = state.growing_plants_positions[i]
-        state.map[0, r, c] = _RIPE
+    if age.max() >= PLANT_RIPE_AGE:
+        for i in np.flatnonzero(age >= PLANT_RIPE_AGE):
+            r, c = state.growing_plants_positions[i]
+            state.map[0, r, c] = _RIPE
 
 
 def update_intrinsics(state: State, action: int, settings) -> None:
@@ -613,31 +625,46 @@ def update_intrinsics(state: State, action: int, settings) -> None:
     state.player_recover_mana = float(mana)
 
 
+_COUNTS = ("wood", "stone", "coal", "iron", "diamond", "sapling", "pickaxe", "sword", "bow",
+           "arrows", "torches", "ruby", "sapphire", "books")
+
+
 def clip_vitals(state: State, settings) -> None:
     """Inventory counts at most 99; vitals within [0, maximum] (the maxima grow with the
     attributes); god mode keeps health at least 9."""
     inv = state.inventory
-    for name in ("wood", "stone", "coal", "iron", "diamond", "sapling", "pickaxe", "sword",
-                 "bow", "arrows", "torches", "ruby", "sapphire", "books"):
-        if getattr(inv, name) > STACK_LIMIT:
-            setattr(inv, name, STACK_LIMIT)
-    np.minimum(inv.armour, STACK_LIMIT, out=inv.armour)
-    np.minimum(inv.potions, STACK_LIMIT, out=inv.potions)
+    if max(inv.wood, inv.stone, inv.coal, inv.iron, inv.diamond, inv.sapling, inv.arrows,
+           inv.torches, inv.ruby, inv.sapphire, inv.books, inv.pickaxe, inv.sword,
+           inv.bow) > STACK_LIMIT:
+        for name in _COUNTS:
+            if getattr(inv, name) > STACK_LIMIT:
+                setattr(inv, name, STACK_LIMIT)
+    # (armour is at most 2; potions only grow in chests, whose loot clips them)
     dex = state.player_dexterity
     low = GOD_MODE_MIN_HEALTH if settings.god_mode else 0
-    state.player_health = float(min(max(state.player_health, low),
-                                    max_health(state.player_strength)))
-    state.player_food = min(max(state.player_food, 0), max_food(dex))
-    state.player_drink = min(max(state.player_drink, 0), max_drink(dex))
-    state.player_energy = min(max(state.player_energy, 0), max_energy(dex))
-    state.player_mana = min(max(state.player_mana, 0), max_mana(state.player_intelligence))
+    health, top = state.player_health, max_health(state.player_strength)
+    if health < low or health > top:
+        state.player_health = float(min(max(health, low), top))
+    top = 7 + 2 * dex      # max food = max drink = max energy
+    if not (0 <= state.player_food <= top):
+        state.player_food = min(max(state.player_food, 0), top)
+    if not (0 <= state.player_drink <= top):
+        state.player_drink = min(max(state.player_drink, 0), top)
+    if not (0 <= state.player_energy <= top):
+        state.player_energy = min(max(state.player_energy, 0), top)
+    top = max_mana(state.player_intelligence)
+    if not (0 <= state.player_mana <= top):
+        state.player_mana = min(max(state.player_mana, 0), top)
+
+
+_INVENTORY_ACHIEVEMENTS = tuple((name, least, int(a)) for name, least, a in INVENTORY_ACHIEVEMENTS)
 
 
 def inventory_achievements(state: State) -> None:
     """Collecting and crafting achievements read off the inventory (``INVENTORY_ACHIEVEMENTS``),
     so a tool found in a chest counts as made."""
     inv, ach = state.inventory, state.achievements
-    for name, least, achievement in INVENTORY_ACHIEVEMENTS:
+    for name, least, achievement in _INVENTORY_ACHIEVEMENTS:
         if getattr(inv, name) >= least:
             ach[achievement] = True
 
@@ -655,7 +682,7 @@ _LEVEL_UP = frozenset(_ATTRIBUTES)
 
 def step(state: State, action: int, settings, draws) -> float:
     """One upstream step (see the module docstring); returns upstream's reward."""
-    before = state.achievements.copy()
+    before = state.achievements.tobytes()
     health = state.player_health
     action = int(action)
     if state.is_sleeping or state.is_resting:
@@ -693,8 +720,10 @@ def step(state: State, action: int, settings, draws) -> float:
     clip_vitals(state, settings)
     inventory_achievements(state)
 
-    gained = state.achievements & ~before
-    reward = float(_WEIGHTS[gained].sum()) if gained.any() else 0.0
+    reward = 0.0
+    if state.achievements.tobytes() != before:
+        old = np.frombuffer(before, dtype=bool)
+        reward = float(_WEIGHTS[state.achievements & ~old].sum())
     reward += (state.player_health - health) * 0.1
     state.timestep += 1
     state.light_level = light_level(state.timestep, settings.day_length) if settings.daylight else 1.0

@@ -462,3 +462,23 @@ def test_chests_and_the_necromancer(package):
     ls.edit(lambda st: setattr(st, "boss_timesteps_to_spawn_this_round", 0))
     ls.run([A.DO] + [A.NOOP] * 20, "defeat")
     assert ls.ours.achievements[Achievement.DEFEAT_NECROMANCER]
+
+
+def test_switches_leave_their_sub_rules_out():
+    """``Settings(intrinsics=False)``: hunger, thirst and fatigue stay, so do food, drink and
+    energy; health still recovers. ``Settings(daylight=False)``: the light level stays 1."""
+    s = blank_state()
+    s.player_health, s.player_food, s.player_drink, s.player_energy = 5.0, 4, 3, 2
+    off = Settings(spawning=False, intrinsics=False, daylight=False)
+    draws = Draws(np.random.default_rng(0))
+    for _ in range(200):
+        rules.step(s, int(A.NOOP), off, draws)
+        assert s.light_level == 1.0
+    assert (s.player_food, s.player_drink, s.player_energy) == (4, 3, 2)
+    assert (s.player_hunger, s.player_thirst, s.player_fatigue) == (0.0, 0.0, 0.0)
+    assert s.player_health == 9.0 and s.timestep == 200
+    on = blank_state()
+    on.player_food = 4
+    for _ in range(200):
+        rules.step(on, int(A.NOOP), SETTINGS, draws)
+    assert on.player_food < 4 and on.light_level != 1.0
