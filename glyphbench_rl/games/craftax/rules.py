@@ -156,11 +156,13 @@ def attack_mob(state: State, r: int, c: int, damage, can_eat: bool = True) -> tu
     (upstream attack_mob): melee, passive, then ranged mobs are looked up; a mob whose health
     falls to 0 dies: the kill achievement (a passive kill only when ``can_eat``, which also
     gives food +6 and resets hunger), the mob map cleared, and a monster (melee or ranged) kill
-    counted in ``monsters_killed``. Returns (a mob was hit, a mob was killed). The mob map
+    counted in ``monsters_killed``. Returns (a mob was hit, a mob was killed). Upstream's
+    player projectiles use it too (``can_eat`` False: a passive kill gives neither food nor its
+    achievement). The mob map
     (kept exact by ``mobs``) is read first: no mob there, no lookup."""
     level = state.player_level
     hit = killed = False
-    if not state.mob_map.item(level, r, c):
+    if not in_bounds(state, r, c) or not state.mob_map.item(level, r, c):
         return hit, killed
     for cls, mobs_ in ((1, state.melee_mobs), (0, state.passive_mobs), (2, state.ranged_mobs)):
         mask = mobs_.mask[level]

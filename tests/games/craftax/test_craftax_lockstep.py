@@ -378,6 +378,21 @@ def test_floors_potions_books_enchanting_levelling(package):
     ls.run([A.UP, A.ASCEND], "no-ladder")
 
 
+def test_torches_on_a_dark_level_and_at_the_map_edge(package):
+    s = blank_state()
+    s.player_level = 2
+    s.achievements[Achievement.ENTER_GNOMISH_MINES] = True
+    s.player_position[:] = (0, 2)
+    s.inventory.torches = 5
+    s.map[2, 2, 1] = B.WALL                      # not a block torches go on
+    ls = Lockstep(package, s)
+    ls.run([A.LEFT, A.PLACE_TORCH, A.DOWN, A.PLACE_TORCH, A.RIGHT, A.PLACE_TORCH], "corner")
+    assert ls.ours.light_map[2, 0, 0] == 1.0 and ls.ours.inventory.torches == 3
+    ls.edit(lambda st: st.player_position.__setitem__(slice(None), (47, 45)))
+    ls.run([A.RIGHT, A.PLACE_TORCH, A.UP, A.PLACE_TORCH, A.PLACE_TORCH], "far corner")
+    assert ls.ours.inventory.torches == 1
+
+
 @pytest.mark.skipif(not os.environ.get("CRAFTAX_RESET"), reason="set CRAFTAX_RESET=1 (a ~33 s jit)")
 def test_from_the_package_reset(package):
     env, params, _, _ = package
