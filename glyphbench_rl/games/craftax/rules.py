@@ -101,8 +101,10 @@ def is_in_mob(state: State, level: int, r: int, c: int) -> bool:
     return level == state.player_level and r == pos[0] and c == pos[1]
 
 
-def is_free(state: State, level: int, r: int, c: int) -> bool:
-    """(r, c) is in bounds, not solid, and nobody (mob or player) stands there."""
+def is_free(state: State, level: int, pos) -> bool:
+    """``pos`` (row, col) of ``level`` is in bounds, not solid, and nobody (mob or player)
+    stands there: where a mob may walk, before its own collision rules (water, lava)."""
+    r, c = int(pos[0]), int(pos[1])
     return (in_bounds(state, r, c) and not IS_SOLID[state.map.item(level, r, c)]
             and not is_in_mob(state, level, r, c))
 
@@ -110,7 +112,7 @@ def is_free(state: State, level: int, r: int, c: int) -> bool:
 def player_can_enter(state: State, r: int, c: int) -> bool:
     """Upstream's land-creature collision for the player: free, and neither water nor lava."""
     level = state.player_level
-    return is_free(state, level, r, c) and state.map.item(level, r, c) not in (_WATER, _LAVA)
+    return is_free(state, level, (r, c)) and state.map.item(level, r, c) not in (_WATER, _LAVA)
 
 
 def player_damage_vector(state: State) -> tuple[float, float, float]:

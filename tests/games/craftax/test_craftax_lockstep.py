@@ -1,10 +1,10 @@
 """``rules.step`` in lockstep with the ``craftax`` package's own ``craftax_step``.
 
 The package's step is jitted once for the module. Each sequence starts from one state given to
-both engines: ours steps with ``Settings(spawning=False)`` (and the placeholder-free parts of the
-step: everything but mobs), the package's steps its own way, and after each of its steps every
-mob, mob projectile and player projectile it has is removed (its spawning and projectile flight
-are another module's rules). After every step the two states must agree on: the inventory; the
+both engines: ours steps with ``Settings(spawning=False)``, the package's steps its own way
+(mobs included), and after each of its steps every mob, mob projectile and player projectile it
+has is removed (spawning, mob moves and projectile flight are another module's rules; a player
+projectile is only checked to start at the player's cell). After every step the two states must agree on: the inventory; the
 vitals (health, food, drink, energy, mana) and their accumulators (recover, hunger, thirst,
 fatigue, mana recovery); the achievements and the reward; map, item map and light map; position,
 direction, level, sleeping and resting; XP and attributes; spells, enchantments, potion mapping;
@@ -18,8 +18,12 @@ Set ``CRAFTAX_RESET=1`` to also run one sequence from the package's seeded reset
 
 Upstream's random draws (a sapling from DO on grass, chest loot, the spell a book teaches when
 both are unknown, the armour piece an enchantment picks when several qualify) are kept out of
-the sequences: DO never faces grass, no chest is opened, the book's reader knows one spell, and
-the armour enchanted has one unenchanted piece. Lava and water are walked into, never entered.
+the sequences: DO never faces grass, the book's reader knows one spell, and the armour
+enchanted has one unenchanted piece. Chests are opened with only the loot's deterministic parts
+compared (the bow of the dungeon's first chest, the book of the sewers', the chest turned to
+path, ``chests_opened``, OPEN_CHEST); the package's inventory is then copied into ours. Melee
+hits on mobs (one step each, the mob's cooldown set so it cannot strike back) compare the mob's
+health and life before the package's mobs are removed.
 """
 
 from __future__ import annotations
