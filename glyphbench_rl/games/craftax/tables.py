@@ -191,3 +191,271 @@ class Achievement(IntEnum):
     DRINK_POTION = 62
     ENCHANT_SWORD = 63
     ENCHANT_ARMOUR = 64
+
+
+# --------------------------------------------------------------------------------------------
+# Rule tables (upstream ``constants.py``, and the numbers ``game_logic.py`` writes inline, named
+# here; the inline ones are checked by the lockstep test against the package's step).
+# --------------------------------------------------------------------------------------------
+
+NUM_BLOCK_TYPES = len(BlockType)
+NUM_ACHIEVEMENTS = len(Achievement)
+
+# Blocks nothing walks through (upstream SOLID_BLOCKS); ``IS_SOLID[block]`` is the fast lookup.
+SOLID_BLOCKS = frozenset({
+    BlockType.STONE, BlockType.TREE, BlockType.COAL, BlockType.IRON, BlockType.DIAMOND,
+    BlockType.CRAFTING_TABLE, BlockType.FURNACE, BlockType.PLANT, BlockType.RIPE_PLANT,
+    BlockType.WALL, BlockType.WALL_MOSS, BlockType.STALAGMITE, BlockType.RUBY, BlockType.SAPPHIRE,
+    BlockType.CHEST, BlockType.FOUNTAIN, BlockType.FIRE_TREE, BlockType.ENCHANTMENT_TABLE_FIRE,
+    BlockType.ENCHANTMENT_TABLE_ICE, BlockType.GRAVE, BlockType.GRAVE2, BlockType.GRAVE3,
+    BlockType.NECROMANCER,
+})
+IS_SOLID = tuple(b in SOLID_BLOCKS for b in BlockType)
+
+# Blocks a torch (an item) may be placed on (upstream CAN_PLACE_ITEM_BLOCKS).
+CAN_PLACE_ITEM_BLOCKS = frozenset({BlockType.GRASS, BlockType.SAND, BlockType.PATH,
+                                   BlockType.FIRE_GRASS, BlockType.ICE_GRASS})
+CAN_PLACE_ITEM = tuple(b in CAN_PLACE_ITEM_BLOCKS for b in BlockType)
+
+# Action -> (drow, dcol); every other action is (0, 0) (upstream DIRECTIONS, 16 rows).
+DIRECTIONS = {Action.NOOP: (0, 0), Action.LEFT: (0, -1), Action.RIGHT: (0, 1),
+              Action.UP: (-1, 0), Action.DOWN: (1, 0)}
+MOVES = {int(a): d for a, d in DIRECTIONS.items() if d != (0, 0)}
+
+# The eight cells around the player where a crafting table / furnace counts as "near".
+CLOSE_BLOCKS = ((0, -1), (0, 1), (-1, 0), (1, 0), (-1, -1), (-1, 1), (1, -1), (1, 1))
+
+# ---- achievements and their reward weights
+INTERMEDIATE_ACHIEVEMENTS = frozenset({
+    Achievement.COLLECT_SAPPHIRE, Achievement.COLLECT_RUBY, Achievement.MAKE_DIAMOND_PICKAXE,
+    Achievement.MAKE_DIAMOND_SWORD, Achievement.MAKE_IRON_ARMOUR, Achievement.MAKE_DIAMOND_ARMOUR,
+    Achievement.ENTER_GNOMISH_MINES, Achievement.ENTER_DUNGEON, Achievement.DEFEAT_GNOME_WARRIOR,
+    Achievement.DEFEAT_GNOME_ARCHER, Achievement.DEFEAT_ORC_SOLIDER, Achievement.DEFEAT_ORC_MAGE,
+    Achievement.EAT_BAT, Achievement.EAT_SNAIL, Achievement.FIND_BOW, Achievement.FIRE_BOW,
+    Achievement.OPEN_CHEST, Achievement.DRINK_POTION,
+})
+VERY_ADVANCED_ACHIEVEMENTS = frozenset({
+    Achievement.ENTER_FIRE_REALM, Achievement.ENTER_ICE_REALM, Achievement.ENTER_GRAVEYARD,
+    Achievement.DEFEAT_PIGMAN, Achievement.DEFEAT_FIRE_ELEMENTAL, Achievement.DEFEAT_FROST_TROLL,
+    Achievement.DEFEAT_ICE_ELEMENTAL, Achievement.DAMAGE_NECROMANCER,
+    Achievement.DEFEAT_NECROMANCER,
+})
+BASIC_WEIGHT, INTERMEDIATE_WEIGHT, ADVANCED_WEIGHT, VERY_ADVANCED_WEIGHT = 1, 3, 5, 8
+
+
+def achievement_weight(achievement: int) -> int:
+    """Upstream's reward for unlocking ``achievement``: the 25 Crafter-style ones (values <= 24)
+    are basic, then intermediate, very advanced, and everything else advanced."""
+    if achievement <= 24:
+        return BASIC_WEIGHT
+    if achievement in INTERMEDIATE_ACHIEVEMENTS:
+        return INTERMEDIATE_WEIGHT
+    if achievement in VERY_ADVANCED_ACHIEVEMENTS:
+        return VERY_ADVANCED_WEIGHT
+    return ADVANCED_WEIGHT
+
+
+ACHIEVEMENT_REWARD = tuple(achievement_weight(a) for a in range(NUM_ACHIEVEMENTS))
+
+# ---- levels
+NUM_LEVELS = 9
+LEVEL_NAMES = ("Overworld", "Dungeon", "Gnomish Mines", "Sewers", "Vaults", "Troll Mines",
+               "Fire Realm", "Ice Realm", "Graveyard")
+# First entry into a level (never the overworld) unlocks its achievement and gives 1 XP.
+LEVEL_ACHIEVEMENT = (None, Achievement.ENTER_DUNGEON, Achievement.ENTER_GNOMISH_MINES,
+                     Achievement.ENTER_SEWERS, Achievement.ENTER_VAULT,
+                     Achievement.ENTER_TROLL_MINES, Achievement.ENTER_FIRE_REALM,
+                     Achievement.ENTER_ICE_REALM, Achievement.ENTER_GRAVEYARD)
+# Ambient light of each level's light map (world_gen_configs ``default_light``; the dungeon
+# levels 1, 3, 4 are fully lit): levels at 0 are dark, seen only by torches, lava and ladders.
+LEVEL_DEFAULT_LIGHT = (1.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0, 0.0, 0.0)
+DARK_LEVELS = frozenset(i for i, light in enumerate(LEVEL_DEFAULT_LIGHT) if light == 0.0)
+BOSS_LEVEL = NUM_LEVELS - 1          # the graveyard: the necromancer fight
+MONSTERS_KILLED_TO_CLEAR_LEVEL = 8   # kills on a level before its down ladder opens
+BOSS_FIGHT_EXTRA_DAMAGE = 0.5        # damage to the player x1.5 on the boss level
+BOSS_FIGHT_SPAWN_TURNS = 7           # turns of a spawn wave after each necromancer hit
+LIGHT_VISIBLE = 0.05                 # a cell is seen when its light exceeds this (renderer)
+
+# ---- light
+TORCH_LIGHT_RADIUS = 5.0             # torch light = clip(1 - distance / radius, 0, 1)
+TORCH_LIGHT_HALF = 4                 # it is added over the 9x9 square around the torch
+
+
+def _torch_light_map():
+    import numpy as np
+    r = np.arange(-TORCH_LIGHT_HALF, TORCH_LIGHT_HALF + 1, dtype=np.float32)
+    distance = np.sqrt(r[:, None] ** 2 + r[None, :] ** 2)
+    return np.clip(1.0 - distance / np.float32(TORCH_LIGHT_RADIUS), 0.0, 1.0).astype(np.float32)
+
+
+TORCH_LIGHT_MAP = _torch_light_map()
+
+
+def light_level(timestep: int, day_length: int) -> float:
+    """The daylight at ``timestep`` (upstream calculate_light_level): 1 at noon, 0 at night."""
+    import math
+    progress = (timestep / day_length) % 1 + 0.3
+    return 1.0 - abs(math.cos(math.pi * progress)) ** 3
+
+
+# ---- crafting: action -> recipe
+
+
+class Recipe:
+    """``cost`` (inventory field -> amount) buys ``result``: a tool tier (``pickaxe``/``sword``
+    set to ``tier``, allowed while below it), an armour piece (the first slot below ``tier``), or
+    ``amount`` more ``arrows``/``torches`` (allowed while below ``STACK_LIMIT``). A crafting
+    table must be among the eight cells around the player, and a furnace too if ``furnace``."""
+
+    __slots__ = ("cost", "furnace", "result", "tier", "amount", "achievement")
+
+    def __init__(self, cost, result, tier=0, amount=0, furnace=False, achievement=None):
+        self.cost, self.result, self.tier, self.amount = dict(cost), result, tier, amount
+        self.furnace, self.achievement = furnace, achievement
+
+    def __repr__(self) -> str:
+        return (f"Recipe({self.cost}, {self.result!r}, tier={self.tier}, amount={self.amount}, "
+                f"furnace={self.furnace})")
+
+
+STACK_LIMIT = 99    # arrows/torches are crafted only below it; every count is clipped to it
+RECIPES = {
+    Action.MAKE_WOOD_PICKAXE: Recipe({"wood": 1}, "pickaxe", tier=1),
+    Action.MAKE_STONE_PICKAXE: Recipe({"wood": 1, "stone": 1}, "pickaxe", tier=2),
+    Action.MAKE_IRON_PICKAXE: Recipe({"wood": 1, "stone": 1, "iron": 1, "coal": 1}, "pickaxe",
+                                     tier=3, furnace=True),
+    Action.MAKE_DIAMOND_PICKAXE: Recipe({"wood": 1, "diamond": 3}, "pickaxe", tier=4),
+    Action.MAKE_WOOD_SWORD: Recipe({"wood": 1}, "sword", tier=1),
+    Action.MAKE_STONE_SWORD: Recipe({"wood": 1, "stone": 1}, "sword", tier=2),
+    Action.MAKE_IRON_SWORD: Recipe({"wood": 1, "stone": 1, "iron": 1, "coal": 1}, "sword",
+                                   tier=3, furnace=True),
+    Action.MAKE_DIAMOND_SWORD: Recipe({"wood": 1, "diamond": 2}, "sword", tier=4),
+    Action.MAKE_IRON_ARMOUR: Recipe({"iron": 3, "coal": 3}, "armour", tier=1, furnace=True,
+                                    achievement=Achievement.MAKE_IRON_ARMOUR),
+    Action.MAKE_DIAMOND_ARMOUR: Recipe({"diamond": 3}, "armour", tier=2,
+                                       achievement=Achievement.MAKE_DIAMOND_ARMOUR),
+    Action.MAKE_ARROW: Recipe({"wood": 1, "stone": 1}, "arrows", amount=2),
+    Action.MAKE_TORCH: Recipe({"wood": 1, "coal": 1}, "torches", amount=4),
+}
+RECIPE_BY_ACTION = {int(a): r for a, r in RECIPES.items()}
+
+# ---- placing: action -> (inventory field, cost, block placed, achievement)
+PLACING = {
+    Action.PLACE_TABLE: ("wood", 2, BlockType.CRAFTING_TABLE, Achievement.PLACE_TABLE),
+    Action.PLACE_FURNACE: ("stone", 1, BlockType.FURNACE, Achievement.PLACE_FURNACE),
+    Action.PLACE_STONE: ("stone", 1, BlockType.STONE, Achievement.PLACE_STONE),
+    Action.PLACE_PLANT: ("sapling", 1, BlockType.PLANT, Achievement.PLACE_PLANT),
+    Action.PLACE_TORCH: ("torches", 1, None, Achievement.PLACE_TORCH),
+}
+
+# ---- mining (DO on a block): block -> (pickaxe tier needed, inventory field or None, the
+# block left behind). Trees need no tool. Collecting is credited by INVENTORY_ACHIEVEMENTS.
+MINING = {
+    BlockType.TREE: (0, "wood", BlockType.GRASS),
+    BlockType.FIRE_TREE: (0, "wood", BlockType.FIRE_GRASS),
+    BlockType.ICE_SHRUB: (0, "wood", BlockType.ICE_GRASS),
+    BlockType.STONE: (1, "stone", BlockType.PATH),
+    BlockType.COAL: (1, "coal", BlockType.PATH),
+    BlockType.IRON: (2, "iron", BlockType.PATH),
+    BlockType.DIAMOND: (3, "diamond", BlockType.PATH),
+    BlockType.SAPPHIRE: (4, "sapphire", BlockType.PATH),
+    BlockType.RUBY: (4, "ruby", BlockType.PATH),
+    BlockType.STALAGMITE: (1, "stone", BlockType.PATH),
+    BlockType.FURNACE: (0, None, BlockType.PATH),
+    BlockType.CRAFTING_TABLE: (0, None, BlockType.PATH),
+}
+MINING_BY_BLOCK = {int(b): (tier, item, int(left)) for b, (tier, item, left) in MINING.items()}
+SAPLING_CHANCE = 0.1        # DO on grass finds a sapling
+DRINK_BLOCKS = frozenset({BlockType.WATER, BlockType.FOUNTAIN})   # DO: drink +1, thirst 0
+RIPE_PLANT_FOOD = 4         # DO on a ripe plant: food +4, hunger 0, the plant regrows
+COW_FOOD = 6                # killing a passive mob in melee: food +6, hunger 0
+PLANT_RIPE_AGE = 600        # a planted sapling ripens after this many steps (level 0 only)
+
+# Achievements read off the inventory at the end of every step: (field, at least, achievement).
+INVENTORY_ACHIEVEMENTS = (
+    ("wood", 1, Achievement.COLLECT_WOOD), ("stone", 1, Achievement.COLLECT_STONE),
+    ("coal", 1, Achievement.COLLECT_COAL), ("iron", 1, Achievement.COLLECT_IRON),
+    ("diamond", 1, Achievement.COLLECT_DIAMOND), ("ruby", 1, Achievement.COLLECT_RUBY),
+    ("sapphire", 1, Achievement.COLLECT_SAPPHIRE), ("sapling", 1, Achievement.COLLECT_SAPLING),
+    ("bow", 1, Achievement.FIND_BOW), ("arrows", 1, Achievement.MAKE_ARROW),
+    ("torches", 1, Achievement.MAKE_TORCH),
+    ("pickaxe", 1, Achievement.MAKE_WOOD_PICKAXE), ("pickaxe", 2, Achievement.MAKE_STONE_PICKAXE),
+    ("pickaxe", 3, Achievement.MAKE_IRON_PICKAXE),
+    ("pickaxe", 4, Achievement.MAKE_DIAMOND_PICKAXE),
+    ("sword", 1, Achievement.MAKE_WOOD_SWORD), ("sword", 2, Achievement.MAKE_STONE_SWORD),
+    ("sword", 3, Achievement.MAKE_IRON_SWORD), ("sword", 4, Achievement.MAKE_DIAMOND_SWORD),
+)
+
+# ---- combat (the player's side)
+SWORD_DAMAGE = (1, 2, 3, 5, 8)          # physical damage by sword tier (0 = bare hands)
+STRENGTH_DAMAGE_BONUS = 0.25            # physical x (1 + 0.25 (strength - 1))
+ENCHANT_DAMAGE_FRACTION = 0.5           # an enchanted sword adds half its base as fire/ice
+INTELLIGENCE_ENCHANT_BONUS = 0.05       # ... x (1 + 0.05 (intelligence - 1))
+ARMOUR_DEFENCE_PER_TIER = 0.1           # physical defence per armour tier per piece
+ENCHANTED_ARMOUR_DEFENCE = 0.2          # fire (ice) defence per fire (ice) enchanted piece
+SLEEPING_MELEE_FACTOR = 3.5             # melee damage x (1 + 2.5) on a sleeping player
+
+# ---- intrinsics (upstream update_player_intrinsics)
+HUNGER_LIMIT = 25        # hunger above it: food -1
+THIRST_LIMIT = 20        # thirst above it: drink -1
+FATIGUE_LIMIT = 30       # fatigue above it: energy -1
+FATIGUE_RESTED = -10     # fatigue below it (while asleep): energy +1
+RECOVER_LIMIT = 25       # recover above it: health +1
+DERECOVER_LIMIT = -15    # recover below it: health -1
+MANA_LIMIT = 30          # mana recovery above it: mana +1
+SLEEP_INTRINSIC_RATE = 0.5       # hunger/thirst grow at half speed while asleep
+DEXTERITY_DECAY = 0.125          # hunger/thirst/fatigue rate x (1 - 0.125 (dexterity - 1))
+RECOVER_RATE = (1.0, 2.0)        # (awake, asleep) with every need met
+DERECOVER_RATE = (-1.0, -0.5)    # (awake, asleep) with a need unmet (not in the boss fight)
+MANA_RATE = (1, 2)               # (awake, asleep), x (1 + 0.25 (intelligence - 1))
+INTELLIGENCE_MANA_BONUS = 0.25
+
+
+def max_health(strength: int) -> int:
+    return 8 + strength
+
+
+def max_food(dexterity: int) -> int:
+    return 7 + 2 * dexterity
+
+
+max_drink = max_energy = max_food
+
+
+def max_mana(intelligence: int) -> int:
+    return 6 + 3 * intelligence
+
+
+GOD_MODE_MIN_HEALTH = 9
+
+# ---- chests (upstream add_items_from_chest): each line is an independent chance
+CHEST_TORCH = (0.6, 4, 7)           # (chance, min, max) torches
+CHEST_ORE_CHANCE = 0.6
+CHEST_ORES = (("coal", 0.3, 1, 3), ("iron", 0.3, 1, 2), ("diamond", 0.15, 1, 1),
+              ("sapphire", 0.125, 1, 1), ("ruby", 0.125, 1, 1))   # (field, weight, min, max)
+CHEST_POTION = (0.5, 1, 2)          # a random colour, (chance, min, max)
+CHEST_ARROWS = (0.25, 1, 4)
+CHEST_TOOL_CHANCE = 0.2             # then pickaxe or sword (even), of tier 1-4 with:
+CHEST_TOOL_TIER_WEIGHTS = (0.4, 0.3, 0.2, 0.1)   # (a tool never downgrades)
+BOW_CHEST_LEVEL = 1                 # the first chest opened on the dungeon holds the bow
+BOOK_CHEST_LEVELS = frozenset({3, 4})   # the first chest on the sewers / vaults holds a book
+
+# ---- potions: six colours, an episode's potion_mapping sends colour -> effect index
+POTION_ACTIONS = (Action.DRINK_POTION_RED, Action.DRINK_POTION_GREEN, Action.DRINK_POTION_BLUE,
+                  Action.DRINK_POTION_PINK, Action.DRINK_POTION_CYAN, Action.DRINK_POTION_YELLOW)
+POTION_COLOURS = ("red", "green", "blue", "pink", "cyan", "yellow")
+# effect index -> (vital, change)
+POTION_EFFECTS = (("health", 8), ("health", -3), ("mana", 8), ("mana", -3), ("energy", 8),
+                  ("energy", -3))
+
+# ---- spells and enchanting
+SPELL_MANA_COST = 2
+SPELLS = {Action.CAST_FIREBALL: (0, ProjectileType.FIREBALL, Achievement.CAST_FIREBALL),
+          Action.CAST_ICEBALL: (1, ProjectileType.ICEBALL, Achievement.CAST_ICEBALL)}
+LEARN_SPELL_ACHIEVEMENT = (Achievement.LEARN_FIREBALL, Achievement.LEARN_ICEBALL)
+PLAYER_ARROW = ProjectileType.ARROW2     # what SHOOT_ARROW fires
+ENCHANT_MANA_COST = 9
+# enchantment table -> (element: 1 fire / 2 ice, the gem it costs)
+ENCHANT_TABLES = {BlockType.ENCHANTMENT_TABLE_FIRE: (1, "ruby"),
+                  BlockType.ENCHANTMENT_TABLE_ICE: (2, "sapphire")}
+XP_PER_NEW_LEVEL = 1

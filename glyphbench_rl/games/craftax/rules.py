@@ -1,0 +1,734 @@
+"""Craftax's step: upstream ``craftax_step`` (craftax 1.6.1, ``game_logic.py``) as a chain of
+small sub-rules on the numpy ``State``, in upstream's order.
+
+``step(state, action, settings, draws)`` mutates ``state`` and returns upstream's reward (the
+weights of the achievements unlocked this step plus 0.1 x the change in health). The order:
+
+1. a sleeping or resting player's action becomes NOOP;
+2. ``change_floor`` (DESCEND / ASCEND, and the first-entry achievement and XP of a level);
+3. the action's own rule: ``craft``, ``do`` (attack, mine, drink, eat, open chests, hit the
+   necromancer), ``place``, ``shoot_arrow``, ``cast_spell``, ``drink_potion``, ``read_book``,
+   ``enchant``; then ``boss_round`` (every step) and ``level_up``;
+4. ``move`` (the move actions only);
+5. ``mobs.update`` and ``mobs.spawn`` (``settings.spawning`` off skips the spawn);
+6. ``grow_plants``, ``update_intrinsics``, ``clip_vitals``, ``inventory_achievements``;
+7. the reward, ``timestep`` + 1 and the light level of the new timestep.
+
+Randomness is explicit: ``draws`` (``games.common.lanes.Draws``) gives the uniform draws for
+the sapling found on grass, chest loot, the spell a book teaches and the armour piece an
+enchantment lands on, one draw per upstream random choice, taken only when the choice matters.
+
+Helpers other modules use: ``in_bounds``, ``is_in_mob``, ``is_free``, ``player_damage_vector``,
+``damage_against``, ``player_damage`` (damage a mob's attack does to the player) and
+``attack_mob`` (the player's hit on a mob at a cell, with the kill bookkeeping).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from . import mobs
+from .state import MAX_PLAYER_PROJECTILES, State
+from .tables import (
+    ACHIEVEMENT_REWARD, ARMOUR_DEFENCE_PER_TIER, BOOK_CHEST_LEVELS, BOSS_FIGHT_EXTRA_DAMAGE,
+    BOSS_FIGHT_SPAWN_TURNS, BOSS_LEVEL, BOW_CHEST_LEVEL, CAN_PLACE_ITEM, CHEST_ARROWS,
+    CHEST_ORE_CHANCE, CHEST_ORES, CHEST_POTION, CHEST_TOOL_CHANCE, CHEST_TOOL_TIER_WEIGHTS,
+    CHEST_TORCH, CLOSE_BLOCKS, COW_FOOD, DERECOVER_LIMIT, DERECOVER_RATE, DEXTERITY_DECAY,
+    DIRECTIONS, DRINK_BLOCKS, ENCHANT_DAMAGE_FRACTION, ENCHANT_MANA_COST, ENCHANT_TABLES,
+    ENCHANTED_ARMOUR_DEFENCE, FATIGUE_LIMIT, IS_SOLID, FATIGUE_RESTED, GOD_MODE_MIN_HEALTH, HUNGER_LIMIT,
+    INTELLIGENCE_ENCHANT_BONUS, INTELLIGENCE_MANA_BONUS, INVENTORY_ACHIEVEMENTS,
+    LEARN_SPELL_ACHIEVEMENT, LEVEL_ACHIEVEMENT, MANA_LIMIT, MANA_RATE, MINING_BY_BLOCK,
+    MONSTERS_KILLED_TO_CLEAR_LEVEL, MOVES, NUM_LEVELS, PLACING, PLANT_RIPE_AGE, PLAYER_ARROW,
+    POTION_ACTIONS, POTION_EFFECTS, RECIPE_BY_ACTION, RECOVER_LIMIT, RECOVER_RATE,
+    RIPE_PLANT_FOOD, SAPLING_CHANCE, SLEEP_INTRINSIC_RATE, SLEEPING_MELEE_FACTOR,
+    SPELL_MANA_COST, SPELLS, STACK_LIMIT, STRENGTH_DAMAGE_BONUS, SWORD_DAMAGE, THIRST_LIMIT,
+    TORCH_LIGHT_HALF, TORCH_LIGHT_MAP, XP_PER_NEW_LEVEL, Achievement, Action, BlockType,
+    ItemType, light_level, max_drink, max_energy, max_food, max_health, max_mana,
+)
+
+_WEIGHTS = np.array(ACHIEVEMENT_REWARD, np.float64)
+_DIR = {int(a): d for a, d in DIRECTIONS.items()}
+_POTION_INDEX = {int(a): i for i, a in enumerate(POTION_ACTIONS)}
+_SPELLS = {int(a): (i, int(p), int(ach)) for a, (i, p, ach) in SPELLS.items()}
+_PLACING = {int(a): (item, cost, None if block is None else int(block), int(ach))
+            for a, (item, cost, block, ach) in PLACING.items()}
+_ENCHANT_TABLES = {int(b): v for b, v in ENCHANT_TABLES.items()}
+_DRINK_BLOCKS = frozenset(int(b) for b in DRINK_BLOCKS)
+_GRASS, _PATH, _WATER = int(BlockType.GRASS), int(BlockType.PATH), int(BlockType.WATER)
+_LAVA, _CHEST, _RIPE = int(BlockType.LAVA), int(BlockType.CHEST), int(BlockType.RIPE_PLANT)
+_PLANT, _NECRO = int(BlockType.PLANT), int(BlockType.NECROMANCER)
+_TABLE, _FURNACE = int(BlockType.CRAFTING_TABLE), int(BlockType.FURNACE)
+_NOOP, _DO, _SLEEP, _REST = int(Action.NOOP), int(Action.DO), int(Action.SLEEP), int(Action.REST)
+_DESCEND, _ASCEND = int(Action.DESCEND), int(Action.ASCEND)
+
+# The mob tables the player's melee hit needs (upstream MOB_TYPE_DEFENSE_MAPPING and
+# MOB_ACHIEVEMENT_MAP). They are mob tables (``bestiary``'s, written by another helper at the
+# same time); kept here privately until the merge unifies them. Checked against the package in
+# tests/games/craftax/test_craftax_tables.py. Classes: 0 passive, 1 melee, 2 ranged.
+_NO_DEFENCE = (0.0, 0.0, 0.0)
+MOB_DEFENCE = tuple(  # [type_id][class] -> (physical, fire, ice) defence
+    (_NO_DEFENCE, melee, ranged)
+    for melee, ranged in (
+        (_NO_DEFENCE, _NO_DEFENCE), (_NO_DEFENCE, _NO_DEFENCE), (_NO_DEFENCE, _NO_DEFENCE),
+        (_NO_DEFENCE, _NO_DEFENCE), ((0.5, 0.0, 0.0), (0.5, 0.0, 0.0)),
+        ((0.2, 0.0, 0.0), _NO_DEFENCE), ((0.9, 1.0, 0.0), (0.9, 1.0, 0.0)),
+        ((0.9, 0.0, 1.0), (0.9, 0.0, 1.0)), (_NO_DEFENCE, _NO_DEFENCE)))
+A = Achievement
+MOB_KILL_ACHIEVEMENT = (  # [class][type_id]; upstream's unused passive types map to 0
+    (A.EAT_COW, A.EAT_BAT, A.EAT_SNAIL, 0, 0, 0, 0, 0),
+    (A.DEFEAT_ZOMBIE, A.DEFEAT_GNOME_WARRIOR, A.DEFEAT_ORC_SOLIDER, A.DEFEAT_LIZARD,
+     A.DEFEAT_KNIGHT, A.DEFEAT_TROLL, A.DEFEAT_PIGMAN, A.DEFEAT_FROST_TROLL),
+    (A.DEFEAT_SKELETON, A.DEFEAT_GNOME_ARCHER, A.DEFEAT_ORC_MAGE, A.DEFEAT_KOBOLD,
+     A.DEFEAT_ARCHER, A.DEFEAT_DEEP_THING, A.DEFEAT_FIRE_ELEMENTAL, A.DEFEAT_ICE_ELEMENTAL),
+)
+del A
+
+
+# ------------------------------------------------------------------------------------------
+# helpers shared with the other modules
+
+
+def in_bounds(state: State, r: int, c: int) -> bool:
+    rows, cols = state.map.shape[1:]
+    return 0 <= r < rows and 0 <= c < cols
+
+
+def is_in_mob(state: State, level: int, r: int, c: int) -> bool:
+    """A mob stands at (r, c) of ``level``, or the player does (upstream is_in_mob)."""
+    if state.mob_map[level, r, c]:
+        return True
+    pos = state.player_position
+    return level == state.player_level and r == pos[0] and c == pos[1]
+
+
+def is_free(state: State, level: int, pos) -> bool:
+    """``pos`` (row, col) of ``level`` is in bounds, not solid, and nobody (mob or player)
+    stands there: where a mob may walk, before its own collision rules (water, lava)."""
+    r, c = int(pos[0]), int(pos[1])
+    return (in_bounds(state, r, c) and not IS_SOLID[state.map.item(level, r, c)]
+            and not is_in_mob(state, level, r, c))
+
+
+def player_can_enter(state: State, r: int, c: int) -> bool:
+    """Upstream's land-creature collision for the player: free, and neither water nor lava."""
+    level = state.player_level
+    return is_free(state, level, (r, c)) and state.map.item(level, r, c) not in (_WATER, _LAVA)
+
+
+def player_damage_vector(state: State) -> tuple[float, float, float]:
+    """(physical, fire, ice) damage of the player's melee hit: the sword tier's damage scaled by
+    strength; an enchanted sword adds half the unscaled damage as its element, scaled by
+    intelligence."""
+    base = SWORD_DAMAGE[state.inventory.sword]
+    element = base * ENCHANT_DAMAGE_FRACTION * (
+        1 + INTELLIGENCE_ENCHANT_BONUS * (state.player_intelligence - 1))
+    physical = base * (1 + STRENGTH_DAMAGE_BONUS * (state.player_strength - 1))
+    ench = state.sword_enchantment
+    return physical, element if ench == 1 else 0.0, element if ench == 2 else 0.0
+
+
+def damage_against(damage, defence) -> float:
+    """Upstream get_damage: each element's damage times (1 - that element's defence), summed."""
+    return sum((1.0 - d) * v for v, d in zip(damage, defence))
+
+
+def player_damage(state: State, damage, melee: bool = False) -> float:
+    """The health a mob's attack of ``damage`` (physical, fire, ice) takes from the player:
+    x3.5 for a melee hit on a sleeping player, x1.5 in the boss fight, less the defence of the
+    armour (0.1 physical per tier per piece) and of its enchantments (0.2 fire / ice per
+    fire / ice piece). Applying it (and waking the player) is the caller's job."""
+    factor = 1.0
+    if melee and state.is_sleeping:
+        factor *= SLEEPING_MELEE_FACTOR
+    if state.player_level == BOSS_LEVEL:
+        factor *= 1 + BOSS_FIGHT_EXTRA_DAMAGE
+    ench = state.armour_enchantments
+    defence = (int(state.inventory.armour.sum()) * ARMOUR_DEFENCE_PER_TIER,
+               int((ench == 1).sum()) * ENCHANTED_ARMOUR_DEFENCE,
+               int((ench == 2).sum()) * ENCHANTED_ARMOUR_DEFENCE)
+    return damage_against([v * factor for v in damage], defence)
+
+
+def unlock(state: State, achievement: int) -> None:
+    state.achievements[achievement] = True
+
+
+def attack_mob(state: State, r: int, c: int, damage, can_eat: bool = True) -> tuple[bool, bool]:
+    """The player's attack of ``damage`` on whatever mob stands at (r, c) of the player's level
+    (upstream attack_mob): melee, passive, then ranged mobs are looked up; a mob whose health
+    falls to 0 dies: the kill achievement (a passive kill only when ``can_eat``, which also
+    gives food +6 and resets hunger), the mob map cleared, and a monster (melee or ranged) kill
+    counted in ``monsters_killed``. Returns (a mob was hit, a mob was killed). Upstream's
+    player projectiles use it too (``can_eat`` False: a passive kill gives neither food nor its
+    achievement). The mob map
+    (kept exact by ``mobs``) is read first: no mob there, no lookup."""
+    level = state.player_level
+    hit = killed = False
+    if not in_bounds(state, r, c) or not state.mob_map.item(level, r, c):
+        return hit, killed
+    for cls, mobs_ in ((1, state.melee_mobs), (0, state.passive_mobs), (2, state.ranged_mobs)):
+        mask = mobs_.mask[level]
+        for i in range(mask.shape[0]):
+            if not (mask[i] and mobs_.position[level, i, 0] == r and mobs_.position[level, i, 1] == c):
+                continue
+            hit = True
+            kind = int(mobs_.type_id[level, i])
+            mobs_.health[level, i] -= damage_against(damage, MOB_DEFENCE[kind][cls])
+            if mobs_.health[level, i] <= 0:
+                mobs_.mask[level, i] = False
+                killed = True
+                if cls == 0:
+                    if can_eat:
+                        unlock(state, MOB_KILL_ACHIEVEMENT[0][kind])
+                        state.player_food = min(max_food(state.player_dexterity),
+                                                state.player_food + COW_FOOD)
+                        state.player_hunger = 0.0
+                else:
+                    unlock(state, MOB_KILL_ACHIEVEMENT[cls][kind])
+                    state.monsters_killed[level] += 1
+            break
+    if killed:
+        state.mob_map[level, r, c] = False
+    return hit, killed
+
+
+def is_boss_vulnerable(state: State) -> bool:
+    """No melee or ranged mob alive on the player's level, and the spawn wave is over."""
+    level = state.player_level
+    return (not state.melee_mobs.mask[level].any() and not state.ranged_mobs.mask[level].any()
+            and state.boss_timesteps_to_spawn_this_round <= 0)
+
+
+def facing(state: State) -> tuple[int, int]:
+    dr, dc = _DIR.get(state.player_direction, (0, 0))
+    return int(state.player_position[0]) + dr, int(state.player_position[1]) + dc
+
+
+def is_near_block(state: State, block: int) -> bool:
+    """``block`` is in one of the eight cells around the player (crafting stations)."""
+    level, r, c = state.player_level, int(state.player_position[0]), int(state.player_position[1])
+    rows, cols = state.map.shape[1:]
+    m = state.map
+    for dr, dc in CLOSE_BLOCKS:
+        rr, cc = r + dr, c + dc
+        if 0 <= rr < rows and 0 <= cc < cols and m.item(level, rr, cc) == block:
+            return True
+    return False
+
+
+# ------------------------------------------------------------------------------------------
+# the sub-rules, in upstream's order
+
+
+def change_floor(state: State, action: int, settings) -> None:
+    """DESCEND on a down ladder once the level has ``MONSTERS_KILLED_TO_CLEAR_LEVEL`` kills
+    (or in god mode) moves to the next level's up ladder; ASCEND on an up ladder moves to the
+    previous level's down ladder. Being on a level other than the overworld whose entry
+    achievement is missing unlocks it and gives 1 XP (whatever the action)."""
+    level = state.player_level
+    if action == _DESCEND or action == _ASCEND:
+        r, c = int(state.player_position[0]), int(state.player_position[1])
+        item = state.item_map.item(level, r, c)
+        if action == _DESCEND and level < NUM_LEVELS - 1 and (settings.god_mode or (
+                item == ItemType.LADDER_DOWN
+                and state.monsters_killed[level] >= MONSTERS_KILLED_TO_CLEAR_LEVEL)):
+            level += 1
+            state.player_position[:] = state.up_ladders[level]
+        elif action == _ASCEND and level > 0 and (settings.god_mode or item == ItemType.LADDER_UP):
+            level -= 1
+            state.player_position[:] = state.down_ladders[level]
+        state.player_level = level
+    achievement = LEVEL_ACHIEVEMENT[level]
+    if achievement is not None and not state.achievements.item(achievement):
+        unlock(state, achievement)
+        state.player_xp += XP_PER_NEW_LEVEL
+
+
+def craft(state: State, action: int) -> None:
+    """A recipe of ``tables.RECIPES``: its cost paid, at a crafting table (and furnace)."""
+    recipe = RECIPE_BY_ACTION[action]
+    inv = state.inventory
+    if not is_near_block(state, _TABLE) or (recipe.furnace and not is_near_block(state, _FURNACE)):
+        return
+    if any(getattr(inv, item) < n for item, n in recipe.cost.items()):
+        return
+    result = recipe.result
+    if result == "armour":
+        below = np.flatnonzero(inv.armour < recipe.tier)
+        if not below.size:
+            return
+        inv.armour[below[0]] = recipe.tier
+        unlock(state, recipe.achievement)
+    elif result in ("pickaxe", "sword"):
+        if getattr(inv, result) >= recipe.tier:
+            return
+        setattr(inv, result, recipe.tier)
+    else:   # arrows, torches
+        if getattr(inv, result) >= STACK_LIMIT:
+            return
+        setattr(inv, result, getattr(inv, result) + recipe.amount)
+    for item, n in recipe.cost.items():
+        setattr(inv, item, getattr(inv, item) - n)
+
+
+def do(state: State, settings, draws) -> None:
+    """DO on the facing cell: attack a mob there (then nothing else happens); otherwise mine it
+    (``tables.MINING``, with the pickaxe tier), find a sapling on grass, drink water, eat a ripe
+    plant, open a chest, or hit the vulnerable necromancer."""
+    r, c = facing(state)
+    if not in_bounds(state, r, c):
+        return
+    hit, _ = attack_mob(state, r, c, player_damage_vector(state), True)
+    if hit:
+        return
+    level, inv = state.player_level, state.inventory
+    block = state.map.item(level, r, c)
+    mined = MINING_BY_BLOCK.get(block)
+    if mined is not None:
+        tier, item, left = mined
+        if inv.pickaxe >= tier:
+            state.map[level, r, c] = left
+            if item is not None:
+                setattr(inv, item, getattr(inv, item) + 1)
+    elif block == _GRASS:
+        if draws.random() < SAPLING_CHANCE:
+            inv.sapling += 1
+    elif block in _DRINK_BLOCKS:
+        state.player_drink = min(max_drink(state.player_dexterity), state.player_drink + 1)
+        state.player_thirst = 0.0
+        unlock(state, Achievement.COLLECT_DRINK)
+    elif block == _RIPE:
+        eat_plant(state, r, c)
+    elif block == _CHEST:
+        open_chest(state, r, c, draws)
+    elif block == _NECRO:
+        if state.player_level == BOSS_LEVEL and is_boss_vulnerable(state):
+            state.boss_progress += 1
+            state.boss_timesteps_to_spawn_this_round = BOSS_FIGHT_SPAWN_TURNS
+            unlock(state, Achievement.DAMAGE_NECROMANCER)
+
+
+def eat_plant(state: State, r: int, c: int) -> None:
+    """A ripe plant becomes a (growing) plant again: food +4, hunger 0. Upstream resets the age
+    of the growing-plant slot at that position, or slot 0 when none is there."""
+    state.map[state.player_level, r, c] = _PLANT
+    state.player_food = min(max_food(state.player_dexterity), state.player_food + RIPE_PLANT_FOOD)
+    state.player_hunger = 0.0
+    unlock(state, Achievement.EAT_PLANT)
+    at = np.flatnonzero((state.growing_plants_positions[:, 0] == r)
+                        & (state.growing_plants_positions[:, 1] == c))
+    state.growing_plants_age[at[0] if at.size else 0] = 0
+
+
+def _amount(draws, low: int, high: int) -> int:
+    return low + draws.below(high - low + 1)
+
+
+def _weighted(draws, weights) -> int:
+    x, total = draws.random(), 0.0
+    for i, w in enumerate(weights):
+        total += w
+        if x < total:
+            return i
+    return len(weights) - 1
+
+
+def open_chest(state: State, r: int, c: int, draws) -> None:
+    """The chest becomes path and gives upstream's loot (``tables.CHEST_*``); the first chest of
+    the dungeon also holds the bow, the first of the sewers or vaults a book."""
+    level, inv = state.player_level, state.inventory
+    state.map[level, r, c] = _PATH
+    chance, low, high = CHEST_TORCH
+    if draws.random() < chance:
+        inv.torches += _amount(draws, low, high)
+    if draws.random() < CHEST_ORE_CHANCE:
+        item, _, low, high = CHEST_ORES[_weighted(draws, [w for _, w, _, _ in CHEST_ORES])]
+        setattr(inv, item, getattr(inv, item) + _amount(draws, low, high))
+    chance, low, high = CHEST_POTION
+    if draws.random() < chance:
+        inv.potions[draws.below(len(inv.potions))] += _amount(draws, low, high)
+    chance, low, high = CHEST_ARROWS
+    if draws.random() < chance:
+        inv.arrows += _amount(draws, low, high)
+    if draws.random() < CHEST_TOOL_CHANCE:
+        tool = ("pickaxe", "sword")[draws.below(2)]
+        tier = 1 + _weighted(draws, CHEST_TOOL_TIER_WEIGHTS)
+        setattr(inv, tool, max(tier, getattr(inv, tool)))
+    first = not state.chests_opened[level]
+    if first and level == BOW_CHEST_LEVEL:
+        inv.bow = 1
+    if first and level in BOOK_CHEST_LEVELS:
+        inv.books += 1
+    np.minimum(inv.potions, STACK_LIMIT, out=inv.potions)
+    state.chests_opened[level] = True
+    unlock(state, Achievement.OPEN_CHEST)
+
+
+def add_growing_plant(state: State, r: int, c: int) -> None:
+    free = np.flatnonzero(~state.growing_plants_mask)
+    if free.size:
+        i = free[0]
+        state.growing_plants_positions[i] = (r, c)
+        state.growing_plants_age[i] = 0
+        state.growing_plants_mask[i] = True
+
+
+def place(state: State, action: int) -> None:
+    """Place a table (2 wood), furnace (1 stone), stone (1 stone; also onto water), plant (a
+    sapling, onto grass) or torch (onto ``CAN_PLACE_ITEM`` blocks) on the facing cell, which
+    must be in bounds, without a mob, and (but for those exceptions) neither solid nor holding
+    an item. A torch adds its light to the level's light map."""
+    r, c = facing(state)
+    if not in_bounds(state, r, c) or is_in_mob(state, state.player_level, r, c):
+        return
+    level, inv = state.player_level, state.inventory
+    item_name, cost, block, achievement = _PLACING[action]
+    if getattr(inv, item_name) < cost:
+        return
+    here = state.map.item(level, r, c)
+    has_item = state.item_map.item(level, r, c) != ItemType.NONE
+    if action == Action.PLACE_TORCH:
+        if not CAN_PLACE_ITEM[here] or has_item:
+            return
+        state.item_map[level, r, c] = ItemType.TORCH
+        add_torch_light(state, level, r, c)
+    elif action == Action.PLACE_PLANT:
+        if here != _GRASS or has_item:
+            return
+        add_growing_plant(state, r, c)
+    elif action == Action.PLACE_STONE:
+        if here != _WATER and (IS_SOLID[here] or has_item):
+            return
+    elif IS_SOLID[here] or has_item:
+        return
+    if block is not None:
+        state.map[level, r, c] = block
+    setattr(inv, item_name, getattr(inv, item_name) - cost)
+    unlock(state, achievement)
+
+
+def add_torch_light(state: State, level: int, r: int, c: int) -> None:
+    """Add the torch's 9x9 light (1 - distance / 5) around (r, c), clipped to [0, 1]."""
+    h = TORCH_LIGHT_HALF
+    rows, cols = state.map.shape[1:]
+    r0, r1, c0, c1 = max(r - h, 0), min(r + h + 1, rows), max(c - h, 0), min(c + h + 1, cols)
+    patch = TORCH_LIGHT_MAP[r0 - (r - h):r1 - (r - h), c0 - (c - h):c1 - (c - h)]
+    area = state.light_map[level, r0:r1, c0:c1]
+    np.clip(area + patch, 0.0, 1.0, out=area)
+
+
+def _spawn_player_projectile(state: State, kind: int) -> None:
+    level = state.player_level
+    i = int(np.argmin(state.player_projectiles.mask[level]))
+    p = state.player_projectiles
+    p.position[level, i] = state.player_position
+    p.mask[level, i] = True
+    p.type_id[level, i] = kind
+    state.player_projectile_directions[level, i] = _DIR[state.player_direction]
+
+
+def _projectile_slot_free(state: State) -> bool:
+    return int(state.player_projectiles.mask[state.player_level].sum()) < MAX_PLAYER_PROJECTILES
+
+
+def shoot_arrow(state: State) -> None:
+    """With a bow, an arrow and a free projectile slot: an arrow starts at the player's cell,
+    flying the way the player faces (``mobs.update`` moves it)."""
+    inv = state.inventory
+    if inv.bow >= 1 and inv.arrows >= 1 and _projectile_slot_free(state):
+        _spawn_player_projectile(state, int(PLAYER_ARROW))
+        inv.arrows -= 1
+        unlock(state, Achievement.FIRE_BOW)
+
+
+def cast_spell(state: State, action: int) -> None:
+    """A learned spell with 2 mana and a free projectile slot: a fireball / iceball starts at
+    the player's cell."""
+    index, kind, achievement = _SPELLS[action]
+    if (state.learned_spells[index] and state.player_mana >= SPELL_MANA_COST
+            and _projectile_slot_free(state)):
+        _spawn_player_projectile(state, kind)
+        state.player_mana -= SPELL_MANA_COST
+        unlock(state, achievement)
+
+
+def drink_potion(state: State, action: int) -> None:
+    """A potion of the action's colour has the effect ``potion_mapping`` gives that colour
+    (``tables.POTION_EFFECTS``); vitals are clipped at the end of the step."""
+    colour = _POTION_INDEX[action]
+    potions = state.inventory.potions
+    if potions[colour] <= 0:
+        return
+    potions[colour] -= 1
+    vital, change = POTION_EFFECTS[int(state.potion_mapping[colour])]
+    name = "player_" + vital
+    setattr(state, name, getattr(state, name) + change)
+    unlock(state, Achievement.DRINK_POTION)
+
+
+def read_book(state: State, draws) -> None:
+    """A book teaches a spell not yet learned, drawn evenly (upstream draws among both when
+    both are known; the book is spent either way)."""
+    if state.inventory.books <= 0:
+        return
+    unknown = np.flatnonzero(~state.learned_spells)
+    if unknown.size == 0:
+        unknown = np.arange(len(state.learned_spells))
+    spell = int(unknown[draws.below(unknown.size)]) if unknown.size > 1 else int(unknown[0])
+    state.inventory.books -= 1
+    state.learned_spells[spell] = True
+    unlock(state, LEARN_SPELL_ACHIEVEMENT[spell])
+
+
+def enchant(state: State, action: int, draws) -> None:
+    """Facing an enchantment table, with 9 mana and its gem (ruby: fire, sapphire: ice), the
+    sword / bow / armour (a piece drawn among the unenchanted ones, or if none among those of
+    the other element) takes the table's element."""
+    r, c = facing(state)
+    table = _ENCHANT_TABLES.get(state.map.item(state.player_level, r, c)) if in_bounds(
+        state, r, c) else None
+    if table is None:
+        return
+    element, gem = table
+    inv = state.inventory
+    if state.player_mana < ENCHANT_MANA_COST or getattr(inv, gem) < 1:
+        return
+    if action == Action.ENCHANT_SWORD:
+        if inv.sword <= 0:
+            return
+        state.sword_enchantment = element
+        unlock(state, Achievement.ENCHANT_SWORD)
+    elif action == Action.ENCHANT_BOW:
+        if inv.bow <= 0:
+            return
+        state.bow_enchantment = element
+    else:
+        if inv.armour.sum() <= 0:
+            return
+        ench = state.armour_enchantments
+        targets = np.flatnonzero(ench == 0)
+        if not targets.size:
+            targets = np.flatnonzero(ench != element)
+        if targets.size:   # (all pieces already of this element: upstream changes nothing)
+            ench[targets[draws.below(targets.size)] if targets.size > 1 else targets[0]] = element
+        unlock(state, Achievement.ENCHANT_ARMOUR)
+    setattr(inv, gem, getattr(inv, gem) - 1)
+    state.player_mana -= ENCHANT_MANA_COST
+
+
+def boss_round(state: State) -> None:
+    """Upstream boss_logic: the necromancer is defeated after 8 hits; on the boss level the
+    spawn-wave counter runs down every step."""
+    if state.boss_progress >= NUM_LEVELS - 1:
+        unlock(state, Achievement.DEFEAT_NECROMANCER)
+    if state.player_level == BOSS_LEVEL:
+        state.boss_timesteps_to_spawn_this_round -= 1
+
+
+_ATTRIBUTES = {int(Action.LEVEL_UP_DEXTERITY): "player_dexterity",
+               int(Action.LEVEL_UP_STRENGTH): "player_strength",
+               int(Action.LEVEL_UP_INTELLIGENCE): "player_intelligence"}
+
+
+def level_up(state: State, action: int, settings) -> None:
+    """One XP raises an attribute below ``settings.max_attribute`` by one."""
+    name = _ATTRIBUTES[action]
+    if state.player_xp >= 1 and getattr(state, name) < settings.max_attribute:
+        setattr(state, name, getattr(state, name) + 1)
+        state.player_xp -= 1
+
+
+def move(state: State, action: int, settings) -> None:
+    """Face the move's direction; step there if the player can enter the cell (not solid, no
+    mob, not water or lava), or always in god mode."""
+    dr, dc = MOVES[action]
+    r, c = int(state.player_position[0]) + dr, int(state.player_position[1]) + dc
+    if settings.god_mode or player_can_enter(state, r, c):
+        state.player_position[0], state.player_position[1] = r, c
+    state.player_direction = action
+
+
+def grow_plants(state: State) -> None:
+    """Growing plants (level 0) age by one (a free slot's age stays 0); at ``PLANT_RIPE_AGE``
+    their block is a ripe plant."""
+    mask = state.growing_plants_mask
+    age = state.growing_plants_age
+    if not mask.tobytes().strip(b"\x00"):          # no plant growing (the common case)
+        if age.tobytes().strip(b"\x00"):
+            age[:] = 0
+        return
+    age += 1
+    age *= mask
+    if age.max() >= PLANT_RIPE_AGE:
+        for i in np.flatnonzero(age >= PLANT_RIPE_AGE):
+            r, c = state.growing_plants_positions[i]
+            state.map[0, r, c] = _RIPE
+
+
+def update_intrinsics(state: State, action: int, settings) -> None:
+    """Sleep and rest start and end; hunger, thirst and fatigue accumulate (slower with
+    dexterity, hunger and thirst at half speed asleep) and cost food, drink, energy at their
+    limits; sleep restores energy; health recovers while food, drink and energy (or sleep) last
+    and is lost otherwise; mana recovers (faster with intelligence, double asleep). In the boss
+    fight the needs do not fall and health is not lost. ``settings.intrinsics`` off freezes
+    hunger, thirst and fatigue (food, drink and energy then stay as they are)."""
+    dex = state.player_dexterity
+    if action == _SLEEP and state.player_energy < max_energy(dex):
+        state.is_sleeping = True
+    if state.is_sleeping and state.player_energy >= max_energy(dex):
+        state.is_sleeping = False
+        unlock(state, Achievement.WAKE_UP)
+    if action == _REST and state.player_health < max_health(state.player_strength):
+        state.is_resting = True
+    if state.is_resting and (state.player_health >= max_health(state.player_strength)
+                             or state.player_food <= 0 or state.player_drink <= 0):
+        state.is_resting = False
+
+    asleep = state.is_sleeping
+    fall = 0 if state.player_level == BOSS_LEVEL else 1
+    if settings.intrinsics:
+        decay = 1.0 - DEXTERITY_DECAY * (dex - 1)
+        rate = (SLEEP_INTRINSIC_RATE if asleep else 1.0) * decay
+        state.player_hunger += rate
+        if state.player_hunger > HUNGER_LIMIT:
+            state.player_food = max(state.player_food - fall, 0)
+            state.player_hunger = 0.0
+        state.player_thirst += rate
+        if state.player_thirst > THIRST_LIMIT:
+            state.player_drink = max(state.player_drink - fall, 0)
+            state.player_thirst = 0.0
+        energy = state.player_energy
+        fatigue = min(state.player_fatigue - 1, 0) if asleep else state.player_fatigue + decay
+        if fatigue > FATIGUE_LIMIT:
+            state.player_energy = max(energy - fall, 0)
+            fatigue = 0.0
+        if fatigue < FATIGUE_RESTED:
+            state.player_energy = min(energy + 1, max_energy(dex))
+            fatigue = 0.0
+        state.player_fatigue = float(fatigue)
+
+    needs_met = (state.player_food > 0 and state.player_drink > 0
+                 and (state.player_energy > 0 or asleep))
+    if needs_met:
+        recover = RECOVER_RATE[asleep]
+    else:
+        recover = DERECOVER_RATE[asleep] * fall
+    state.player_recover += recover
+    if state.player_recover > RECOVER_LIMIT:
+        state.player_health = min(state.player_health + 1, max_health(state.player_strength))
+        state.player_recover = 0.0
+    if state.player_recover < DERECOVER_LIMIT:
+        state.player_health = state.player_health - 1
+        state.player_recover = 0.0
+
+    mana = (state.player_recover_mana + MANA_RATE[asleep]) * (
+        1 + INTELLIGENCE_MANA_BONUS * (state.player_intelligence - 1))
+    if mana > MANA_LIMIT:
+        state.player_mana += 1
+        mana = 0.0
+    state.player_recover_mana = float(mana)
+
+
+_COUNTS = ("wood", "stone", "coal", "iron", "diamond", "sapling", "pickaxe", "sword", "bow",
+           "arrows", "torches", "ruby", "sapphire", "books")
+
+
+def clip_vitals(state: State, settings) -> None:
+    """Inventory counts at most 99; vitals within [0, maximum] (the maxima grow with the
+    attributes); god mode keeps health at least 9."""
+    inv = state.inventory
+    if max(inv.wood, inv.stone, inv.coal, inv.iron, inv.diamond, inv.sapling, inv.arrows,
+           inv.torches, inv.ruby, inv.sapphire, inv.books, inv.pickaxe, inv.sword,
+           inv.bow) > STACK_LIMIT:
+        for name in _COUNTS:
+            if getattr(inv, name) > STACK_LIMIT:
+                setattr(inv, name, STACK_LIMIT)
+    # (armour is at most 2; potions only grow in chests, whose loot clips them)
+    dex = state.player_dexterity
+    low = GOD_MODE_MIN_HEALTH if settings.god_mode else 0
+    health, top = state.player_health, max_health(state.player_strength)
+    if health < low or health > top:
+        state.player_health = float(min(max(health, low), top))
+    top = 7 + 2 * dex      # max food = max drink = max energy
+    if not (0 <= state.player_food <= top):
+        state.player_food = min(max(state.player_food, 0), top)
+    if not (0 <= state.player_drink <= top):
+        state.player_drink = min(max(state.player_drink, 0), top)
+    if not (0 <= state.player_energy <= top):
+        state.player_energy = min(max(state.player_energy, 0), top)
+    top = max_mana(state.player_intelligence)
+    if not (0 <= state.player_mana <= top):
+        state.player_mana = min(max(state.player_mana, 0), top)
+
+
+_INVENTORY_ACHIEVEMENTS = tuple((name, least, int(a)) for name, least, a in INVENTORY_ACHIEVEMENTS)
+
+
+def inventory_achievements(state: State) -> None:
+    """Collecting and crafting achievements read off the inventory (``INVENTORY_ACHIEVEMENTS``),
+    so a tool found in a chest counts as made."""
+    inv, ach = state.inventory, state.achievements
+    for name, least, achievement in _INVENTORY_ACHIEVEMENTS:
+        if getattr(inv, name) >= least:
+            ach[achievement] = True
+
+
+_CRAFT = frozenset(RECIPE_BY_ACTION)
+_PLACE = frozenset(_PLACING)
+_SHOOT = int(Action.SHOOT_ARROW)
+_CAST = frozenset(_SPELLS)
+_POTION = frozenset(_POTION_INDEX)
+_READ = int(Action.READ_BOOK)
+_ENCHANT = frozenset(int(a) for a in (Action.ENCHANT_SWORD, Action.ENCHANT_ARMOUR,
+                                      Action.ENCHANT_BOW))
+_LEVEL_UP = frozenset(_ATTRIBUTES)
+
+
+def step(state: State, action: int, settings, draws) -> float:
+    """One upstream step (see the module docstring); returns upstream's reward."""
+    before = state.achievements.tobytes()
+    health = state.player_health
+    action = int(action)
+    if state.is_sleeping or state.is_resting:
+        action = _NOOP
+
+    change_floor(state, action, settings)
+    if action in _CRAFT:
+        craft(state, action)
+    elif action == _DO:
+        do(state, settings, draws)
+    elif action in _PLACE:
+        place(state, action)
+    elif action == _SHOOT:
+        shoot_arrow(state)
+    elif action in _CAST:
+        cast_spell(state, action)
+    elif action in _POTION:
+        drink_potion(state, action)
+    elif action == _READ:
+        read_book(state, draws)
+    elif action in _ENCHANT:
+        enchant(state, action, draws)
+    boss_round(state)
+    if action in _LEVEL_UP:
+        level_up(state, action, settings)
+    if action in MOVES:
+        move(state, action, settings)
+
+    mobs.update(state, settings, draws)
+    if settings.spawning:
+        mobs.spawn(state, settings, draws)
+
+    grow_plants(state)
+    update_intrinsics(state, action, settings)
+    clip_vitals(state, settings)
+    inventory_achievements(state)
+
+    reward = 0.0
+    if state.achievements.tobytes() != before:
+        old = np.frombuffer(before, dtype=bool)
+        reward = float(_WEIGHTS[state.achievements & ~old].sum())
+    reward += (state.player_health - health) * 0.1
+    state.timestep += 1
+    state.light_level = light_level(state.timestep, settings.day_length) if settings.daylight else 1.0
+    return reward
