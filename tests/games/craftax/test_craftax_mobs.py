@@ -519,7 +519,56 @@ def upstream():
 
     def run(state: State, seed: int = 0) -> State:
         return State.from_upstream(step(jax.random.PRNGKey(seed), to_upstream(state)))
+
+    def positions(key, s):
+        out = update_mobs(key, s, params, static)
+        return {name: getattr(out, name).position[s.player_level]
+                for name in ("melee_mobs", "passive_mobs", "ranged_mobs")}
+    many = jax.jit(jax.vmap(positions, in_axes=(0, None)))
+
+    def run_many(state: State, samples: int):
+        """The live mobs' positions after one update, per sample: {(group, slot): (n, 2)}."""
+        out = many(jax.random.split(jax.random.PRNGKey(1), samples), to_upstream(state))
+        return {(name, slot): np.asarray(out[name])[:, slot]
+                for name, slot in live_slots(state)}
+    run.many = run_many
     return run
+
+
+def live_slots(state: State):
+    return [(name, int(slot)) for name in ("melee_mobs", "passive_mobs", "ranged_mobs")
+            for slot in np.flatnonzero(getattr(state, name).mask[state.player_level])]
+
+
+def test_random_moves_follow_the_packages_probabilities(upstream):
+    """Chasing (75%, along the longer axis, ties evenly), wandering, keeping a ranged
+    distance (15% of turns): our next-position distributions against the package's."""
+    state = blank_state()
+    put_mob(state, MobType.MELEE, (21, 28), slot=0)        # off-axis: chases along columns
+    put_mob(state, MobType.MELEE, (20, 20), slot=1)        # a tie: either axis
+    put_mob(state, MobType.MELEE, (24, 36), slot=2)        # 12 away: wanders only
+    put_mob(state, MobType.PASSIVE, (30, 30))
+    put_mob(state, MobType.RANGED, (24, 16), slot=0, cooldown=9)   # far: comes closer
+    put_mob(state, MobType.RANGED, (26, 25), slot=1, cooldown=9)   # too close: backs off
+    samples = 3000
+    theirs = upstream.many(state, samples)
+    ours = {key: [] for key in theirs}
+    rng = draws(12)
+    for _ in range(samples):
+        copy = state.copy()
+        mobs.update(copy, SETTINGS, rng)
+        for name, slot in ours:
+            ours[(name, slot)].append(tuple(getattr(copy, name).position[0, slot]))
+    for key, positions in theirs.items():
+        a = {}
+        for p in map(tuple, positions.tolist()):
+            a[p] = a.get(p, 0) + 1 / samples
+        b = {}
+        for p in ours[key]:
+            p = (int(p[0]), int(p[1]))
+            b[p] = b.get(p, 0) + 1 / samples
+        distance = sum(abs(a.get(p, 0) - b.get(p, 0)) for p in set(a) | set(b)) / 2
+        assert distance < 0.04, (key, sorted(a.items()), sorted(b.items()))
 
 
 def assert_same_outcome(ours: State, theirs: State) -> None:
