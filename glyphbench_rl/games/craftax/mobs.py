@@ -107,9 +107,9 @@ def damage_to_player(state: State, damage: tuple) -> float:
     """Upstream's get_damage_done_to_player: armour blocks 10% physical damage per tier (summed
     over the four pieces), each fire (ice) enchanted piece 20% of fire (ice) damage; damage is
     x1.5 on the boss level."""
-    armour, enchant = state.inventory.armour, state.armour_enchantments
-    defence = (0.1 * int(armour.sum()), 0.2 * int((enchant == 1).sum()),
-               0.2 * int((enchant == 2).sum()))
+    enchant = state.armour_enchantments.tolist()
+    defence = (0.1 * sum(state.inventory.armour.tolist()), 0.2 * enchant.count(1),
+               0.2 * enchant.count(2))
     scale = 1.0 + BOSS_FIGHT_EXTRA_DAMAGE if state.player_level == BOSS_LEVEL else 1.0
     return sum((1.0 - d) * x * scale for d, x in zip(defence, damage))
 
@@ -181,163 +181,162 @@ def attack_mob(state: State, row: int, col: int, damage: tuple, can_eat: bool) -
 # ---------------------------------------------------------------------------------------------
 # Movement
 
-def _can_enter(state: State, level_map: np.ndarray, occupied: np.ndarray, row: int, col: int,
-               collision: tuple) -> bool:
-    """Upstream's is_position_in_bounds_not_in_mob_not_colliding."""
-    rows, cols = level_map.shape
-    if not (0 <= row < rows and 0 <= col < cols):
-        return False
-    if occupied[row, col] or (row == state.player_position[0] and col == state.player_position[1]):
-        return False
-    block = int(level_map[row, col])
-    if _SOLID[block]:
-        return False
-    if block == _WATER:
-        return not collision[1]
-    if block == _LAVA:
-        return not collision[2]
-    return not collision[0]
+class _Turn:
+    """What every mover of one update reads: the player's level, its map and mob map (views,
+    written in place), the player's cell, and the despawn rule."""
+    __slots__ = ("state", "draws", "level", "map", "occupied", "rows", "cols", "p_row", "p_col",
+                 "boss", "despawn")
+
+    def __init__(self, state: State, settings: Settings, draws) -> None:
+        self.state, self.draws = state, draws
+        self.level = level = state.player_level
+        self.map, self.occupied = state.map[level], state.mob_map[level]
+        self.rows, self.cols = self.map.shape
+        self.p_row, self.p_col = state.player_position.tolist()
+        self.boss = level == BOSS_LEVEL
+        # monsters beyond this Manhattan distance (measured before they move) vanish; upstream
+        # keeps the boss level's monsters (not its passive mobs), and we keep all when
+        # spawning is switched off
+        self.despawn = settings.mob_despawn_distance if settings.spawning else None
+
+    def can_enter(self, row: int, col: int, collision: tuple) -> bool:
+        """Upstream's is_position_in_bounds_not_in_mob_not_colliding."""
+        if not (0 <= row < self.rows and 0 <= col < self.cols):
+            return False
+        if self.occupied.item(row, col) or (row == self.p_row and col == self.p_col):
+            return False
+        block = self.map.item(row, col)
+        if _SOLID[block]:
+            return False
+        if block == _WATER:
+            return not collision[1]
+        if block == _LAVA:
+            return not collision[2]
+        return not collision[0]
+
+    def toward(self, d_row: int, d_col: int) -> tuple[int, int]:
+        """One step toward the player along the axis of the larger distance (a tie: either
+        axis, evenly), upstream's player_move_direction."""
+        a_row, a_col = abs(d_row), abs(d_col)
+        if a_row > a_col or (a_row == a_col and self.draws.below(2) == 0):
+            return (d_row > 0) - (d_row < 0), 0
+        return 0, (d_col > 0) - (d_col < 0)
+
+    def stays(self, distance: int, monster: bool) -> bool:
+        return (self.despawn is None or distance < self.despawn
+                or (monster and self.boss))
+
+    def relocate(self, group: Mobs, slot: int, old: tuple, new: tuple, alive: bool) -> None:
+        """Write a mob's new cell and life, keeping the mob map exact."""
+        level = self.level
+        if new != old:
+            group.position[level, slot, 0], group.position[level, slot, 1] = new
+        if not alive:
+            group.mask[level, slot] = False
+        self.occupied[old] = False
+        if alive:
+            self.occupied[new] = True
 
 
-def _toward(draws, d_row: int, d_col: int) -> tuple[int, int]:
-    """One step toward the player along the axis of the larger distance (a tie: either axis,
-    evenly), upstream's player_move_direction."""
-    a_row, a_col = abs(d_row), abs(d_col)
-    if a_row > a_col or (a_row == a_col and draws.below(2) == 0):
-        return (d_row > 0) - (d_row < 0), 0
-    return 0, (d_col > 0) - (d_col < 0)
-
-
-def _relocate(state: State, level: int, old: tuple, new: tuple, alive: bool) -> None:
-    """Keep the mob map exact: the mob leaves ``old`` and, if still alive, stands on ``new``."""
-    state.mob_map[level, old[0], old[1]] = False
-    if alive:
-        state.mob_map[level, new[0], new[1]] = True
-
-
-def _move_melee(state: State, settings: Settings, draws, slot: int) -> None:
-    level = state.player_level
-    mobs = state.melee_mobs
-    row, col = int(mobs.position[level, slot, 0]), int(mobs.position[level, slot, 1])
-    p_row, p_col = int(state.player_position[0]), int(state.player_position[1])
-    d_row, d_col = p_row - row, p_col - col
+def _move_melee(turn: _Turn, slot: int, row: int, col: int, type_id: int, cooldown: int) -> int:
+    """Chase the player (within 10, or always on the boss level: 75% of turns) or wander; hit
+    an adjacent player when the cooldown is over. Returns the new cooldown."""
+    d_row, d_col = turn.p_row - row, turn.p_col - col
     distance = abs(d_row) + abs(d_col)
-    fighting_boss = level == BOSS_LEVEL
-
-    if (distance < 10 or fighting_boss) and draws.random() < 0.75:
-        step = _toward(draws, d_row, d_col)
+    draws = turn.draws
+    if (distance < 10 or turn.boss) and draws.random() < 0.75:
+        step = turn.toward(d_row, d_col)
     else:
         step = _STEPS[draws.below(4)]
-    cooldown = int(mobs.attack_cooldown[level, slot])
+    target = (row, col)
     if distance == 1 and cooldown <= 0:
-        type_id = int(mobs.type_id[level, slot])
-        hurt_player(state, MOB_TYPE_DAMAGE_MAPPING[type_id][MobType.MELEE], melee=True)
-        mobs.attack_cooldown[level, slot] = MELEE_ATTACK_COOLDOWN
-        target = (row, col)
+        hurt_player(turn.state, MOB_TYPE_DAMAGE_MAPPING[type_id][MobType.MELEE], melee=True)
+        cooldown = MELEE_ATTACK_COOLDOWN
     else:
-        mobs.attack_cooldown[level, slot] = cooldown - 1
-        target = (row + step[0], col + step[1])
-        collision = MOB_TYPE_COLLISION_MAPPING[int(mobs.type_id[level, slot])][MobType.MELEE]
-        if not _can_enter(state, state.map[level], state.mob_map[level], *target, collision):
-            target = (row, col)
-    stays = fighting_boss or not settings.spawning or distance < settings.mob_despawn_distance
-    mobs.position[level, slot] = target
-    mobs.mask[level, slot] = stays
-    _relocate(state, level, (row, col), target, stays)
+        cooldown -= 1
+        if turn.can_enter(row + step[0], col + step[1],
+                          MOB_TYPE_COLLISION_MAPPING[type_id][MobType.MELEE]):
+            target = (row + step[0], col + step[1])
+    turn.relocate(turn.state.melee_mobs, slot, (row, col), target, turn.stays(distance, True))
+    return cooldown
 
 
-def _move_passive(state: State, settings: Settings, draws, slot: int) -> None:
-    level = state.player_level
-    mobs = state.passive_mobs
-    row, col = int(mobs.position[level, slot, 0]), int(mobs.position[level, slot, 1])
-    choice = draws.below(8)            # upstream: DIRECTIONS[1:9], four steps and four stays
+def _move_passive(turn: _Turn, slot: int, row: int, col: int, type_id: int) -> None:
+    """Wander: each of the four steps with 1/8, else stay (upstream's DIRECTIONS[1:9])."""
+    choice = turn.draws.below(8)
     target = (row, col)
     if choice < 4:
         step = _STEPS[choice]
-        collision = MOB_TYPE_COLLISION_MAPPING[int(mobs.type_id[level, slot])][MobType.PASSIVE]
-        if _can_enter(state, state.map[level], state.mob_map[level], row + step[0],
-                      col + step[1], collision):
+        if turn.can_enter(row + step[0], col + step[1],
+                          MOB_TYPE_COLLISION_MAPPING[type_id][MobType.PASSIVE]):
             target = (row + step[0], col + step[1])
-    distance = abs(int(state.player_position[0]) - row) + abs(int(state.player_position[1]) - col)
-    stays = not settings.spawning or distance < settings.mob_despawn_distance  # (no boss exception)
-    mobs.position[level, slot] = target
-    mobs.mask[level, slot] = stays
-    _relocate(state, level, (row, col), target, stays)
+    distance = abs(turn.p_row - row) + abs(turn.p_col - col)
+    turn.relocate(turn.state.passive_mobs, slot, (row, col), target, turn.stays(distance, False))
 
 
-def _move_ranged(state: State, settings: Settings, draws, slot: int) -> None:
-    level = state.player_level
-    mobs = state.ranged_mobs
-    row, col = int(mobs.position[level, slot, 0]), int(mobs.position[level, slot, 1])
-    p_row, p_col = int(state.player_position[0]), int(state.player_position[1])
-    d_row, d_col = p_row - row, p_col - col
+def _move_ranged(turn: _Turn, slot: int, row: int, col: int, type_id: int, cooldown: int) -> int:
+    """Keep a shooting distance (15% of turns: closer when 6+ away, back when 3 or less; else
+    wander); shoot at range 4-5, or when it wants to back off but cannot. Returns the new
+    cooldown."""
+    d_row, d_col = turn.p_row - row, turn.p_col - col
     distance = abs(d_row) + abs(d_col)
-    fighting_boss = level == BOSS_LEVEL
-    type_id = int(mobs.type_id[level, slot])
-    collision = MOB_TYPE_COLLISION_MAPPING[type_id][MobType.RANGED]
-    level_map, occupied = state.map[level], state.mob_map[level]
-
-    toward = _toward(draws, d_row, d_col)
+    draws = turn.draws
+    toward = turn.toward(d_row, d_col)
     too_close = distance <= 3
-    # 15% of turns it keeps its distance (closer when 6+ away, back when 3 or less), else wanders
     if draws.random() > 0.85 and (distance >= 6 or too_close):
         sign = -1 if too_close else 1
         target = (row + sign * toward[0], col + sign * toward[1])
     else:
         step = _STEPS[draws.below(4)]
         target = (row + step[0], col + step[1])
-    can_move = _can_enter(state, level_map, occupied, *target, collision)
-
-    cooldown = int(mobs.attack_cooldown[level, slot])
-    # it shoots at range 4-5, or when it wants to back off but cannot
+    can_move = turn.can_enter(*target, MOB_TYPE_COLLISION_MAPPING[type_id][MobType.RANGED])
     if cooldown <= 0 and (4 <= distance <= 5 or (too_close and not can_move)):
-        _shoot(state, level, row, col, toward, RANGED_MOB_TYPE_TO_PROJECTILE_TYPE_MAPPING[type_id])
-        mobs.attack_cooldown[level, slot] = RANGED_ATTACK_COOLDOWN
+        _shoot(turn, row, col, toward, RANGED_MOB_TYPE_TO_PROJECTILE_TYPE_MAPPING[type_id])
+        cooldown = RANGED_ATTACK_COOLDOWN
         target = (row, col)
     else:
-        mobs.attack_cooldown[level, slot] = cooldown - 1
+        cooldown -= 1
         if not can_move:
             target = (row, col)
-    stays = fighting_boss or not settings.spawning or distance < settings.mob_despawn_distance
-    mobs.position[level, slot] = target
-    mobs.mask[level, slot] = stays
-    _relocate(state, level, (row, col), target, stays)
+    turn.relocate(turn.state.ranged_mobs, slot, (row, col), target, turn.stays(distance, True))
+    return cooldown
 
 
-def _shoot(state: State, level: int, row: int, col: int, direction: tuple, kind: int) -> None:
+def _shoot(turn: _Turn, row: int, col: int, direction: tuple, kind: int) -> None:
     """A mob projectile in the first free slot, if any (upstream's spawn_projectile)."""
+    state, level = turn.state, turn.level
     projectiles = state.mob_projectiles
-    free = np.flatnonzero(~projectiles.mask[level])
-    if free.size == 0:
+    mask = projectiles.mask[level].tolist()
+    if all(mask):
         return
-    slot = int(free[0])
+    slot = mask.index(False)
     projectiles.position[level, slot] = (row, col)
     projectiles.mask[level, slot] = True
     projectiles.type_id[level, slot] = int(kind)
     state.mob_projectile_directions[level, slot] = direction
 
 
-def _move_mob_projectile(state: State, slot: int) -> None:
-    level = state.player_level
+def _move_mob_projectile(turn: _Turn, slot: int) -> None:
+    """Fly one cell; hit the player (on its cell or the next), stop at solid blocks (not
+    water or lava), mobs and the map's edge; break a table or furnace in its way."""
+    state, level = turn.state, turn.level
     projectiles = state.mob_projectiles
-    row, col = int(projectiles.position[level, slot, 0]), int(projectiles.position[level, slot, 1])
-    d_row, d_col = (int(x) for x in state.mob_projectile_directions[level, slot])
+    row, col = projectiles.position[level, slot].tolist()
+    d_row, d_col = state.mob_projectile_directions[level, slot].tolist()
     new_row, new_col = row + d_row, col + d_col
-    p_row, p_col = int(state.player_position[0]), int(state.player_position[1])
-    level_map = state.map[level]
-    rows, cols = level_map.shape
+    p_row, p_col = turn.p_row, turn.p_col
     hit_player = (row == p_row and col == p_col) or (new_row == p_row and new_col == p_col)
-    flies_on = 0 <= new_row < rows and 0 <= new_col < cols
+    flies_on = 0 <= new_row < turn.rows and 0 <= new_col < turn.cols
     if flies_on:
-        block = int(level_map[new_row, new_col])
-        # it stops at solid blocks (it flies over water and lava) and at mobs
-        flies_on = not (hit_player or _SOLID[block] or state.mob_map[level, new_row, new_col])
-        if block in _BREAKABLE:       # a table or furnace in its way breaks
-            level_map[new_row, new_col] = BlockType.PATH
+        block = turn.map.item(new_row, new_col)
+        flies_on = not (hit_player or _SOLID[block] or turn.occupied.item(new_row, new_col))
+        if block in _BREAKABLE:
+            turn.map[new_row, new_col] = BlockType.PATH
     if hit_player:
-        hurt_player(state, PROJECTILE_DAMAGE[int(projectiles.type_id[level, slot])])
-    projectiles.position[level, slot] = (new_row, new_col)
-    projectiles.mask[level, slot] = flies_on
+        hurt_player(state, PROJECTILE_DAMAGE[projectiles.type_id.item(level, slot)])
+    projectiles.position[level, slot, 0], projectiles.position[level, slot, 1] = new_row, new_col
+    if not flies_on:
+        projectiles.mask[level, slot] = False
 
 
 def player_projectile_damage(state: State, kind: int) -> tuple:
@@ -356,44 +355,81 @@ def player_projectile_damage(state: State, kind: int) -> tuple:
     return tuple(x * scale for x in damage)
 
 
-def _move_player_projectile(state: State, slot: int) -> None:
-    level = state.player_level
+def _move_player_projectile(turn: _Turn, slot: int) -> None:
+    """Strike a mob on its own cell (one stepped onto it), else on its next cell; fly on
+    unless it struck, left the map or met a solid block (it crosses water and lava)."""
+    state, level = turn.state, turn.level
     projectiles = state.player_projectiles
-    row, col = int(projectiles.position[level, slot, 0]), int(projectiles.position[level, slot, 1])
-    d_row, d_col = (int(x) for x in state.player_projectile_directions[level, slot])
+    row, col = projectiles.position[level, slot].tolist()
+    d_row, d_col = state.player_projectile_directions[level, slot].tolist()
     new_row, new_col = row + d_row, col + d_col
-    damage = player_projectile_damage(state, int(projectiles.type_id[level, slot]))
-    # it strikes a mob that stepped onto it, else a mob on its next cell
-    hit = (attack_mob(state, row, col, damage, False)[0]
-           or attack_mob(state, new_row, new_col, damage, False)[0])
-    rows, cols = state.map.shape[1:]
-    flies_on = (not hit and 0 <= new_row < rows and 0 <= new_col < cols
-                and not _SOLID[int(state.map[level, new_row, new_col])])
-    projectiles.position[level, slot] = (new_row, new_col)
-    projectiles.mask[level, slot] = flies_on
+    damage = player_projectile_damage(state, projectiles.type_id.item(level, slot))
+    hit = ((turn.occupied.item(row, col) and attack_mob(state, row, col, damage, False)[0])
+           or (0 <= new_row < turn.rows and 0 <= new_col < turn.cols
+               and turn.occupied.item(new_row, new_col)
+               and attack_mob(state, new_row, new_col, damage, False)[0]))
+    flies_on = (not hit and 0 <= new_row < turn.rows and 0 <= new_col < turn.cols
+                and not _SOLID[turn.map.item(new_row, new_col)])
+    projectiles.position[level, slot, 0], projectiles.position[level, slot, 1] = new_row, new_col
+    if not flies_on:
+        projectiles.mask[level, slot] = False
+
+
+def _move_monsters(turn: _Turn, group: Mobs, mask: list, mover) -> None:
+    """Melee or ranged mobs in slot order; dead slots only count their cooldown down, as
+    upstream (a mob spawned into a slot inherits its cooldown)."""
+    level = turn.level
+    positions, types = group.position[level].tolist(), group.type_id[level].tolist()
+    cooldowns = group.attack_cooldown[level].tolist()
+    for slot, alive in enumerate(mask):
+        if alive:
+            row, col = positions[slot]
+            cooldowns[slot] = mover(turn, slot, row, col, types[slot], cooldowns[slot])
+        else:
+            cooldowns[slot] -= 1
+    group.attack_cooldown[level] = cooldowns
+
+
+def _count_down(group: Mobs, level: int) -> None:
+    """Dead slots count their cooldown down too, as upstream (a spawned mob inherits it)."""
+    group.attack_cooldown[level] = [x - 1 for x in group.attack_cooldown[level].tolist()]
 
 
 def update(state: State, settings: Settings, draws) -> None:
     """Upstream's update_mobs on the player's level: melee, passive and ranged mobs in slot
-    order, then mob projectiles, then the player's projectiles. Dead slots only count their
-    attack cooldown down, as upstream."""
+    order, then mob projectiles, then the player's projectiles."""
     level = state.player_level
-    for mobs, mover in ((state.melee_mobs, _move_melee), (state.passive_mobs, _move_passive),
-                        (state.ranged_mobs, _move_ranged)):
-        mask = mobs.mask[level]
-        for slot in range(mask.shape[0]):
-            if mask[slot]:
-                mover(state, settings, draws, slot)
-            elif mobs is not state.passive_mobs:
-                mobs.attack_cooldown[level, slot] -= 1
-    mask = state.mob_projectiles.mask[level]
-    for slot in range(mask.shape[0]):
-        if mask[slot]:
-            _move_mob_projectile(state, slot)
-    mask = state.player_projectiles.mask[level]
-    for slot in range(mask.shape[0]):
-        if mask[slot]:
-            _move_player_projectile(state, slot)
+    melee, ranged = state.melee_mobs, state.ranged_mobs
+    melee_mask, ranged_mask = melee.mask[level].tolist(), ranged.mask[level].tolist()
+    passive_mask = state.passive_mobs.mask[level].tolist()
+    shots = state.mob_projectiles.mask[level].tolist()
+    arrows = state.player_projectiles.mask[level].tolist()
+    if not any(melee_mask + ranged_mask + passive_mask + shots + arrows):
+        _count_down(melee, level)
+        _count_down(ranged, level)
+        return
+    turn = _Turn(state, settings, draws)
+    if any(melee_mask):
+        _move_monsters(turn, melee, melee_mask, _move_melee)
+    else:
+        _count_down(melee, level)
+    if any(passive_mask):
+        passive = state.passive_mobs
+        positions, types = passive.position[level].tolist(), passive.type_id[level].tolist()
+        for slot, alive in enumerate(passive_mask):
+            if alive:
+                _move_passive(turn, slot, positions[slot][0], positions[slot][1], types[slot])
+    if any(ranged_mask):
+        _move_monsters(turn, ranged, ranged_mask, _move_ranged)
+    else:
+        _count_down(ranged, level)
+    # (a projectile a ranged mob shot this turn flies this turn)
+    for slot, alive in enumerate(state.mob_projectiles.mask[level].tolist()):
+        if alive:
+            _move_mob_projectile(turn, slot)
+    for slot, alive in enumerate(arrows):
+        if alive:
+            _move_player_projectile(turn, slot)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -459,7 +495,7 @@ def spawn(state: State, settings: Settings, draws) -> None:
     if boss:
         coeff *= 1000.0 if state.boss_timesteps_to_spawn_this_round >= 1 else 0.0
 
-    if (not boss and int(state.passive_mobs.mask[level].sum()) < MAX_PASSIVE
+    if (not boss and sum(state.passive_mobs.mask[level].tolist()) < MAX_PASSIVE
             and draws.random() < chances[0]):
         cell = _spawn_cell(state, _SPAWN_GROUND, 9, far, draws)
         if cell is not None:
@@ -470,14 +506,14 @@ def spawn(state: State, settings: Settings, draws) -> None:
     mob_row = FLOOR_MOB_MAPPING[state.boss_progress if boss else level]
 
     melee_chance = chances[1] + chances[3] * (1.0 - state.light_level) ** 2
-    if (int(state.melee_mobs.mask[level].sum()) < MAX_MELEE
+    if (sum(state.melee_mobs.mask[level].tolist()) < MAX_MELEE
             and draws.random() < melee_chance * coeff):
         cell = _spawn_cell(state, _SPAWN_GRAVES if boss else _SPAWN_GROUND, near, monster_far,
                            draws)
         if cell is not None:
             _add_mob(state, state.melee_mobs, MobType.MELEE, mob_row[MobType.MELEE], cell)
 
-    if (int(state.ranged_mobs.mask[level].sum()) < MAX_RANGED
+    if (sum(state.ranged_mobs.mask[level].tolist()) < MAX_RANGED
             and draws.random() < chances[2] * coeff):
         type_id = mob_row[MobType.RANGED]
         allowed = _SPAWN_GRAVES if boss else _SPAWN_WATER if type_id == _DEEP_THING else _SPAWN_GROUND
