@@ -491,7 +491,7 @@ def upstream():
     import jax
     import jax.numpy as jnp
     from craftax.craftax import craftax_state as cs
-    from craftax.craftax.game_logic import update_mobs
+    from craftax.craftax.game_logic import spawn_mobs, update_mobs
 
     params, static = cs.EnvParams(), cs.StaticEnvParams()
     step = jax.jit(lambda key, s: update_mobs(key, s, params, static))
@@ -521,23 +521,61 @@ def upstream():
         return State.from_upstream(step(jax.random.PRNGKey(seed), to_upstream(state)))
 
     def positions(key, s):
-        out = update_mobs(key, s, params, static)
-        return {name: getattr(out, name).position[s.player_level]
-                for name in ("melee_mobs", "passive_mobs", "ranged_mobs")}
+        """After update_mobs, and (separately) after spawn_mobs: the level's mob slots."""
+        moved = update_mobs(key, s, params, static)
+        spawned = spawn_mobs(s, jax.random.fold_in(key, 1), params, static)
+        names = ("melee_mobs", "passive_mobs", "ranged_mobs")
+        return ({name: getattr(moved, name).position[s.player_level] for name in names},
+                {name: (getattr(spawned, name).position[s.player_level],
+                        getattr(spawned, name).mask[s.player_level],
+                        getattr(spawned, name).type_id[s.player_level]) for name in names})
     many = jax.jit(jax.vmap(positions, in_axes=(0, None)))
 
     def run_many(state: State, samples: int):
         """The live mobs' positions after one update, per sample: {(group, slot): (n, 2)}."""
-        out = many(jax.random.split(jax.random.PRNGKey(1), samples), to_upstream(state))
+        out = many(jax.random.split(jax.random.PRNGKey(1), samples), to_upstream(state))[0]
         return {(name, slot): np.asarray(out[name])[:, slot]
                 for name, slot in live_slots(state)}
-    run.many = run_many
+
+    def spawn_many(state: State, samples: int):
+        """Per sample and class, the spawned mob's (row, col, type), or None."""
+        out = many(jax.random.split(jax.random.PRNGKey(2), samples), to_upstream(state))[1]
+        return {name: new_mobs(getattr(state, name).mask[state.player_level], *map(np.asarray, value))
+                for name, value in out.items()}
+    run.many, run.spawn_many = run_many, spawn_many
     return run
+
+
+def new_mobs(before, positions, masks, types):
+    """Per sample, the (row, col, type) of the mob in a slot that was empty before, or None."""
+    out = []
+    for position, mask, type_id in zip(positions, masks, types):
+        fresh = np.flatnonzero(mask & ~before)
+        out.append(None if fresh.size == 0 else
+                   (int(position[fresh[0], 0]), int(position[fresh[0], 1]), int(type_id[fresh[0]])))
+    return out
 
 
 def live_slots(state: State):
     return [(name, int(slot)) for name in ("melee_mobs", "passive_mobs", "ranged_mobs")
             for slot in np.flatnonzero(getattr(state, name).mask[state.player_level])]
+
+
+def assert_same_distribution(theirs: list, ours: list, what) -> None:
+    """Two samples of the same size from one distribution: every outcome's frequency agrees
+    within five standard errors of their difference (a rare outcome that one side never
+    shows fails this, where a total-variation bound would let it through)."""
+    n = len(theirs)
+    a, b = {}, {}
+    for outcome in theirs:
+        a[outcome] = a.get(outcome, 0) + 1 / n
+    for outcome in ours:
+        b[outcome] = b.get(outcome, 0) + 1 / n
+    for outcome in set(a) | set(b):
+        p = (a.get(outcome, 0) + b.get(outcome, 0)) / 2
+        bound = 5 * np.sqrt(2 * p * (1 - p) / n) + 1e-3
+        assert abs(a.get(outcome, 0) - b.get(outcome, 0)) <= bound, (
+            what, outcome, sorted(a.items(), key=str), sorted(b.items(), key=str))
 
 
 def test_random_moves_follow_the_packages_probabilities(upstream):
@@ -560,15 +598,8 @@ def test_random_moves_follow_the_packages_probabilities(upstream):
         for name, slot in ours:
             ours[(name, slot)].append(tuple(getattr(copy, name).position[0, slot]))
     for key, positions in theirs.items():
-        a = {}
-        for p in map(tuple, positions.tolist()):
-            a[p] = a.get(p, 0) + 1 / samples
-        b = {}
-        for p in ours[key]:
-            p = (int(p[0]), int(p[1]))
-            b[p] = b.get(p, 0) + 1 / samples
-        distance = sum(abs(a.get(p, 0) - b.get(p, 0)) for p in set(a) | set(b)) / 2
-        assert distance < 0.04, (key, sorted(a.items()), sorted(b.items()))
+        assert_same_distribution([tuple(p) for p in positions.tolist()],
+                                 [(int(p[0]), int(p[1])) for p in ours[key]], key)
 
 
 def assert_same_outcome(ours: State, theirs: State) -> None:
@@ -637,3 +668,33 @@ def test_deterministic_turns_match_the_package(upstream):
         ours = state.copy()
         mobs.update(ours, SETTINGS, draws(index))
         assert_same_outcome(ours, theirs)
+
+
+def test_spawning_follows_the_packages_probabilities(upstream):
+    """Per class: how often a mob spawns, where (a few allowed cells, some too near or too
+    far), and of which kind, at dusk on an uncleared level; and on the boss level in a wave."""
+    dusk = blank_state(block=BlockType.STONE)
+    dusk.light_level, dusk.monsters_killed[0] = 0.4, 5
+    for cell, block in (((24, 27), G), ((24, 30), G), ((13, 24), BlockType.PATH), ((30, 33), G),
+                        ((34, 24), BlockType.SAND), ((24, 40), G), ((20, 20), BlockType.FIRE_GRASS),
+                        ((35, 28), G)):
+        dusk.map[0, cell[0], cell[1]] = block
+    put_mob(dusk, MobType.MELEE, (30, 33), slot=1)      # occupied: no spawning there
+    boss = boss_state()
+    boss.boss_progress, boss.boss_timesteps_to_spawn_this_round = 3, 2
+    put_mob(boss, MobType.MELEE, (20, 24), type_id=3, slot=0)
+    samples = 3000
+    for state in (dusk, boss):
+        theirs = upstream.spawn_many(state, samples)
+        rng = draws(13)
+        ours = {name: [] for name in theirs}
+        for _ in range(samples):
+            copy = state.copy()
+            mobs.spawn(copy, SETTINGS, rng)
+            for name in theirs:
+                level = state.player_level
+                group, before = getattr(copy, name), getattr(state, name).mask[level]
+                ours[name] += new_mobs(before, [group.position[level]], [group.mask[level]],
+                                       [group.type_id[level]])
+        for name in theirs:
+            assert_same_distribution(theirs[name], ours[name], name)
