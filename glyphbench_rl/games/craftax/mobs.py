@@ -1,15 +1,527 @@
-"""TEMPORARY placeholder: mob movement, attacks, projectiles and spawning do nothing here.
+"""Craftax's mobs: upstream ``craftax`` 1.6.1's ``update_mobs``, ``spawn_mobs`` and
+``boss_logic`` (``craftax/craftax/game_logic.py``) and their helpers
+(``util/game_logic_utils.py``), as small loops over the few live mobs of the player's level.
 
-Another helper writes the real ``mobs`` module (upstream ``update_mobs`` / ``spawn_mobs``); it
-replaces this file at the merge with the same two signatures, which ``rules.step`` calls.
+``update(state, settings, draws)`` moves, in upstream's order: melee mobs (chase, attack),
+passive mobs (wander), ranged mobs (keep their distance, shoot), mob projectiles, player
+projectiles. ``spawn(state, settings, draws)`` spawns at most one mob of each class.
+``boss_logic`` and ``damage_necromancer`` are the necromancer's rules, ``attack_mob`` and
+``hurt_player`` the damage rules that the player's own actions share (``rules``).
+
+Randomness comes from ``draws``, one draw per choice that upstream makes at random, and only
+when the choice matters (upstream draws for every slot, live or not; we draw for live mobs).
+State arrays are indexed ``[level, slot]``; only the player's level moves, as upstream.
 """
 
 from __future__ import annotations
 
+import numpy as np
 
-def update(state, settings, draws) -> None:
-    """Placeholder: upstream moves mobs and projectiles here; this does nothing."""
+from .bestiary import (BOSS_FIGHT_EXTRA_DAMAGE, BOSS_FIGHT_SPAWN_TURNS, BOSS_LEVEL,
+                       FLOOR_MOB_MAPPING, FLOOR_MOB_SPAWN_CHANCE, MELEE_ATTACK_COOLDOWN,
+                       MOB_ACHIEVEMENT_MAP, MOB_TYPE_COLLISION_MAPPING, MOB_TYPE_DAMAGE_MAPPING,
+                       MOB_TYPE_DEFENCE_MAPPING, MOB_TYPE_HEALTH_MAPPING,
+                       MONSTERS_KILLED_TO_CLEAR_LEVEL, PASSIVE_FOOD, PROJECTILE_DAMAGE,
+                       RANGED_ATTACK_COOLDOWN, RANGED_MOB_TYPE_TO_PROJECTILE_TYPE_MAPPING,
+                       SLEEPING_DAMAGE_FACTOR)
+from .state import MAX_MELEE, MAX_PASSIVE, MAX_RANGED, Mobs, Settings, State
+from .tables import Achievement, BlockType, MobType, ProjectileType
+
+# Upstream's SOLID_BLOCKS (constants.py). Defined here privately until the lead unifies it with
+# tables.py's copy: [block id] -> solid.
+_SOLID_IDS = (
+    BlockType.STONE, BlockType.TREE, BlockType.COAL, BlockType.IRON, BlockType.DIAMOND,
+    BlockType.CRAFTING_TABLE, BlockType.FURNACE, BlockType.PLANT, BlockType.RIPE_PLANT,
+    BlockType.WALL, BlockType.WALL_MOSS, BlockType.STALAGMITE, BlockType.RUBY, BlockType.SAPPHIRE,
+    BlockType.CHEST, BlockType.FOUNTAIN, BlockType.FIRE_TREE, BlockType.ENCHANTMENT_TABLE_FIRE,
+    BlockType.ENCHANTMENT_TABLE_ICE, BlockType.GRAVE, BlockType.GRAVE2, BlockType.GRAVE3,
+    BlockType.NECROMANCER,
+)
+_SOLID = tuple(b in _SOLID_IDS for b in range(len(BlockType)))
+_WATER, _LAVA = int(BlockType.WATER), int(BlockType.LAVA)
+# A mob projectile that flies into these breaks them (they become PATH).
+_BREAKABLE = (int(BlockType.CRAFTING_TABLE), int(BlockType.FURNACE))
+
+# Where mobs spawn (upstream's all_valid_blocks_map), and the boss level's graves.
+_SPAWN_GROUND = np.zeros(len(BlockType), bool)
+_SPAWN_GROUND[[BlockType.GRASS, BlockType.PATH, BlockType.FIRE_GRASS, BlockType.ICE_GRASS]] = True
+_SPAWN_WATER = np.zeros(len(BlockType), bool)
+_SPAWN_WATER[BlockType.WATER] = True
+_SPAWN_GRAVES = np.zeros(len(BlockType), bool)
+_SPAWN_GRAVES[[BlockType.GRAVE, BlockType.GRAVE2, BlockType.GRAVE3]] = True
+_DEEP_THING = 5   # the ranged type that spawns in water ("hack for deep thing" upstream)
+
+# Upstream's DIRECTIONS[1:5]: left, right, up, down as (row, col) steps.
+_STEPS = ((0, -1), (0, 1), (-1, 0), (1, 0))
+_ARROWS = (int(ProjectileType.ARROW), int(ProjectileType.ARROW2))
+_SPELLS = (int(ProjectileType.FIREBALL), int(ProjectileType.ICEBALL))
 
 
-def spawn(state, settings, draws) -> None:
-    """Placeholder: upstream spawns and despawns mobs here; this does nothing."""
+# ---------------------------------------------------------------------------------------------
+# The necromancer (util/game_logic_utils.py, game_logic.boss_logic, do_action's boss part)
+
+def is_fighting_boss(state: State) -> bool:
+    return state.player_level == BOSS_LEVEL
+
+
+def is_boss_spawn_wave(state: State) -> bool:
+    return state.player_level == BOSS_LEVEL and state.boss_timesteps_to_spawn_this_round >= 1
+
+
+def is_boss_vulnerable(state: State) -> bool:
+    """No melee or ranged mob alive on the player's level and the spawn wave is over."""
+    level = state.player_level
+    return (not state.melee_mobs.mask[level].any() and not state.ranged_mobs.mask[level].any()
+            and state.boss_timesteps_to_spawn_this_round <= 0)
+
+
+def has_beaten_boss(state: State) -> bool:
+    return state.boss_progress >= BOSS_LEVEL
+
+
+def boss_logic(state: State) -> None:
+    """Upstream's boss_logic (the step calls it before the player moves): the defeat
+    achievement once the boss's progress is full, and one turn off the spawn wave's clock
+    on the boss level."""
+    if has_beaten_boss(state):
+        state.achievements[Achievement.DEFEAT_NECROMANCER] = True
+    if state.player_level == BOSS_LEVEL:
+        state.boss_timesteps_to_spawn_this_round -= 1
+
+
+def damage_necromancer(state: State) -> bool:
+    """The player strikes the necromancer block (do_action): when it is vulnerable, one step of
+    progress, a new spawn wave of BOSS_FIGHT_SPAWN_TURNS turns, and DAMAGE_NECROMANCER."""
+    if not (is_fighting_boss(state) and is_boss_vulnerable(state)):
+        return False
+    state.boss_progress += 1
+    state.boss_timesteps_to_spawn_this_round = BOSS_FIGHT_SPAWN_TURNS
+    state.achievements[Achievement.DAMAGE_NECROMANCER] = True
+    return True
+
+
+# ---------------------------------------------------------------------------------------------
+# Damage (util/game_logic_utils.py)
+
+def damage_to_player(state: State, damage: tuple) -> float:
+    """Upstream's get_damage_done_to_player: armour blocks 10% physical damage per tier (summed
+    over the four pieces), each fire (ice) enchanted piece 20% of fire (ice) damage; damage is
+    x1.5 on the boss level."""
+    enchant = state.armour_enchantments.tolist()
+    defence = (0.1 * sum(state.inventory.armour.tolist()), 0.2 * enchant.count(1),
+               0.2 * enchant.count(2))
+    scale = 1.0 + BOSS_FIGHT_EXTRA_DAMAGE if state.player_level == BOSS_LEVEL else 1.0
+    return sum((1.0 - d) * x * scale for d, x in zip(defence, damage))
+
+
+def hurt_player(state: State, damage: tuple, melee: bool = False) -> float:
+    """Damage the player by a (physical, fire, ice) vector through the armour; the blow wakes
+    them. A melee blow on a sleeping player does x3.5 damage and earns WAKE_UP (upstream's
+    melee mobs do both; projectiles do neither, they only wake). Returns the health lost."""
+    if melee and state.is_sleeping:
+        damage = tuple(SLEEPING_DAMAGE_FACTOR * x for x in damage)
+        state.achievements[Achievement.WAKE_UP] = True
+    lost = damage_to_player(state, damage)
+    state.player_health -= lost
+    state.is_sleeping = False
+    state.is_resting = False
+    return lost
+
+
+def _mob_damage(damage: tuple, defence: tuple) -> float:
+    """Upstream's get_damage: each element of the damage less the mob's defence against it."""
+    return sum((1.0 - d) * x for x, d in zip(damage, defence))
+
+
+def _attack_class(state: State, mobs: Mobs, kind: int, row: int, col: int, damage: tuple,
+                  achieve: bool) -> tuple[bool, bool]:
+    """Damage the first live mob of one class at (row, col); (hit, killed)."""
+    level = state.player_level
+    mask, position = mobs.mask[level], mobs.position[level]
+    for slot in range(mask.shape[0]):
+        if mask[slot] and position[slot, 0] == row and position[slot, 1] == col:
+            type_id = int(mobs.type_id[level, slot])
+            health = float(mobs.health[level, slot]) - _mob_damage(
+                damage, MOB_TYPE_DEFENCE_MAPPING[type_id][kind])
+            mobs.health[level, slot] = health
+            if health > 0:
+                return True, False
+            mask[slot] = False
+            if achieve:
+                state.achievements[MOB_ACHIEVEMENT_MAP[kind][type_id]] = True
+            return True, True
+    return False, False
+
+
+def attack_mob(state: State, row: int, col: int, damage: tuple, can_eat: bool) -> tuple[bool, bool]:
+    """Upstream's attack_mob: damage whatever mob stands at (row, col) by a (physical, fire,
+    ice) vector less its defence; a kill clears the mob map, counts a monster (melee, ranged)
+    and earns its achievement; a passive kill feeds the player (+6 food, hunger reset) and
+    earns its achievement only when ``can_eat`` (the player's melee blow, not a projectile).
+    Returns (hit, killed)."""
+    hit, killed = _attack_class(state, state.melee_mobs, MobType.MELEE, row, col, damage, True)
+    monster = killed
+    if not hit:
+        hit, killed = _attack_class(state, state.passive_mobs, MobType.PASSIVE, row, col, damage,
+                                    can_eat)
+        if killed and can_eat:
+            state.player_food = min(7 + 2 * state.player_dexterity, state.player_food + PASSIVE_FOOD)
+            state.player_hunger = 0.0
+    if not hit:
+        hit, killed = _attack_class(state, state.ranged_mobs, MobType.RANGED, row, col, damage,
+                                    True)
+        monster = killed
+    if killed:
+        state.mob_map[state.player_level, row, col] = False
+        if monster:
+            state.monsters_killed[state.player_level] += 1
+    return hit, killed
+
+
+# ---------------------------------------------------------------------------------------------
+# Movement
+
+class _Turn:
+    """What every mover of one update reads: the player's level, its map and mob map (views,
+    written in place), the player's cell, and the despawn rule."""
+    __slots__ = ("state", "draws", "level", "map", "occupied", "rows", "cols", "p_row", "p_col",
+                 "boss", "despawn")
+
+    def __init__(self, state: State, settings: Settings, draws) -> None:
+        self.state, self.draws = state, draws
+        self.level = level = state.player_level
+        self.map, self.occupied = state.map[level], state.mob_map[level]
+        self.rows, self.cols = self.map.shape
+        self.p_row, self.p_col = state.player_position.tolist()
+        self.boss = level == BOSS_LEVEL
+        # monsters beyond this Manhattan distance (measured before they move) vanish; upstream
+        # keeps the boss level's monsters (not its passive mobs), and we keep all when
+        # spawning is switched off
+        self.despawn = settings.mob_despawn_distance if settings.spawning else None
+
+    def can_enter(self, row: int, col: int, collision: tuple) -> bool:
+        """Upstream's is_position_in_bounds_not_in_mob_not_colliding."""
+        if not (0 <= row < self.rows and 0 <= col < self.cols):
+            return False
+        if self.occupied.item(row, col) or (row == self.p_row and col == self.p_col):
+            return False
+        block = self.map.item(row, col)
+        if _SOLID[block]:
+            return False
+        if block == _WATER:
+            return not collision[1]
+        if block == _LAVA:
+            return not collision[2]
+        return not collision[0]
+
+    def toward(self, d_row: int, d_col: int) -> tuple[int, int]:
+        """One step toward the player along the axis of the larger distance (a tie: either
+        axis, evenly), upstream's player_move_direction."""
+        a_row, a_col = abs(d_row), abs(d_col)
+        if a_row > a_col or (a_row == a_col and self.draws.below(2) == 0):
+            return (d_row > 0) - (d_row < 0), 0
+        return 0, (d_col > 0) - (d_col < 0)
+
+    def stays(self, distance: int, monster: bool) -> bool:
+        return (self.despawn is None or distance < self.despawn
+                or (monster and self.boss))
+
+    def relocate(self, group: Mobs, slot: int, old: tuple, new: tuple, alive: bool) -> None:
+        """Write a mob's new cell and life, keeping the mob map exact."""
+        level = self.level
+        if new != old:
+            group.position[level, slot, 0], group.position[level, slot, 1] = new
+        if not alive:
+            group.mask[level, slot] = False
+        self.occupied[old] = False
+        if alive:
+            self.occupied[new] = True
+
+
+def _move_melee(turn: _Turn, slot: int, row: int, col: int, type_id: int, cooldown: int) -> int:
+    """Chase the player (within 10, or always on the boss level: 75% of turns) or wander; hit
+    an adjacent player when the cooldown is over. Returns the new cooldown."""
+    d_row, d_col = turn.p_row - row, turn.p_col - col
+    distance = abs(d_row) + abs(d_col)
+    draws = turn.draws
+    if (distance < 10 or turn.boss) and draws.random() < 0.75:
+        step = turn.toward(d_row, d_col)
+    else:
+        step = _STEPS[draws.below(4)]
+    target = (row, col)
+    if distance == 1 and cooldown <= 0:
+        hurt_player(turn.state, MOB_TYPE_DAMAGE_MAPPING[type_id][MobType.MELEE], melee=True)
+        cooldown = MELEE_ATTACK_COOLDOWN
+    else:
+        cooldown -= 1
+        if turn.can_enter(row + step[0], col + step[1],
+                          MOB_TYPE_COLLISION_MAPPING[type_id][MobType.MELEE]):
+            target = (row + step[0], col + step[1])
+    turn.relocate(turn.state.melee_mobs, slot, (row, col), target, turn.stays(distance, True))
+    return cooldown
+
+
+def _move_passive(turn: _Turn, slot: int, row: int, col: int, type_id: int) -> None:
+    """Wander: each of the four steps with 1/8, else stay (upstream's DIRECTIONS[1:9])."""
+    choice = turn.draws.below(8)
+    target = (row, col)
+    if choice < 4:
+        step = _STEPS[choice]
+        if turn.can_enter(row + step[0], col + step[1],
+                          MOB_TYPE_COLLISION_MAPPING[type_id][MobType.PASSIVE]):
+            target = (row + step[0], col + step[1])
+    distance = abs(turn.p_row - row) + abs(turn.p_col - col)
+    turn.relocate(turn.state.passive_mobs, slot, (row, col), target, turn.stays(distance, False))
+
+
+def _move_ranged(turn: _Turn, slot: int, row: int, col: int, type_id: int, cooldown: int) -> int:
+    """Keep a shooting distance (15% of turns: closer when 6+ away, back when 3 or less; else
+    wander); shoot at range 4-5, or when it wants to back off but cannot. Returns the new
+    cooldown."""
+    d_row, d_col = turn.p_row - row, turn.p_col - col
+    distance = abs(d_row) + abs(d_col)
+    draws = turn.draws
+    toward = turn.toward(d_row, d_col)
+    too_close = distance <= 3
+    if draws.random() > 0.85 and (distance >= 6 or too_close):
+        sign = -1 if too_close else 1
+        target = (row + sign * toward[0], col + sign * toward[1])
+    else:
+        step = _STEPS[draws.below(4)]
+        target = (row + step[0], col + step[1])
+    can_move = turn.can_enter(*target, MOB_TYPE_COLLISION_MAPPING[type_id][MobType.RANGED])
+    if cooldown <= 0 and (4 <= distance <= 5 or (too_close and not can_move)):
+        _shoot(turn, row, col, toward, RANGED_MOB_TYPE_TO_PROJECTILE_TYPE_MAPPING[type_id])
+        cooldown = RANGED_ATTACK_COOLDOWN
+        target = (row, col)
+    else:
+        cooldown -= 1
+        if not can_move:
+            target = (row, col)
+    turn.relocate(turn.state.ranged_mobs, slot, (row, col), target, turn.stays(distance, True))
+    return cooldown
+
+
+def _shoot(turn: _Turn, row: int, col: int, direction: tuple, kind: int) -> None:
+    """A mob projectile in the first free slot, if any (upstream's spawn_projectile)."""
+    state, level = turn.state, turn.level
+    projectiles = state.mob_projectiles
+    mask = projectiles.mask[level].tolist()
+    if all(mask):
+        return
+    slot = mask.index(False)
+    projectiles.position[level, slot] = (row, col)
+    projectiles.mask[level, slot] = True
+    projectiles.type_id[level, slot] = int(kind)
+    state.mob_projectile_directions[level, slot] = direction
+
+
+def _move_mob_projectile(turn: _Turn, slot: int) -> None:
+    """Fly one cell; hit the player (on its cell or the next), stop at solid blocks (not
+    water or lava), mobs and the map's edge; break a table or furnace in its way."""
+    state, level = turn.state, turn.level
+    projectiles = state.mob_projectiles
+    row, col = projectiles.position[level, slot].tolist()
+    d_row, d_col = state.mob_projectile_directions[level, slot].tolist()
+    new_row, new_col = row + d_row, col + d_col
+    p_row, p_col = turn.p_row, turn.p_col
+    hit_player = (row == p_row and col == p_col) or (new_row == p_row and new_col == p_col)
+    flies_on = 0 <= new_row < turn.rows and 0 <= new_col < turn.cols
+    if flies_on:
+        block = turn.map.item(new_row, new_col)
+        flies_on = not (hit_player or _SOLID[block] or turn.occupied.item(new_row, new_col))
+        if block in _BREAKABLE:
+            turn.map[new_row, new_col] = BlockType.PATH
+    if hit_player:
+        hurt_player(state, PROJECTILE_DAMAGE[projectiles.type_id.item(level, slot)])
+    projectiles.position[level, slot, 0], projectiles.position[level, slot, 1] = new_row, new_col
+    if not flies_on:
+        projectiles.mask[level, slot] = False
+
+
+def player_projectile_damage(state: State, kind: int) -> tuple:
+    """A player projectile's damage vector: an arrow gains half its physical damage as the
+    bow's element (if enchanted) and scales with dexterity (+20% a point), a spell with
+    intelligence (+50% a point)."""
+    damage = list(PROJECTILE_DAMAGE[kind])
+    if kind in _ARROWS:
+        if state.bow_enchantment in (1, 2):
+            damage[state.bow_enchantment] += damage[0] / 2
+        scale = 1.0 + 0.2 * (state.player_dexterity - 1)
+    elif kind in _SPELLS:
+        scale = 1.0 + 0.5 * (state.player_intelligence - 1)
+    else:
+        scale = 1.0
+    return tuple(x * scale for x in damage)
+
+
+def _move_player_projectile(turn: _Turn, slot: int) -> None:
+    """Strike a mob on its own cell (one stepped onto it), else on its next cell; fly on
+    unless it struck, left the map or met a solid block (it crosses water and lava)."""
+    state, level = turn.state, turn.level
+    projectiles = state.player_projectiles
+    row, col = projectiles.position[level, slot].tolist()
+    d_row, d_col = state.player_projectile_directions[level, slot].tolist()
+    new_row, new_col = row + d_row, col + d_col
+    damage = player_projectile_damage(state, projectiles.type_id.item(level, slot))
+    hit = ((turn.occupied.item(row, col) and attack_mob(state, row, col, damage, False)[0])
+           or (0 <= new_row < turn.rows and 0 <= new_col < turn.cols
+               and turn.occupied.item(new_row, new_col)
+               and attack_mob(state, new_row, new_col, damage, False)[0]))
+    flies_on = (not hit and 0 <= new_row < turn.rows and 0 <= new_col < turn.cols
+                and not _SOLID[turn.map.item(new_row, new_col)])
+    projectiles.position[level, slot, 0], projectiles.position[level, slot, 1] = new_row, new_col
+    if not flies_on:
+        projectiles.mask[level, slot] = False
+
+
+def _move_monsters(turn: _Turn, group: Mobs, mask: list, mover) -> None:
+    """Melee or ranged mobs in slot order; dead slots only count their cooldown down, as
+    upstream (a mob spawned into a slot inherits its cooldown)."""
+    level = turn.level
+    positions, types = group.position[level].tolist(), group.type_id[level].tolist()
+    cooldowns = group.attack_cooldown[level].tolist()
+    for slot, alive in enumerate(mask):
+        if alive:
+            row, col = positions[slot]
+            cooldowns[slot] = mover(turn, slot, row, col, types[slot], cooldowns[slot])
+        else:
+            cooldowns[slot] -= 1
+    group.attack_cooldown[level] = cooldowns
+
+
+def _count_down(group: Mobs, level: int) -> None:
+    """Dead slots count their cooldown down too, as upstream (a spawned mob inherits it)."""
+    group.attack_cooldown[level] = [x - 1 for x in group.attack_cooldown[level].tolist()]
+
+
+def update(state: State, settings: Settings, draws) -> None:
+    """Upstream's update_mobs on the player's level: melee, passive and ranged mobs in slot
+    order, then mob projectiles, then the player's projectiles."""
+    level = state.player_level
+    melee, ranged = state.melee_mobs, state.ranged_mobs
+    melee_mask, ranged_mask = melee.mask[level].tolist(), ranged.mask[level].tolist()
+    passive_mask = state.passive_mobs.mask[level].tolist()
+    shots = state.mob_projectiles.mask[level].tolist()
+    arrows = state.player_projectiles.mask[level].tolist()
+    if not any(melee_mask + ranged_mask + passive_mask + shots + arrows):
+        _count_down(melee, level)
+        _count_down(ranged, level)
+        return
+    turn = _Turn(state, settings, draws)
+    if any(melee_mask):
+        _move_monsters(turn, melee, melee_mask, _move_melee)
+    else:
+        _count_down(melee, level)
+    if any(passive_mask):
+        passive = state.passive_mobs
+        positions, types = passive.position[level].tolist(), passive.type_id[level].tolist()
+        for slot, alive in enumerate(passive_mask):
+            if alive:
+                _move_passive(turn, slot, positions[slot][0], positions[slot][1], types[slot])
+    if any(ranged_mask):
+        _move_monsters(turn, ranged, ranged_mask, _move_ranged)
+    else:
+        _count_down(ranged, level)
+    # (a projectile a ranged mob shot this turn flies this turn)
+    for slot, alive in enumerate(state.mob_projectiles.mask[level].tolist()):
+        if alive:
+            _move_mob_projectile(turn, slot)
+    for slot, alive in enumerate(arrows):
+        if alive:
+            _move_player_projectile(turn, slot)
+
+
+# ---------------------------------------------------------------------------------------------
+# Spawning (game_logic.spawn_mobs)
+
+_OFFSETS: dict[int, tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
+
+
+def _window(radius: int):
+    """(row offsets, col offsets, squared distances) of the square of half-side ``radius``."""
+    if radius not in _OFFSETS:
+        d = np.arange(-radius, radius + 1)
+        _OFFSETS[radius] = (d, d, d[:, None] ** 2 + d[None, :] ** 2)
+    return _OFFSETS[radius]
+
+
+def _spawn_cell(state: State, allowed: np.ndarray, near: int, far: int, draws):
+    """A uniformly drawn cell whose block ``allowed`` marks, with no mob on it, at a Euclidean
+    squared distance d2 from the player with near < d2 < far; None if there is none. Cells
+    count in row-major order (upstream draws over the flattened map)."""
+    level = state.player_level
+    radius = int(np.ceil(np.sqrt(far))) + 1
+    d, _, d2 = _window(radius)
+    p_row, p_col = int(state.player_position[0]), int(state.player_position[1])
+    rows, cols = state.map.shape[1:]
+    r0, r1 = max(0, p_row - radius), min(rows, p_row + radius + 1)
+    c0, c1 = max(0, p_col - radius), min(cols, p_col + radius + 1)
+    window_d2 = d2[r0 - p_row + radius:r1 - p_row + radius, c0 - p_col + radius:c1 - p_col + radius]
+    ok = allowed[state.map[level, r0:r1, c0:c1]] & ~state.mob_map[level, r0:r1, c0:c1]
+    ok &= (window_d2 > near) & (window_d2 < far)
+    cells = np.flatnonzero(ok)
+    if cells.size == 0:
+        return None
+    k = int(cells[draws.below(cells.size)])
+    width = c1 - c0
+    return r0 + k // width, c0 + k % width
+
+
+def _add_mob(state: State, mobs: Mobs, kind: int, type_id: int, cell: tuple) -> None:
+    level = state.player_level
+    slot = int(np.flatnonzero(~mobs.mask[level])[0])
+    mobs.position[level, slot] = cell
+    mobs.health[level, slot] = MOB_TYPE_HEALTH_MAPPING[type_id][kind]
+    mobs.mask[level, slot] = True
+    mobs.type_id[level, slot] = type_id
+    state.mob_map[level, cell[0], cell[1]] = True
+
+
+def spawn(state: State, settings: Settings, draws) -> None:
+    """Upstream's spawn_mobs: at most one passive, one melee and one ranged mob a turn, each
+    with its level's chance while its class has a free slot. Passive mobs spawn on grass or
+    path 3 to the despawn distance away; monsters 9 to the despawn distance away, at three
+    times the rate until the level is cleared (8 kills), melee ones more at night. On the
+    boss level only monsters spawn, during a spawn wave (x1000 rate), on graves within 6,
+    of the kinds of the boss's progress. Deep things spawn in water."""
+    if not settings.spawning:
+        return
+    level = state.player_level
+    chances = FLOOR_MOB_SPAWN_CHANCE[level]
+    boss = level == BOSS_LEVEL
+    far = settings.mob_despawn_distance ** 2
+    coeff = 3.0 if state.monsters_killed[level] < MONSTERS_KILLED_TO_CLEAR_LEVEL else 1.0
+    if boss:
+        coeff *= 1000.0 if state.boss_timesteps_to_spawn_this_round >= 1 else 0.0
+
+    if (not boss and sum(state.passive_mobs.mask[level].tolist()) < MAX_PASSIVE
+            and draws.random() < chances[0]):
+        cell = _spawn_cell(state, _SPAWN_GROUND, 9, far, draws)
+        if cell is not None:
+            _add_mob(state, state.passive_mobs, MobType.PASSIVE,
+                     FLOOR_MOB_MAPPING[level][MobType.PASSIVE], cell)
+
+    near, monster_far = (-1, min(far, 37)) if boss else (81, far)   # boss: d <= 6
+    mob_row = FLOOR_MOB_MAPPING[state.boss_progress if boss else level]
+
+    melee_chance = chances[1] + chances[3] * (1.0 - state.light_level) ** 2
+    if (sum(state.melee_mobs.mask[level].tolist()) < MAX_MELEE
+            and draws.random() < melee_chance * coeff):
+        cell = _spawn_cell(state, _SPAWN_GRAVES if boss else _SPAWN_GROUND, near, monster_far,
+                           draws)
+        if cell is not None:
+            _add_mob(state, state.melee_mobs, MobType.MELEE, mob_row[MobType.MELEE], cell)
+
+    if (sum(state.ranged_mobs.mask[level].tolist()) < MAX_RANGED
+            and draws.random() < chances[2] * coeff):
+        type_id = mob_row[MobType.RANGED]
+        allowed = _SPAWN_GRAVES if boss else _SPAWN_WATER if type_id == _DEEP_THING else _SPAWN_GROUND
+        cell = _spawn_cell(state, allowed, near, monster_far, draws)
+        if cell is not None:
+            _add_mob(state, state.ranged_mobs, MobType.RANGED, type_id, cell)
+
+
+__all__ = ["update", "spawn", "boss_logic", "damage_necromancer", "attack_mob", "hurt_player",
+           "damage_to_player", "player_projectile_damage", "is_fighting_boss",
+           "is_boss_spawn_wave", "is_boss_vulnerable", "has_beaten_boss"]
