@@ -195,24 +195,42 @@ def _paste_light(light: np.ndarray, patch: np.ndarray, centre: np.ndarray) -> No
 # ---------------------------------------------------------------------------------------------
 # Noise levels
 
-def cave_level(rng: np.random.Generator, cfg: CaveConfig):
+@dataclass
+class CaveNoise:
+    """A noise level's four Perlin maps (upstream's resolutions on the 48x48 map)."""
+    water: np.ndarray       # 3x3 lattice
+    mountain: np.ndarray    # 3x3 lattice
+    tunnels: np.ndarray     # 6x24 lattice: long thin lines, used as drawn and transposed
+    trees: np.ndarray       # 12x12 lattice
+
+    @classmethod
+    def draw(cls, rng: np.random.Generator, count: int) -> list["CaveNoise"]:
+        """Noise for ``count`` levels (drawn together: numpy works faster on the batch)."""
+        coarse = fractal(rng, MAP_SIZE, (ROWS // 16, COLS // 16), 2 * count)
+        tunnels = fractal(rng, MAP_SIZE, (ROWS // 8, COLS // 2), count)
+        trees = fractal(rng, MAP_SIZE, (ROWS // 4, COLS // 4), count)
+        return [cls(coarse[2 * i], coarse[2 * i + 1], tunnels[i], trees[i]) for i in range(count)]
+
+
+def cave_level(rng: np.random.Generator, cfg: CaveConfig, noise: CaveNoise | None = None):
     """One noise level: (block map, item map, light map, down ladder, up ladder)."""
     shape = MAP_SIZE
-    water = fractal(rng, shape, (ROWS // 16, COLS // 16))
+    noise = noise or CaveNoise.draw(rng, 1)[0]
+    water = noise.water.copy()
     water += np.clip(_CENTRE_DISTANCE / cfg.water_strength, 0, cfg.water_max) - 1
     block = np.where(water > cfg.water_threshold, cfg.sea, cfg.default).astype(np.int32)
     block[(water > cfg.sand_threshold) & (block != cfg.sea)] = cfg.coast
 
-    mountain = fractal(rng, shape, (ROWS // 16, COLS // 16)) + 0.05
+    mountain = noise.mountain + 0.05
     mountain += np.clip(_CENTRE_DISTANCE / cfg.mountain_strength, 0, cfg.mountain_max) - 1
     rock = mountain > 0.7
     block[rock] = cfg.mountain
 
-    tunnels = fractal(rng, shape, (ROWS // 8, COLS // 2))
+    tunnels = noise.tunnels
     block[rock & ((tunnels > 0.8) | (tunnels.T > 0.8))] = cfg.tunnel
     block[(mountain > 0.85) & (water > 0.4)] = cfg.inner
 
-    tree_noise = fractal(rng, shape, (ROWS // 4, COLS // 4))
+    tree_noise = noise.trees
     trees = (tree_noise > cfg.tree_perlin) & (rng.random(shape) > cfg.tree_uniform)
     block[trees & (block == cfg.tree_on)] = cfg.tree
 
@@ -506,8 +524,9 @@ def make_playable(state: State) -> None:
 def generate(rng: np.random.Generator, settings: Settings = Settings()) -> State:
     """A new world, as upstream's ``generate_world``: nine levels, the player at the centre of
     the overworld facing up, no mobs; every ladder walkable-to (see the module docstring)."""
-    made = [cave_level(rng, cfg) if isinstance(cfg, CaveConfig) else dungeon_level(rng, cfg)
-            for cfg in LEVELS]
+    noises = iter(CaveNoise.draw(rng, sum(isinstance(cfg, CaveConfig) for cfg in LEVELS)))
+    made = [cave_level(rng, cfg, next(noises)) if isinstance(cfg, CaveConfig)
+            else dungeon_level(rng, cfg) for cfg in LEVELS]
     block, items, light, down, up = (np.stack(parts) for parts in zip(*made))
     state = _state(block.astype(np.int32), items.astype(np.int32), light.astype(np.float32),
                    down.astype(np.int32), up.astype(np.int32), rng.permutation(6), settings)
