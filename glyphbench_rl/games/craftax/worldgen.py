@@ -410,13 +410,19 @@ def reachable(block: np.ndarray, start) -> np.ndarray:
     return reach(block[None], np.asarray(start).reshape(1, 2))[0]
 
 
+def _carve_walkable(block: np.ndarray) -> np.ndarray:
+    """What a carved path may cross as it is: walkable cells other than a dungeon's darkness
+    (walkable upstream, but beyond the walls: a path through it is carved into floor too)."""
+    return _WALKABLE[block] & (block != B.DARKNESS)
+
+
 def _carve_to(block: np.ndarray, inside: np.ndarray, when: np.ndarray, clock: int,
               goal: np.ndarray, floor: int) -> None:
     """Grow the walked region of one level ring by ring, each ring carving one more layer of
     carvable cells, until it touches ``goal`` (a mask); then walk back from there through
     ever-earlier cells, turning the blocking ones into ``floor``. Each ring adds one carved
     cell to the way back, so it carves the fewest cells any path needs."""
-    walk, carvable = _WALKABLE[block], _CARVABLE[block]
+    walk, carvable = _carve_walkable(block), _CARVABLE[block]
     while not (inside & goal).any():
         ring = _grow(inside) & carvable & ~walk & ~inside
         if not ring.any():
@@ -444,7 +450,7 @@ def ensure_reachable(blocks: np.ndarray, starts: np.ndarray, goals: np.ndarray) 
         block = blocks[level]
         inside = _seeds((1, *block.shape), starts[level:level + 1])[0]
         when = np.zeros(block.shape, np.int64)
-        clock = _flood(inside, _WALKABLE[block], when, 0)
+        clock = _flood(inside, _carve_walkable(block), when, 0)
         _carve_to(block, inside, when, clock, goals[level], FLOORS[level])
 
 
