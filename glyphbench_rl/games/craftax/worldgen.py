@@ -1,0 +1,549 @@
+"""World generation: the nine levels of upstream Craftax 1.6.1 (``world_gen/world_gen.py`` and
+``world_gen_configs.py``) in numpy.
+
+Two generators make every level, each driven by a per-level configuration (upstream's facts):
+
+* ``cave_level`` (upstream ``generate_smoothworld``): Perlin-noise terrain. A "water" noise
+  makes seas and coasts, a "mountain" noise raises rock away from the centre (both pushed up with
+  the distance from the centre), a stretched noise cuts tunnels through the rock, inner caves open
+  where both noises are high, a fourth noise and a uniform draw scatter trees, then ores replace
+  rock at fixed rates and lava fills the deepest rock. Levels 0 (overworld), 2 (gnomish mines),
+  5 (troll mines), 6 (fire realm), 7 (ice realm) and 8 (graveyard: the necromancer stands at the
+  centre, graves are its "trees").
+* ``dungeon_level`` (upstream ``generate_dungeon``): eight rooms in a 3x3 grid of 16-cell chunks,
+  each with torches in its corners, a chest and, half the time, a fountain; L-shaped corridors
+  join every room to one joined before it; walls away from the floor turn to darkness. Levels 1
+  (dungeon), 3 (sewers: water for fountains, a tenth of the floor flooded, the ice enchantment
+  table) and 4 (vaults: the fire enchantment table).
+
+One deliberate difference: upstream places ladders on any floor cell, so a ladder can sit in a
+cave sealed by rock, across water, or (in the sewers) behind flooded corridor cells, reachable
+only with a pickaxe or placed stone. Here every world is walkable: after a level is made,
+``ensure_reachable`` carves the cheapest path (fewest blocking cells) from the level's arrival
+point to its down ladder (and, on level 8, to the necromancer's side), turning the blocking cells
+on that path into the level's floor. Chests, fountains, enchantment tables and the necromancer
+are never carved. This changes a few cells per level (``tests/games/craftax`` measures it).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .noise import fractal
+from .state import (MAP_SIZE, MAX_MELEE, MAX_MOB_PROJECTILES, MAX_PASSIVE, MAX_PLAYER_PROJECTILES,
+                    MAX_RANGED, MAX_GROWING_PLANTS, NUM_LEVELS, Inventory, Mobs, Settings, State)
+from .tables import Achievement, Action, BlockType as B, ItemType
+
+ROWS, COLS = MAP_SIZE
+CENTRE = (ROWS // 2, COLS // 2)
+BOSS_FIGHT_SPAWN_TURNS = 7          # upstream constants.BOSS_FIGHT_SPAWN_TURNS
+
+# Upstream's SOLID_BLOCKS: the player cannot walk into these (nor into water or lava).
+SOLID = frozenset({
+    B.STONE, B.TREE, B.COAL, B.IRON, B.DIAMOND, B.CRAFTING_TABLE, B.FURNACE, B.PLANT,
+    B.RIPE_PLANT, B.WALL, B.WALL_MOSS, B.STALAGMITE, B.RUBY, B.SAPPHIRE, B.CHEST, B.FOUNTAIN,
+    B.FIRE_TREE, B.ENCHANTMENT_TABLE_FIRE, B.ENCHANTMENT_TABLE_ICE, B.GRAVE, B.GRAVE2, B.GRAVE3,
+    B.NECROMANCER})
+# Never carved away to make a level walkable: the structures a level is made for.
+PROTECTED = frozenset({B.CHEST, B.FOUNTAIN, B.ENCHANTMENT_TABLE_FIRE, B.ENCHANTMENT_TABLE_ICE,
+                       B.NECROMANCER})
+
+_WALKABLE = np.ones(len(B), bool)
+_WALKABLE[[int(b) for b in SOLID | {B.WATER, B.LAVA}]] = False
+_CARVABLE = np.ones(len(B), bool)
+_CARVABLE[[int(b) for b in PROTECTED]] = False
+
+
+# ---------------------------------------------------------------------------------------------
+# Level configurations (upstream's SmoothGenConfig / DungeonConfig values)
+
+@dataclass(frozen=True)
+class CaveConfig:
+    default: int            # the open ground
+    sea: int                # where the water noise is high
+    coast: int              # the band just below the sea threshold
+    mountain: int           # where the mountain noise is high
+    tunnel: int             # the stretched noise's lines through the mountains
+    inner: int              # caves where both mountain and water noise are high
+    ores: tuple             # (block it replaces, ore, chance per cell), applied in order
+    tree_on: int
+    tree: int
+    lava: int               # fills the deepest rock where the tree noise is high
+    spawn: int              # the block put at the centre (the player's cell on level 0)
+    floor: int              # ladders stand on this block; carved paths are made of it
+    ladder_up: bool
+    ladder_down: bool
+    water_strength: float   # the centre-distance push on the water noise: clip(d / s, 0, max)
+    water_max: float
+    mountain_strength: float
+    mountain_max: float
+    light: float            # the level's light where no torch or lava lights it
+    water_threshold: float
+    sand_threshold: float
+    tree_uniform: float
+    tree_perlin: float
+
+
+_STONE_ORES = (B.COAL, B.IRON, B.DIAMOND, B.SAPPHIRE, B.RUBY)
+
+
+def _stone_ores(*chances: float) -> tuple:
+    return tuple((B.STONE, ore, p) for ore, p in zip(_STONE_ORES, chances))
+
+
+OVERWORLD = CaveConfig(
+    default=B.GRASS, sea=B.WATER, coast=B.SAND, mountain=B.STONE, tunnel=B.PATH, inner=B.PATH,
+    ores=_stone_ores(0.03, 0.02, 0.001), tree_on=B.GRASS, tree=B.TREE, lava=B.LAVA,
+    spawn=B.GRASS, floor=B.PATH, ladder_up=False, ladder_down=True,
+    water_strength=5, water_max=1, mountain_strength=5, mountain_max=1, light=1.0,
+    water_threshold=0.7, sand_threshold=0.6, tree_uniform=0.8, tree_perlin=0.5)
+GNOMISH_MINES = CaveConfig(
+    default=B.PATH, sea=B.WATER, coast=B.PATH, mountain=B.STONE, tunnel=B.STONE, inner=B.STONE,
+    ores=_stone_ores(0.04, 0.02, 0.005, 0.0025, 0.0025), tree_on=B.PATH, tree=B.STALAGMITE,
+    lava=B.LAVA, spawn=B.PATH, floor=B.PATH, ladder_up=True, ladder_down=True,
+    water_strength=5, water_max=1, mountain_strength=17, mountain_max=1.5, light=0.0,
+    water_threshold=0.7, sand_threshold=0.6, tree_uniform=0.8, tree_perlin=0.5)
+TROLL_MINES = CaveConfig(
+    default=B.PATH, sea=B.WATER, coast=B.PATH, mountain=B.STONE, tunnel=B.STONE, inner=B.STONE,
+    ores=_stone_ores(0.04, 0.03, 0.01, 0.01, 0.01), tree_on=B.PATH, tree=B.STALAGMITE,
+    lava=B.LAVA, spawn=B.PATH, floor=B.PATH, ladder_up=True, ladder_down=True,
+    water_strength=5, water_max=1, mountain_strength=17, mountain_max=1.5, light=0.0,
+    water_threshold=0.7, sand_threshold=0.6, tree_uniform=0.8, tree_perlin=0.5)
+FIRE_REALM = CaveConfig(
+    default=B.FIRE_GRASS, sea=B.LAVA, coast=B.SAND, mountain=B.STONE, tunnel=B.STONE,
+    inner=B.STONE, ores=_stone_ores(0.05, 0.0, 0.0, 0.0, 0.025), tree_on=B.FIRE_GRASS,
+    tree=B.FIRE_TREE, lava=B.LAVA, spawn=B.FIRE_GRASS, floor=B.FIRE_GRASS, ladder_up=True,
+    ladder_down=True, water_strength=5, water_max=1, mountain_strength=5, mountain_max=1,
+    light=1.0, water_threshold=0.5, sand_threshold=0.6, tree_uniform=0.8, tree_perlin=0.5)
+ICE_REALM = CaveConfig(
+    default=B.ICE_GRASS, sea=B.WATER, coast=B.ICE_GRASS, mountain=B.STONE, tunnel=B.STONE,
+    inner=B.STONE, ores=_stone_ores(0.0, 0.0, 0.005, 0.02, 0.0), tree_on=B.ICE_GRASS,
+    tree=B.ICE_SHRUB, lava=B.WATER, spawn=B.ICE_GRASS, floor=B.ICE_GRASS, ladder_up=True,
+    ladder_down=True, water_strength=5, water_max=1, mountain_strength=17, mountain_max=1.5,
+    light=0.0, water_threshold=0.5, sand_threshold=0.6, tree_uniform=0.4, tree_perlin=0.5)
+GRAVEYARD = CaveConfig(
+    default=B.PATH, sea=B.PATH, coast=B.PATH, mountain=B.WALL, tunnel=B.WALL, inner=B.WALL,
+    ores=((B.WALL, B.WALL_MOSS, 0.1), (B.GRAVE, B.GRAVE2, 0.333), (B.GRAVE, B.GRAVE3, 0.5)),
+    tree_on=B.PATH, tree=B.GRAVE, lava=B.WALL, spawn=B.NECROMANCER, floor=B.PATH,
+    ladder_up=False, ladder_down=False, water_strength=5, water_max=1, mountain_strength=10,
+    mountain_max=10, light=0.0, water_threshold=0.7, sand_threshold=0.6, tree_uniform=0.95,
+    tree_perlin=-1.0)
+
+
+@dataclass(frozen=True)
+class DungeonConfig:
+    special: int            # put in the first room, two cells in from its corner
+    fountain: int
+    rare_floor: int         # what a tenth of the item-free floor becomes
+
+
+DUNGEON = DungeonConfig(special=B.PATH, fountain=B.FOUNTAIN, rare_floor=B.PATH)
+SEWERS = DungeonConfig(special=B.ENCHANTMENT_TABLE_ICE, fountain=B.WATER, rare_floor=B.WATER)
+VAULTS = DungeonConfig(special=B.ENCHANTMENT_TABLE_FIRE, fountain=B.FOUNTAIN, rare_floor=B.PATH)
+
+LEVELS: tuple = (OVERWORLD, DUNGEON, GNOMISH_MINES, SEWERS, VAULTS, TROLL_MINES, FIRE_REALM,
+                 ICE_REALM, GRAVEYARD)
+# what a carved path is made of, per level: a cave level's ladder floor, else dungeon floor
+FLOORS = tuple(int(cfg.floor) if isinstance(cfg, CaveConfig) else int(B.PATH) for cfg in LEVELS)
+
+
+# ---------------------------------------------------------------------------------------------
+# Small helpers
+
+def _distance_from(centre: tuple[int, int]) -> np.ndarray:
+    r = np.arange(ROWS)[:, None] - centre[0]
+    c = np.arange(COLS)[None, :] - centre[1]
+    return np.sqrt(r * r + c * c)
+
+
+_CENTRE_DISTANCE = _distance_from(CENTRE)
+# upstream's TORCH_LIGHT_MAP: a 9x9 patch, 1 at the centre fading to 0 five cells away
+TORCH_LIGHT = np.clip(1 - np.sqrt((np.arange(9)[:, None] - 4) ** 2
+                                  + (np.arange(9)[None, :] - 4) ** 2) / 5.0, 0, 1).astype(np.float32)
+
+
+def _convolve3(mask: np.ndarray, kernel: np.ndarray) -> np.ndarray:
+    """``mask`` convolved with a symmetric 3x3 ``kernel``, zero outside the map (scipy's
+    ``mode="same"``)."""
+    padded = np.pad(mask.astype(np.float64), 1)
+    out = np.zeros(mask.shape)
+    for dr in range(3):
+        for dc in range(3):
+            if kernel[dr, dc]:
+                out += kernel[dr, dc] * padded[dr:dr + mask.shape[0], dc:dc + mask.shape[1]]
+    return out
+
+
+def _pick_cell(rng: np.random.Generator, where: np.ndarray) -> np.ndarray:
+    """A uniformly random cell where ``where`` holds; (0, 0) when it holds nowhere (upstream's
+    ``jax.random.choice`` with all-zero weights picks index 0)."""
+    flat = np.flatnonzero(where)
+    index = flat[rng.integers(len(flat))] if len(flat) else 0
+    return np.array(divmod(int(index), where.shape[1]), np.int32)
+
+
+def _paste_light(light: np.ndarray, patch: np.ndarray, centre: np.ndarray) -> None:
+    """Write a 9x9 ``patch`` centred on ``centre``, shifted inside the map at the edges (as
+    ``jax.lax.dynamic_update_slice`` clamps its start)."""
+    r = min(max(int(centre[0]) - 4, 0), light.shape[0] - 9)
+    c = min(max(int(centre[1]) - 4, 0), light.shape[1] - 9)
+    light[r:r + 9, c:c + 9] = patch
+
+
+# ---------------------------------------------------------------------------------------------
+# Noise levels
+
+@dataclass
+class CaveNoise:
+    """A noise level's four Perlin maps (upstream's resolutions on the 48x48 map)."""
+    water: np.ndarray       # 3x3 lattice
+    mountain: np.ndarray    # 3x3 lattice
+    tunnels: np.ndarray     # 6x24 lattice: long thin lines, used as drawn and transposed
+    trees: np.ndarray       # 12x12 lattice
+
+    @classmethod
+    def draw(cls, rng: np.random.Generator, count: int) -> list["CaveNoise"]:
+        """Noise for ``count`` levels (drawn together: numpy works faster on the batch)."""
+        coarse = fractal(rng, MAP_SIZE, (ROWS // 16, COLS // 16), 2 * count)
+        tunnels = fractal(rng, MAP_SIZE, (ROWS // 8, COLS // 2), count)
+        trees = fractal(rng, MAP_SIZE, (ROWS // 4, COLS // 4), count)
+        return [cls(coarse[2 * i], coarse[2 * i + 1], tunnels[i], trees[i]) for i in range(count)]
+
+
+def cave_level(rng: np.random.Generator, cfg: CaveConfig, noise: CaveNoise | None = None):
+    """One noise level: (block map, item map, light map, down ladder, up ladder)."""
+    shape = MAP_SIZE
+    noise = noise or CaveNoise.draw(rng, 1)[0]
+    water = noise.water.copy()
+    water += np.clip(_CENTRE_DISTANCE / cfg.water_strength, 0, cfg.water_max) - 1
+    block = np.where(water > cfg.water_threshold, cfg.sea, cfg.default).astype(np.int32)
+    block[(water > cfg.sand_threshold) & (block != cfg.sea)] = cfg.coast
+
+    mountain = noise.mountain + 0.05
+    mountain += np.clip(_CENTRE_DISTANCE / cfg.mountain_strength, 0, cfg.mountain_max) - 1
+    rock = mountain > 0.7
+    block[rock] = cfg.mountain
+
+    tunnels = noise.tunnels
+    block[rock & ((tunnels > 0.8) | (tunnels.T > 0.8))] = cfg.tunnel
+    block[(mountain > 0.85) & (water > 0.4)] = cfg.inner
+
+    tree_noise = noise.trees
+    trees = (tree_noise > cfg.tree_perlin) & (rng.random(shape) > cfg.tree_uniform)
+    block[trees & (block == cfg.tree_on)] = cfg.tree
+
+    for replaced, ore, chance in cfg.ores:
+        if chance > 0:
+            block[(block == replaced) & (rng.random(shape) < chance)] = ore
+
+    lava = (mountain > 0.85) & (tree_noise > 0.7)
+    block[lava] = cfg.lava
+    if not (block == B.STONE).any():
+        # upstream's always-diamond step (off by default) still rewrites a random stone cell
+        # with stone; with no stone at all (the graveyard) its draw lands on (0, 0)
+        block[0, 0] = B.STONE
+    block[CENTRE] = cfg.spawn
+
+    items = np.zeros(shape, np.int32)
+    down = _pick_cell(rng, block == cfg.floor)
+    up = _pick_cell(rng, block == cfg.floor)
+    if cfg.ladder_down:
+        items[tuple(down)] = ItemType.LADDER_DOWN
+    if cfg.ladder_up:
+        items[tuple(up)] = ItemType.LADDER_UP
+
+    light = np.full(shape, cfg.light, np.float64)
+    _paste_light(light, TORCH_LIGHT * (1 - cfg.light) + cfg.light, up)
+    if cfg.lava == B.LAVA:
+        light += _convolve3(lava, np.array([[0.2, 0.7, 0.2], [0.7, 1, 0.7], [0.2, 0.7, 0.2]]))
+    light = np.clip(light, 0.0, 1.0).astype(np.float32)
+    return block, items, light, down, up
+
+
+# ---------------------------------------------------------------------------------------------
+# Dungeon levels
+
+CHUNK = 16
+NUM_ROOMS = 8
+MIN_ROOM, MAX_ROOM = 5, 10          # room sides are drawn from [MIN_ROOM, MAX_ROOM)
+PAD = MAX_ROOM                      # rooms are laid out on a map padded by this much
+_CROSS = np.array([[0, 1, 0], [1, 1, 1], [0, 1, 0]])
+
+
+def _place_rooms(rng, block, items, cfg: DungeonConfig) -> np.ndarray:
+    """Eight rooms, each in its own 16x16 chunk (corner jittered up to 10 cells, so rooms
+    may spill into the next chunk or off the map); returns their top-left corners."""
+    chunks_per_row = ROWS // CHUNK
+    free = list(range(chunks_per_row * (COLS // CHUNK)))
+    sizes = rng.integers(MIN_ROOM, MAX_ROOM, (NUM_ROOMS, 2))
+    corners = np.zeros((NUM_ROOMS, 2), np.int64)
+    for i, (h, w) in enumerate(sizes):
+        chunk = free.pop(int(rng.integers(len(free))))
+        r, c = (np.array([chunk % chunks_per_row, chunk // chunks_per_row]) * CHUNK + PAD
+                + rng.integers(0, CHUNK - MIN_ROOM, 2))
+        corners[i] = r, c
+        block[r:r + h, c:c + w] = B.PATH
+        for tr, tc in ((r, c), (r + h - 1, c), (r, c + w - 1), (r + h - 1, c + w - 1)):
+            items[tr, tc] = ItemType.TORCH
+        cr, cc = rng.integers(1, (h - 1, w - 1))
+        block[r + cr, c + cc] = B.CHEST
+        fr, fc = rng.integers(1, (h - 1, w - 1))
+        if rng.random() > 0.5:
+            block[r + fr, c + fc] = cfg.fountain
+    return corners
+
+
+def _dig_corridors(rng, block, corners) -> None:
+    """Each room in turn joins a room already joined (at first only the last room): along the
+    source corner's row to the sink corner's column, then along that column to the sink's row,
+    turning wall to floor."""
+    joined = [NUM_ROOMS - 1]
+    for i, (sr, sc) in enumerate(corners):
+        tr, tc = corners[joined[int(rng.integers(len(joined)))]]
+        lo, hi = sorted((sc, tc))
+        row = block[sr, lo:hi + 1]
+        row[row == B.WALL] = B.PATH
+        lo, hi = sorted((sr, tr))
+        col = block[lo:hi + 1, tc]
+        col[col == B.WALL] = B.PATH
+        if i not in joined:
+            joined.append(i)
+
+
+def dungeon_level(rng: np.random.Generator, cfg: DungeonConfig):
+    """One dungeon level: (block map, item map, light map, down ladder, up ladder)."""
+    block = np.zeros((ROWS + 2 * PAD, COLS + 2 * PAD), np.int32)
+    block[PAD:-PAD, PAD:-PAD] = B.WALL
+    items = np.zeros_like(block)
+    corners = _place_rooms(rng, block, items, cfg)
+    _dig_corridors(rng, block, corners)
+    block[corners[0, 0] + 2, corners[0, 1] + 2] = cfg.special
+    block, items = block[PAD:-PAD, PAD:-PAD], items[PAD:-PAD, PAD:-PAD].copy()
+
+    near_floor = _convolve3(block != B.WALL, _CROSS) > 0.5
+    rare = rng.random(MAP_SIZE) < 0.1
+    floor = np.where(rare & (block == B.PATH) & (items == ItemType.NONE), cfg.rare_floor, block)
+    wall = np.where(rare, B.WALL_MOSS, B.WALL)
+    block = np.where(~near_floor, B.DARKNESS,
+                     np.where(block == B.WALL, wall, floor)).astype(np.int32)
+
+    down = _pick_cell(rng, block == B.PATH)
+    items[tuple(down)] = ItemType.LADDER_DOWN
+    up = _pick_cell(rng, block == B.PATH)
+    items[tuple(up)] = ItemType.LADDER_UP
+    return block, items, np.ones(MAP_SIZE, np.float32), down, up
+
+
+# ---------------------------------------------------------------------------------------------
+# Walkability
+
+_STEPS = ((-1, 0), (1, 0), (0, -1), (0, 1))
+
+
+def walkable(block: np.ndarray) -> np.ndarray:
+    """Cells the player can step onto (not solid, not water, not lava), as upstream's move."""
+    return _WALKABLE[block]
+
+
+def _grow(cells: np.ndarray) -> np.ndarray:
+    """``cells`` and their 4-neighbours (over the last two axes)."""
+    out = cells.copy()
+    out[..., 1:, :] |= cells[..., :-1, :]
+    out[..., :-1, :] |= cells[..., 1:, :]
+    out[..., :, 1:] |= cells[..., :, :-1]
+    out[..., :, :-1] |= cells[..., :, 1:]
+    return out
+
+
+def _flood(inside: np.ndarray, walk: np.ndarray, when: np.ndarray, clock: int) -> int:
+    """Spread ``inside`` (in place) over ``walk`` cells one step a tick, writing each new
+    cell's tick into ``when``; returns the clock after the last tick."""
+    while True:
+        new = _grow(inside) & walk & ~inside
+        if not new.any():
+            return clock
+        clock += 1
+        when[new] = clock
+        inside |= new
+
+
+def _seeds(shape, starts: np.ndarray) -> np.ndarray:
+    seeds = np.zeros(shape, bool)
+    seeds[np.arange(shape[0]), starts[:, 0], starts[:, 1]] = True
+    return seeds
+
+
+def _run_ids(walk: np.ndarray) -> np.ndarray:
+    """Label each maximal horizontal run of ``walk`` cells (along the last axis) with its own
+    number from 1 (0 off the runs)."""
+    starts = walk.copy()
+    starts[..., 1:] &= ~walk[..., :-1]
+    return (np.cumsum(starts.ravel()) * walk.ravel()).reshape(walk.shape)
+
+
+def _spread(inside: np.ndarray, ids: np.ndarray) -> np.ndarray:
+    """``inside`` widened to every whole run it touches."""
+    touched = np.zeros(int(ids.max()) + 1, bool)
+    touched[ids[inside]] = True
+    touched[0] = False
+    return inside | touched[ids]
+
+
+def reach(blocks: np.ndarray, starts: np.ndarray) -> np.ndarray:
+    """Per level of ``blocks``, the cells reachable from ``starts[level]`` by walking
+    (4-neighbour steps onto walkable cells; the start cell counts whatever it holds).
+    Alternately fills whole row runs and whole column runs until nothing changes."""
+    inside = _seeds(blocks.shape, starts)
+    walk = _WALKABLE[blocks] | inside
+    rows, cols = _run_ids(walk), _run_ids(walk.swapaxes(1, 2)).swapaxes(1, 2)
+    while True:
+        grown = _spread(_spread(inside, rows), cols)
+        if np.array_equal(grown, inside):
+            return inside
+        inside = grown
+
+
+def reachable(block: np.ndarray, start) -> np.ndarray:
+    """The cells of one level reachable from ``start`` by walking."""
+    return reach(block[None], np.asarray(start).reshape(1, 2))[0]
+
+
+def _carve_walkable(block: np.ndarray) -> np.ndarray:
+    """What a carved path may cross as it is: walkable cells other than a dungeon's darkness
+    (walkable upstream, but beyond the walls: a path through it is carved into floor too)."""
+    return _WALKABLE[block] & (block != B.DARKNESS)
+
+
+def _carve_to(block: np.ndarray, inside: np.ndarray, when: np.ndarray, clock: int,
+              goal: np.ndarray, floor: int) -> None:
+    """Grow the walked region of one level ring by ring, each ring carving one more layer of
+    carvable cells, until it touches ``goal`` (a mask); then walk back from there through
+    ever-earlier cells, turning the blocking ones into ``floor``. Each ring adds one carved
+    cell to the way back, so it carves the fewest cells any path needs."""
+    walk, carvable = _carve_walkable(block), _CARVABLE[block]
+    while not (inside & goal).any():
+        ring = _grow(inside) & carvable & ~walk & ~inside
+        if not ring.any():
+            return                      # walled off by protected blocks: nothing to do
+        clock += 1
+        when[ring] = clock
+        inside |= ring
+        clock = _flood(inside, walk, when, clock)
+    reached = np.argwhere(inside & goal)
+    r, c = min(map(tuple, reached), key=lambda rc: when[rc])
+    while when[r, c] > 0:
+        if not walk[r, c]:
+            block[r, c] = floor
+        r, c = min(((r + dr, c + dc) for dr, dc in _STEPS
+                    if 0 <= r + dr < block.shape[0] and 0 <= c + dc < block.shape[1]
+                    and inside[r + dr, c + dc]), key=lambda rc: when[rc])
+
+
+def ensure_reachable(blocks: np.ndarray, starts: np.ndarray, goals: np.ndarray) -> None:
+    """On each level ``i`` of ``blocks``, make the cells of the mask ``goals[i]`` touchable by
+    walking from ``starts[i]``: where no walk reaches one, carve the fewest blocking cells into
+    the level's floor. Protected blocks are never carved."""
+    reached = (reach(blocks, starts) & goals).any(axis=(1, 2))
+    for level in np.flatnonzero(~reached):
+        block = blocks[level]
+        inside = _seeds((1, *block.shape), starts[level:level + 1])[0]
+        when = np.zeros(block.shape, np.int64)
+        clock = _flood(inside, _carve_walkable(block), when, 0)
+        _carve_to(block, inside, when, clock, goals[level], FLOORS[level])
+
+
+def arrival(state: State, level: int) -> np.ndarray:
+    """Where the player enters ``level``: the start on level 0, else the level's up ladder."""
+    return np.array(CENTRE, np.int32) if level == 0 else state.up_ladders[level]
+
+
+# ---------------------------------------------------------------------------------------------
+# The whole world
+
+def _inventory(god_mode: bool) -> Inventory:
+    if not god_mode:
+        return Inventory()
+    full = {name: 99 for name in ("wood", "stone", "coal", "iron", "diamond", "sapling", "arrows",
+                                  "torches", "ruby", "sapphire", "books")}
+    return Inventory(**full, pickaxe=4, sword=4, bow=1, potions=np.full(6, 99, np.int32),
+                     armour=np.full(4, 2, np.int32))
+
+
+def light_level(timestep: int, settings: Settings) -> float:
+    """Upstream's daylight curve (``calculate_light_level``), in float32 as upstream."""
+    progress = (timestep / settings.day_length) % 1 + 0.3
+    return float(np.float32(1 - abs(np.cos(np.pi * progress)) ** 3))
+
+
+def _projectile_directions(slots: int) -> np.ndarray:
+    return np.ones((NUM_LEVELS, slots, 2), np.int32)
+
+
+def _state(block, items, light, down, up, potion_mapping, settings: Settings) -> State:
+    """A State on the given levels with upstream's initial player, mobs and counters."""
+    return State(
+        map=block, item_map=items, mob_map=np.zeros(block.shape, bool), light_map=light,
+        down_ladders=down, up_ladders=up,
+        chests_opened=np.zeros(NUM_LEVELS, bool),
+        monsters_killed=np.array([10] + [0] * (NUM_LEVELS - 1), np.int32),  # level 0 starts open
+        player_position=np.array(CENTRE, np.int32), player_level=0,
+        player_direction=int(Action.UP),
+        player_health=9.0, player_food=9, player_drink=9, player_energy=9, player_mana=9,
+        is_sleeping=False, is_resting=False,
+        player_recover=0.0, player_hunger=0.0, player_thirst=0.0, player_fatigue=0.0,
+        player_recover_mana=0.0,
+        player_xp=0, player_dexterity=1, player_strength=1, player_intelligence=1,
+        inventory=_inventory(settings.god_mode),
+        melee_mobs=Mobs.empty(MAX_MELEE), passive_mobs=Mobs.empty(MAX_PASSIVE),
+        ranged_mobs=Mobs.empty(MAX_RANGED),
+        mob_projectiles=Mobs.empty(MAX_MOB_PROJECTILES),
+        mob_projectile_directions=_projectile_directions(MAX_MOB_PROJECTILES),
+        player_projectiles=Mobs.empty(MAX_PLAYER_PROJECTILES),
+        player_projectile_directions=_projectile_directions(MAX_PLAYER_PROJECTILES),
+        growing_plants_positions=np.zeros((MAX_GROWING_PLANTS, 2), np.int32),
+        growing_plants_age=np.zeros(MAX_GROWING_PLANTS, np.int32),
+        growing_plants_mask=np.zeros(MAX_GROWING_PLANTS, bool),
+        potion_mapping=np.asarray(potion_mapping, np.int32),
+        learned_spells=np.zeros(2, bool),
+        sword_enchantment=0, bow_enchantment=0, armour_enchantments=np.zeros(4, np.int32),
+        boss_progress=0, boss_timesteps_to_spawn_this_round=BOSS_FIGHT_SPAWN_TURNS,
+        light_level=light_level(0, settings),
+        achievements=np.zeros(len(Achievement), bool),
+        timestep=0,
+    )
+
+
+def make_playable(state: State) -> None:
+    """Carve, where needed, a walking path on every level from its arrival point to its down
+    ladder, and on the last level to a cell beside the necromancer."""
+    goals = np.zeros(state.map.shape, bool)
+    for level in range(NUM_LEVELS - 1):
+        goals[level][tuple(state.down_ladders[level])] = True
+    for dr, dc in _STEPS:
+        goals[NUM_LEVELS - 1, CENTRE[0] + dr, CENTRE[1] + dc] = True
+    starts = np.stack([arrival(state, level) for level in range(NUM_LEVELS)])
+    ensure_reachable(state.map, starts, goals)
+
+
+def generate(rng: np.random.Generator, settings: Settings = Settings()) -> State:
+    """A new world, as upstream's ``generate_world``: nine levels, the player at the centre of
+    the overworld facing up, no mobs; every ladder walkable-to (see the module docstring)."""
+    noises = iter(CaveNoise.draw(rng, sum(isinstance(cfg, CaveConfig) for cfg in LEVELS)))
+    made = [cave_level(rng, cfg, next(noises)) if isinstance(cfg, CaveConfig)
+            else dungeon_level(rng, cfg) for cfg in LEVELS]
+    block, items, light, down, up = (np.stack(parts) for parts in zip(*made))
+    state = _state(block.astype(np.int32), items.astype(np.int32), light.astype(np.float32),
+                   down.astype(np.int32), up.astype(np.int32), rng.permutation(6), settings)
+    make_playable(state)
+    return state
+
+
+def blank(settings: Settings = Settings(), fill: int = B.GRASS) -> State:
+    """Nine levels of nothing but ``fill``, full light, no items or ladders, with upstream's
+    initial player: a base for hand-built scenarios and tests."""
+    shape = (NUM_LEVELS, *MAP_SIZE)
+    return _state(np.full(shape, int(fill), np.int32), np.zeros(shape, np.int32),
+                  np.ones(shape, np.float32), np.zeros((NUM_LEVELS, 2), np.int32),
+                  np.zeros((NUM_LEVELS, 2), np.int32), np.arange(6), settings)
