@@ -24,7 +24,7 @@ ENGINE_LEVEL = {
     "classics": {"versus"},
     "minigrid": {"engine", "world", "grid", "rooms", "solver"},
     "procgen": {"engine", "mazes", "platforms", "scrolling", "shooting"},
-    "craftax": {"state", "tables"},
+    "craftax": {"state", "tables", "view"},
     "nethack": {"engine", "render", "levels", "boxoban", "boxoban_env", "custom", "lean", "rawstep"},
 }
 SHARED = "common"
