@@ -147,10 +147,11 @@ _IN_BOUNDS_CACHE: dict = {}
 # ---- the grid ----------------------------------------------------------------------------
 
 def _window(array: np.ndarray, r0: int, c0: int, fill) -> np.ndarray:
-    """``array[r0:r0+ROWS, c0:c0+COLS]`` with ``fill`` outside the array (a new array)."""
+    """``array[r0:r0+ROWS, c0:c0+COLS]`` with ``fill`` outside the array (a view when the window
+    lies inside, else a new array)."""
     rows, cols = array.shape
     if r0 >= 0 and c0 >= 0 and r0 + ROWS <= rows and c0 + COLS <= cols:
-        return array[r0:r0 + ROWS, c0:c0 + COLS].copy()
+        return array[r0:r0 + ROWS, c0:c0 + COLS]
     out = np.full((ROWS, COLS), fill, array.dtype)
     ra, rb = max(r0, 0), min(r0 + ROWS, rows)
     ca, cb = max(c0, 0), min(c0 + COLS, cols)
@@ -167,35 +168,46 @@ def is_boss_vulnerable(state: State) -> bool:
             and state.boss_timesteps_to_spawn_this_round <= 0)
 
 
+_LADDER_DOWN = np.uint8(_ITEM0 + ItemType.LADDER_DOWN)
+_LADDER_BLOCKED = np.uint8(_ITEM0 + ItemType.LADDER_DOWN_BLOCKED)
+_NECROMANCER = np.uint8(BlockType.NECROMANCER)
+_NECROMANCER_VULNERABLE = np.uint8(BlockType.NECROMANCER_VULNERABLE)
+_ITEM_CODES = np.arange(len(ItemType), dtype=np.uint8) + _ITEM0
+
+
 def cell_codes(state: State) -> np.ndarray:
     """The window as cell codes (uint8, ROWS x COLS): what each visible cell shows, before the
-    glyph lookup."""
+    glyph lookup. (Few numpy calls: each costs about a microsecond on arrays this small.)"""
     level = state.player_level
-    pr, pc = int(state.player_position[0]), int(state.player_position[1])
+    pr, pc = state.player_position.tolist()
     r0, c0 = pr - HALF_R, pc - HALF_C
     codes = _window(state.map[level], r0, c0, int(BlockType.OUT_OF_BOUNDS)).astype(np.uint8)
     items = _window(state.item_map[level], r0, c0, 0)
-    if items.any():
+    if np.count_nonzero(items):
+        item_codes = _ITEM_CODES[items]
         if state.monsters_killed[level] < KILLS_TO_OPEN_LADDER:
-            items[items == ItemType.LADDER_DOWN] = ItemType.LADDER_DOWN_BLOCKED
-        has_item = items > 0
-        codes[has_item] = items[has_item] + _ITEM0
+            item_codes[item_codes == _LADDER_DOWN] = _LADDER_BLOCKED
+        np.copyto(codes, item_codes, where=items > 0)
     if level == 8 and is_boss_vulnerable(state):
-        codes[codes == BlockType.NECROMANCER] = BlockType.NECROMANCER_VULNERABLE
-    lit = _window(state.light_map[level], r0, c0, 1.0) > VISIBLE_LIGHT   # (outside: see below)
+        codes[codes == _NECROMANCER] = _NECROMANCER_VULNERABLE
+    flat = codes.reshape(-1)
     for k, mobs in enumerate((state.melee_mobs, state.passive_mobs, state.ranged_mobs,
                               state.mob_projectiles, state.player_projectiles)):
-        mask = mobs.mask[level]
-        if not mask.any():
+        live = mobs.mask[level].tolist()
+        if True not in live:
             continue
         base = _MOB0 + 8 * k
-        for slot in np.flatnonzero(mask).tolist():
-            r = int(mobs.position[level, slot, 0]) - r0
-            c = int(mobs.position[level, slot, 1]) - c0
-            if 0 <= r < ROWS and 0 <= c < COLS:
-                codes[r, c] = base + int(mobs.type_id[level, slot])
-    codes[~lit] = _DARK
-    codes[HALF_R, HALF_C] = _PLAYER0 + (0 if state.is_sleeping else state.player_direction)
+        positions, types = mobs.position[level].tolist(), mobs.type_id[level].tolist()
+        for slot, on in enumerate(live):
+            if on:
+                r, c = positions[slot]
+                r -= r0
+                c -= c0
+                if 0 <= r < ROWS and 0 <= c < COLS:
+                    flat[r * COLS + c] = base + types[slot]
+    # unlit cells (outside the map: lit, to keep the map-edge glyph)
+    np.putmask(codes, _window(state.light_map[level], r0, c0, 1.0) <= VISIBLE_LIGHT, _DARK)
+    flat[HALF_R * COLS + HALF_C] = _PLAYER0 + (0 if state.is_sleeping else state.player_direction)
     return codes
 
 
@@ -219,14 +231,17 @@ ARMOUR_SLOTS = ("helmet", "chest", "legs", "boots")
 ENCHANTS = ("", "fire", "ice")
 POTION_COLOURS = ("red", "green", "blue", "pink", "cyan", "yellow")
 SPELLS = ("fireball", "iceball")
+VITALS = ("HP", "Food", "Drink", "Energy", "Mana")
 FACING = {Action.LEFT: "left", Action.RIGHT: "right", Action.UP: "up", Action.DOWN: "down"}
 # the inventory's countable items, in upstream's symbolic observation order
 COUNTED = ("wood", "stone", "coal", "iron", "diamond", "sapphire", "ruby", "sapling", "torches",
            "arrows", "books")
+_COUNTED_LABELS = tuple((name, name.capitalize()) for name in COUNTED)
 
 
 def max_vitals(state: State) -> tuple[int, int, int, int, int]:
-    """Upstream's maxima: health 8+str, food/drink/energy 7+2*dex, mana 6+3*int."""
+    """Upstream's maxima: health 8+str, food/drink/energy 7+2*dex, mana 6+3*int (dexterity,
+    strength and intelligence start at 1)."""
     dex = state.player_dexterity
     return (8 + state.player_strength, 7 + 2 * dex, 7 + 2 * dex, 7 + 2 * dex,
             6 + 3 * state.player_intelligence)
@@ -241,12 +256,15 @@ def hud(state: State, settings: Settings | None = None) -> str:
     """One line: vitals, inventory, equipment, potions, spells, attributes, floor, position,
     facing, light and rest state; empty parts left out, parts joined by `` | ``."""
     del settings   # (the HUD reads only the state; kept for the engine's call shape)
-    mh, mf, md, me, mm = max_vitals(state)
-    parts = [f"HP {_number(state.player_health)}/{mh} Food {state.player_food}/{mf} "
-             f"Drink {state.player_drink}/{md} Energy {state.player_energy}/{me} "
-             f"Mana {state.player_mana}/{mm}"]
+    maxima = max_vitals(state)
+    values = (_number(state.player_health), state.player_food, state.player_drink,
+              state.player_energy, state.player_mana)
+    if len(set(maxima)) == 1:      # (the usual case: every maximum 9) said once
+        parts = [" ".join(f"{name} {v}" for name, v in zip(VITALS, values)) + f" (max {maxima[0]})"]
+    else:
+        parts = [" ".join(f"{name} {v}/{m}" for name, v, m in zip(VITALS, values, maxima))]
     inv = state.inventory
-    counted = [f"{name.capitalize()} {getattr(inv, name)}" for name in COUNTED if getattr(inv, name)]
+    counted = [f"{label} {n}" for name, label in _COUNTED_LABELS if (n := getattr(inv, name))]
     if counted:
         parts.append(" ".join(counted))
     gear = []
@@ -256,27 +274,31 @@ def hud(state: State, settings: Settings | None = None) -> str:
         gear.append(f"{_enchanted(state.sword_enchantment)}{TIERS[inv.sword]} sword")
     if inv.bow:
         gear.append(f"{_enchanted(state.bow_enchantment)}bow")
-    armour = [f"{_enchanted(int(e))}{ARMOUR_TIERS[int(t)]} {slot}"
-              for slot, t, e in zip(ARMOUR_SLOTS, inv.armour.tolist(), state.armour_enchantments.tolist()) if t]
+    armour = []
+    if np.count_nonzero(inv.armour):
+        armour = [f"{_enchanted(e)}{ARMOUR_TIERS[t]} {slot}" for slot, t, e in
+                  zip(ARMOUR_SLOTS, inv.armour.tolist(), state.armour_enchantments.tolist()) if t]
     if gear or armour:
         parts.append(", ".join(gear + armour))
-    potions = [f"{colour} {n}" for colour, n in zip(POTION_COLOURS, inv.potions.tolist()) if n]
-    if potions:
-        parts.append("Potions " + " ".join(potions))
-    spells = [name for name, known in zip(SPELLS, state.learned_spells.tolist()) if known]
-    if spells:
-        parts.append("Spells " + " ".join(spells))
-    if state.player_xp or max(state.player_dexterity, state.player_strength, state.player_intelligence) > 1:
-        parts.append(f"XP {state.player_xp} Dex {state.player_dexterity} Str {state.player_strength} "
-                     f"Int {state.player_intelligence}")
+    if np.count_nonzero(inv.potions):
+        parts.append("Potions " + " ".join(
+            f"{colour} {n}" for colour, n in zip(POTION_COLOURS, inv.potions.tolist()) if n))
+    if np.count_nonzero(state.learned_spells):
+        parts.append("Spells " + " ".join(
+            name for name, known in zip(SPELLS, state.learned_spells.tolist()) if known))
+    levels = [f"{name} {v}" for name, v in (("Dex", state.player_dexterity),
+                                              ("Str", state.player_strength),
+                                              ("Int", state.player_intelligence)) if v > 1]
+    if state.player_xp or levels:
+        parts.append(" ".join([f"XP {state.player_xp}", *levels]))
     level = state.player_level
-    where = f"Floor {level} {LEVEL_NAMES[level]} at {int(state.player_position[0])},{int(state.player_position[1])}"
-    where += f" facing {FACING.get(state.player_direction, '?')}"
+    row, col = state.player_position.tolist()
+    where = f"Floor {level} {LEVEL_NAMES[level]} at {row},{col} facing {FACING.get(state.player_direction, '?')}"
     if level == 0:
         where += " Day" if state.light_level >= 0.5 else " Night"
     elif level in DARK_LEVELS:
         where += " dark"
-    killed = int(state.monsters_killed[level])
+    killed = state.monsters_killed.tolist()[level]
     if level < len(LEVEL_NAMES) - 1 and killed < KILLS_TO_OPEN_LADDER:
         where += f" Kills {killed}/{KILLS_TO_OPEN_LADDER}"
     parts.append(where)
