@@ -19,6 +19,8 @@ mobs, upper case letters and symbols are terrain and items, arrows are the playe
 
 from __future__ import annotations
 
+from codecs import charmap_decode as _charmap_decode
+
 import numpy as np
 
 from .state import Settings, State
@@ -120,7 +122,7 @@ def _vocabulary() -> dict[str, str]:
 
 VOCAB: dict[str, str] = _vocabulary()     # glyph -> meaning, legend order
 
-# cell codes (one byte per cell; str.translate turns the 99 bytes into glyphs in one call)
+# cell codes (one byte per cell)
 _ITEM0 = len(BlockType)                               # item i -> _ITEM0 + i
 _DARK = _ITEM0 + len(ItemType)
 _PLAYER0 = _DARK + 1                                  # direction d -> _PLAYER0 + d (0 asleep)
@@ -130,6 +132,7 @@ _CLASSES = 5                                          # melee, passive, ranged, 
 
 def _translation() -> dict[int, str]:
     table = {int(b): g for b, (g, _) in BLOCK_GLYPHS.items()}
+    table[255] = "\n"
     table.update({_ITEM0 + int(i): g for i, (g, _) in ITEM_GLYPHS.items()})
     table[_DARK] = DARK[0]
     table.update({_PLAYER0 + int(d): g for d, (g, _) in PLAYER_GLYPHS.items()})
@@ -141,6 +144,10 @@ def _translation() -> dict[int, str]:
 
 
 _TABLE = _translation()
+# the same as a 256-character decoding table: codecs' charmap decoder turns the codes into the
+# glyphs in one C call (ten times faster than str.translate with a dict); "\ufffe" marks an
+# unused code (decoding one raises)
+_DECODING = "".join(_TABLE.get(code, "\ufffe") for code in range(256))
 _IN_BOUNDS_CACHE: dict = {}
 
 
@@ -173,15 +180,22 @@ _LADDER_BLOCKED = np.uint8(_ITEM0 + ItemType.LADDER_DOWN_BLOCKED)
 _NECROMANCER = np.uint8(BlockType.NECROMANCER)
 _NECROMANCER_VULNERABLE = np.uint8(BlockType.NECROMANCER_VULNERABLE)
 _ITEM_CODES = np.arange(len(ItemType), dtype=np.uint8) + _ITEM0
+_VISIBLE_LIGHT32 = np.float32(VISIBLE_LIGHT)      # (light_map is float32: compare as upstream)
+_NEWLINE = 255                                   # the code of a row's end
+assert _MOB0 + 8 * _CLASSES <= _NEWLINE
 
 
-def cell_codes(state: State) -> np.ndarray:
-    """The window as cell codes (uint8, ROWS x COLS): what each visible cell shows, before the
-    glyph lookup. (Few numpy calls: each costs about a microsecond on arrays this small.)"""
+def _coded_lines(state: State) -> np.ndarray:
+    """The window as cell codes (uint8), ROWS x (COLS + 1): each row ends in a newline code, so
+    one ``translate`` and ``splitlines`` make the rows. Few numpy calls: on arrays this small each
+    costs about as much as the work in it."""
     level = state.player_level
     pr, pc = state.player_position.tolist()
     r0, c0 = pr - HALF_R, pc - HALF_C
-    codes = _window(state.map[level], r0, c0, int(BlockType.OUT_OF_BOUNDS)).astype(np.uint8)
+    lines = np.empty((ROWS, COLS + 1), np.uint8)
+    lines[:, COLS] = _NEWLINE
+    codes = lines[:, :COLS]
+    codes[...] = _window(state.map[level], r0, c0, int(BlockType.OUT_OF_BOUNDS))
     items = _window(state.item_map[level], r0, c0, 0)
     if np.count_nonzero(items):
         item_codes = _ITEM_CODES[items]
@@ -190,7 +204,8 @@ def cell_codes(state: State) -> np.ndarray:
         np.copyto(codes, item_codes, where=items > 0)
     if level == 8 and is_boss_vulnerable(state):
         codes[codes == _NECROMANCER] = _NECROMANCER_VULNERABLE
-    flat = codes.reshape(-1)
+    flat = lines.reshape(-1)
+    width = COLS + 1
     for k, mobs in enumerate((state.melee_mobs, state.passive_mobs, state.ranged_mobs,
                               state.mob_projectiles, state.player_projectiles)):
         live = mobs.mask[level].tolist()
@@ -204,17 +219,24 @@ def cell_codes(state: State) -> np.ndarray:
                 r -= r0
                 c -= c0
                 if 0 <= r < ROWS and 0 <= c < COLS:
-                    flat[r * COLS + c] = base + types[slot]
+                    flat[r * width + c] = base + types[slot]
     # unlit cells (outside the map: lit, to keep the map-edge glyph)
-    np.putmask(codes, _window(state.light_map[level], r0, c0, 1.0) <= VISIBLE_LIGHT, _DARK)
-    flat[HALF_R * COLS + HALF_C] = _PLAYER0 + (0 if state.is_sleeping else state.player_direction)
-    return codes
+    dark = np.less_equal(_window(state.light_map[level], r0, c0, 1.0), _VISIBLE_LIGHT32)
+    if np.count_nonzero(dark):
+        np.putmask(codes, dark, _DARK)
+    flat[HALF_R * width + HALF_C] = _PLAYER0 + (0 if state.is_sleeping else state.player_direction)
+    return lines
+
+
+def cell_codes(state: State) -> np.ndarray:
+    """The window as cell codes (uint8, ROWS x COLS): what each visible cell shows, before the
+    glyph lookup (``_TABLE``)."""
+    return _coded_lines(state)[:, :COLS]
 
 
 def grid(state: State) -> list[str]:
     """The 9 rows of 11 glyphs around the player."""
-    text = cell_codes(state).tobytes().decode("latin-1").translate(_TABLE)
-    return [text[i:i + COLS] for i in range(0, ROWS * COLS, COLS)]
+    return _charmap_decode(_coded_lines(state).tobytes(), "strict", _DECODING)[0].splitlines()
 
 
 def legend(rows: list[str]) -> list[tuple[str, str]]:
@@ -364,11 +386,11 @@ def rules_text(recipes=RECIPES, mining=MINING_TIERS) -> str:
     recipes, mining tiers, vitals, sleep, floors and the ladder gate."""
     tiers = ", ".join(f"{BLOCK_GLYPHS[b][1]} {TIERS[t] if t else 'hand'}" for b, t in mining)
     return "\n".join([
-        "You are the arrow at the centre (it shows your facing); position is row,col.",
-        "Moving into a blocked cell turns you to face it. DO acts on the faced cell: mine, "
-        "attack, eat (cow, ripe plant), drink water, open a chest.",
+        "The view is 9x11 around you; your arrow shows your facing; positions are row,col. A move "
+        "turns you even when blocked. DO acts on the faced cell: mine, attack, eat (cow, ripe "
+        "plant), drink water, open a chest.",
         f"Pickaxe needed: {tiers}.",
-        "Crafting and placing, with a crafting table or furnace adjacent:",
+        "Crafting and placing (table, furnace: one must be among your 8 neighbours):",
         *_recipe_lines(recipes),
         "Food, drink and energy drop over time; at 0 they cost HP, when all are up HP regrows. "
         "SLEEP restores energy.",
