@@ -11,10 +11,11 @@ Two deliberate differences from upstream's window: a cell outside the map has it
 drawn. Drawing order is upstream's renderer's: block, item over it, mobs, projectiles, and
 the two substitutions it makes (a down ladder is shown blocked until the floor's kill count
 reaches 8; the necromancer is shown vulnerable when no melee or ranged mob is on its floor and
-its summoning wave is over).
+its summoning wave is over; only on the graveyard, the one floor where upstream lets it be hit).
 
-Every glyph has exactly one meaning (``VOCAB``, glyph -> meaning, in legend order); letters are
-mobs, upper case letters and symbols are terrain and items, arrows are the player.
+Every glyph has exactly one meaning (``VOCAB``, glyph -> meaning, in legend order).
+Lower-case letters are mobs; upper-case letters and most ASCII symbols are terrain and items;
+projectiles are ``/ ) ' (`` and a few non-ASCII symbols; arrows (or ``@`` asleep) are the player.
 """
 
 from __future__ import annotations
@@ -128,11 +129,13 @@ _DARK = _ITEM0 + len(ItemType)
 _PLAYER0 = _DARK + 1                                  # direction d -> _PLAYER0 + d (0 asleep)
 _MOB0 = _PLAYER0 + 5                                  # class k, type t -> _MOB0 + 8k + t
 _CLASSES = 5                                          # melee, passive, ranged, mob/player shots
+_NEWLINE = 255                                        # the code of a row's end
+assert _MOB0 + 8 * _CLASSES <= _NEWLINE
 
 
 def _translation() -> dict[int, str]:
     table = {int(b): g for b, (g, _) in BLOCK_GLYPHS.items()}
-    table[255] = "\n"
+    table[_NEWLINE] = "\n"
     table.update({_ITEM0 + int(i): g for i, (g, _) in ITEM_GLYPHS.items()})
     table[_DARK] = DARK[0]
     table.update({_PLAYER0 + int(d): g for d, (g, _) in PLAYER_GLYPHS.items()})
@@ -148,7 +151,6 @@ _TABLE = _translation()
 # glyphs in one C call (ten times faster than str.translate with a dict); "\ufffe" marks an
 # unused code (decoding one raises)
 _DECODING = "".join(_TABLE.get(code, "\ufffe") for code in range(256))
-_IN_BOUNDS_CACHE: dict = {}
 
 
 # ---- the grid ----------------------------------------------------------------------------
@@ -181,8 +183,6 @@ _NECROMANCER = np.uint8(BlockType.NECROMANCER)
 _NECROMANCER_VULNERABLE = np.uint8(BlockType.NECROMANCER_VULNERABLE)
 _ITEM_CODES = np.arange(len(ItemType), dtype=np.uint8) + _ITEM0
 _VISIBLE_LIGHT32 = np.float32(VISIBLE_LIGHT)      # (light_map is float32: compare as upstream)
-_NEWLINE = 255                                   # the code of a row's end
-assert _MOB0 + 8 * _CLASSES <= _NEWLINE
 
 
 def _coded_lines(state: State) -> np.ndarray:
