@@ -1,0 +1,399 @@
+"""The Craftax observation: the 9 x 11 glyph grid around the player, the HUD line, and the rules
+text of the system prompt.
+
+What is visible follows upstream's symbolic observation (``render_craftax_symbolic``): the
+window is upstream's ``OBS_DIM`` (9 rows, 11 columns) centred on the player; a cell whose
+``light_map`` value is at most 0.05 shows nothing (blocks, items and mobs alike) and is drawn as
+the darkness glyph. On the overworld the light map is all ones, so night hides nothing there
+(upstream's symbolic observation only reports the light level; the HUD says Day or Night).
+Two deliberate differences from upstream's window: a cell outside the map has its own glyph
+(upstream's padding is unlit, so it shows as darkness), and the player's own cell is always
+drawn. Drawing order is upstream's renderer's: block, item over it, mobs, projectiles, and
+the two substitutions it makes (a down ladder is shown blocked until the floor's kill count
+reaches 8; the necromancer is shown vulnerable when no melee or ranged mob is on its floor and
+its summoning wave is over; only on the graveyard, the one floor where upstream lets it be hit).
+
+Every glyph has exactly one meaning (``VOCAB``, glyph -> meaning, in legend order).
+Lower-case letters are mobs; upper-case letters and most ASCII symbols are terrain and items;
+projectiles are ``/ ) ' (`` and a few non-ASCII symbols; arrows (or ``@`` asleep) are the player.
+"""
+
+from __future__ import annotations
+
+from codecs import charmap_decode as _charmap_decode
+
+import numpy as np
+
+from .state import Settings, State
+from .tables import Action, BlockType, ItemType, ProjectileType
+
+ROWS, COLS = 9, 11                       # upstream's OBS_DIM
+HALF_R, HALF_C = ROWS // 2, COLS // 2
+VISIBLE_LIGHT = 0.05                     # a cell is seen when its light_map value exceeds this
+KILLS_TO_OPEN_LADDER = 8                 # upstream's MONSTERS_KILLED_TO_CLEAR_LEVEL
+
+LEVEL_NAMES = ("Overworld", "Dungeon", "Gnomish Mines", "Sewers", "Vaults", "Troll Mines",
+               "Fire Realm", "Ice Realm", "Graveyard")
+DARK_LEVELS = frozenset({2, 5, 7, 8})    # world_gen_configs' default_light == 0
+
+# ---- glyphs ------------------------------------------------------------------------------
+
+BLOCK_GLYPHS: dict[BlockType, tuple[str, str]] = {
+    BlockType.INVALID: ("?", "invalid block"),
+    BlockType.OUT_OF_BOUNDS: ("%", "outside the map"),
+    BlockType.GRASS: (".", "grass"),
+    BlockType.WATER: ("~", "water"),
+    BlockType.STONE: ("#", "stone"),
+    BlockType.TREE: ("T", "tree"),
+    BlockType.WOOD: ("W", "wood block"),
+    BlockType.PATH: ("_", "path"),
+    BlockType.COAL: ("C", "coal"),
+    BlockType.IRON: ("I", "iron"),
+    BlockType.DIAMOND: ("D", "diamond"),
+    BlockType.CRAFTING_TABLE: ("+", "crafting table"),
+    BlockType.FURNACE: ("F", "furnace"),
+    BlockType.SAND: (":", "sand"),
+    BlockType.LAVA: ("L", "lava"),
+    BlockType.PLANT: (";", "sapling (unripe)"),
+    BlockType.RIPE_PLANT: ("P", "ripe plant"),
+    BlockType.WALL: ("=", "wall"),
+    BlockType.DARKNESS: ("X", "void (solid)"),
+    BlockType.WALL_MOSS: ("&", "mossy wall"),
+    BlockType.STALAGMITE: ("^", "stalagmite"),
+    BlockType.SAPPHIRE: ("S", "sapphire"),
+    BlockType.RUBY: ("R", "ruby"),
+    BlockType.CHEST: ("$", "chest"),
+    BlockType.FOUNTAIN: ("O", "fountain"),
+    BlockType.FIRE_GRASS: (",", "fire grass"),
+    BlockType.ICE_GRASS: ("*", "ice grass"),
+    BlockType.GRAVEL: ("\"", "gravel"),
+    BlockType.FIRE_TREE: ("Y", "fire tree"),
+    BlockType.ICE_SHRUB: ("V", "ice shrub"),
+    BlockType.ENCHANTMENT_TABLE_FIRE: ("E", "fire enchant table"),
+    BlockType.ENCHANTMENT_TABLE_ICE: ("U", "ice enchant table"),
+    BlockType.NECROMANCER: ("N", "necromancer (shielded)"),
+    BlockType.GRAVE: ("G", "grave"),
+    BlockType.GRAVE2: ("H", "grave (cross)"),
+    BlockType.GRAVE3: ("J", "grave (tomb)"),
+    BlockType.NECROMANCER_VULNERABLE: ("!", "necromancer (vulnerable)"),
+}
+ITEM_GLYPHS: dict[ItemType, tuple[str, str]] = {
+    ItemType.TORCH: ("|", "torch"),
+    ItemType.LADDER_DOWN: (">", "ladder down"),
+    ItemType.LADDER_UP: ("<", "ladder up"),
+    ItemType.LADDER_DOWN_BLOCKED: ("]", "ladder down (locked)"),
+}
+DARK = ("-", "dark")
+PLAYER_GLYPHS: dict[int, tuple[str, str]] = {     # by player_direction; 0 = asleep
+    Action.LEFT: ("←", "you (facing left)"),
+    Action.RIGHT: ("→", "you (facing right)"),
+    Action.UP: ("↑", "you (facing up)"),
+    Action.DOWN: ("↓", "you (facing down)"),
+    0: ("@", "you (asleep)"),
+}
+# mobs by class and type_id: upstream's texture lists (melee / passive / ranged)
+MELEE_GLYPHS = (("z", "zombie"), ("g", "gnome warrior"), ("o", "orc soldier"), ("l", "lizard"),
+                ("n", "knight"), ("t", "troll"), ("p", "pigman"), ("f", "frost troll"))
+PASSIVE_GLYPHS = (("c", "cow"), ("b", "bat"), ("s", "snail"))
+RANGED_GLYPHS = (("k", "skeleton"), ("a", "gnome archer"), ("m", "orc mage"), ("q", "kobold"),
+                 ("r", "knight archer"), ("d", "deep thing"), ("e", "fire elemental"),
+                 ("i", "ice elemental"))
+# projectiles by owner and kind; upstream draws ARROW/ARROW2, FIREBALL/FIREBALL2 and
+# ICEBALL/ICEBALL2 with one texture each, so a kind covers both members of a pair
+PROJECTILE_KINDS = ("arrow", "dagger", "fireball", "iceball", "slimeball")
+PROJECTILE_KIND = {ProjectileType.ARROW: 0, ProjectileType.ARROW2: 0, ProjectileType.DAGGER: 1,
+                   ProjectileType.FIREBALL: 2, ProjectileType.FIREBALL2: 2,
+                   ProjectileType.ICEBALL: 3, ProjectileType.ICEBALL2: 3,
+                   ProjectileType.SLIMEBALL: 4}
+MOB_PROJECTILE_GLYPHS = (("/", "enemy arrow"), (")", "enemy dagger"), ("°", "enemy fireball"),
+                         ("×", "enemy iceball"), ("§", "enemy slimeball"))
+PLAYER_PROJECTILE_GLYPHS = (("'", "your arrow"), ("(", "your dagger"), ("•", "your fireball"),
+                            ("±", "your iceball"), ("·", "your slimeball"))
+
+
+def _vocabulary() -> dict[str, str]:
+    entries = [*PLAYER_GLYPHS.values(), *MELEE_GLYPHS, *PASSIVE_GLYPHS, *RANGED_GLYPHS,
+               *MOB_PROJECTILE_GLYPHS, *PLAYER_PROJECTILE_GLYPHS, *ITEM_GLYPHS.values(),
+               *BLOCK_GLYPHS.values(), DARK]
+    vocab = dict(entries)
+    assert len(vocab) == len(entries), "a glyph with two meanings"
+    assert len(set(vocab.values())) == len(entries), "two glyphs with one meaning"
+    return vocab
+
+
+VOCAB: dict[str, str] = _vocabulary()     # glyph -> meaning, legend order
+
+# cell codes (one byte per cell)
+_ITEM0 = len(BlockType)                               # item i -> _ITEM0 + i
+_DARK = _ITEM0 + len(ItemType)
+_PLAYER0 = _DARK + 1                                  # direction d -> _PLAYER0 + d (0 asleep)
+_MOB0 = _PLAYER0 + 5                                  # class k, type t -> _MOB0 + 8k + t
+_CLASSES = 5                                          # melee, passive, ranged, mob/player shots
+_NEWLINE = 255                                        # the code of a row's end
+assert _MOB0 + 8 * _CLASSES <= _NEWLINE
+
+
+def _translation() -> dict[int, str]:
+    table = {int(b): g for b, (g, _) in BLOCK_GLYPHS.items()}
+    table[_NEWLINE] = "\n"
+    table.update({_ITEM0 + int(i): g for i, (g, _) in ITEM_GLYPHS.items()})
+    table[_DARK] = DARK[0]
+    table.update({_PLAYER0 + int(d): g for d, (g, _) in PLAYER_GLYPHS.items()})
+    for k, glyphs in enumerate((MELEE_GLYPHS, PASSIVE_GLYPHS, RANGED_GLYPHS)):
+        table.update({_MOB0 + 8 * k + t: g for t, (g, _) in enumerate(glyphs)})
+    for k, glyphs in ((3, MOB_PROJECTILE_GLYPHS), (4, PLAYER_PROJECTILE_GLYPHS)):
+        table.update({_MOB0 + 8 * k + int(t): glyphs[kind][0] for t, kind in PROJECTILE_KIND.items()})
+    return table
+
+
+_TABLE = _translation()
+# the same as a 256-character decoding table: codecs' charmap decoder turns the codes into the
+# glyphs in one C call (ten times faster than str.translate with a dict); "\ufffe" marks an
+# unused code (decoding one raises)
+_DECODING = "".join(_TABLE.get(code, "\ufffe") for code in range(256))
+
+
+# ---- the grid ----------------------------------------------------------------------------
+
+def _window(array: np.ndarray, r0: int, c0: int, fill) -> np.ndarray:
+    """``array[r0:r0+ROWS, c0:c0+COLS]`` with ``fill`` outside the array (a view when the window
+    lies inside, else a new array)."""
+    rows, cols = array.shape
+    if r0 >= 0 and c0 >= 0 and r0 + ROWS <= rows and c0 + COLS <= cols:
+        return array[r0:r0 + ROWS, c0:c0 + COLS]
+    out = np.full((ROWS, COLS), fill, array.dtype)
+    ra, rb = max(r0, 0), min(r0 + ROWS, rows)
+    ca, cb = max(c0, 0), min(c0 + COLS, cols)
+    if ra < rb and ca < cb:
+        out[ra - r0:rb - r0, ca - c0:cb - c0] = array[ra:rb, ca:cb]
+    return out
+
+
+def is_boss_vulnerable(state: State) -> bool:
+    """Upstream's ``is_boss_vulnerable``: no melee or ranged mob on the player's floor and the
+    summoning wave over."""
+    level = state.player_level
+    return (not state.melee_mobs.mask[level].any() and not state.ranged_mobs.mask[level].any()
+            and state.boss_timesteps_to_spawn_this_round <= 0)
+
+
+_LADDER_DOWN = np.uint8(_ITEM0 + ItemType.LADDER_DOWN)
+_LADDER_BLOCKED = np.uint8(_ITEM0 + ItemType.LADDER_DOWN_BLOCKED)
+_NECROMANCER = np.uint8(BlockType.NECROMANCER)
+_NECROMANCER_VULNERABLE = np.uint8(BlockType.NECROMANCER_VULNERABLE)
+_ITEM_CODES = np.arange(len(ItemType), dtype=np.uint8) + _ITEM0
+_VISIBLE_LIGHT32 = np.float32(VISIBLE_LIGHT)      # (light_map is float32: compare as upstream)
+
+
+def _coded_lines(state: State) -> np.ndarray:
+    """The window as cell codes (uint8), ROWS x (COLS + 1): each row ends in a newline code, so
+    one ``translate`` and ``splitlines`` make the rows. Few numpy calls: on arrays this small each
+    costs about as much as the work in it."""
+    level = state.player_level
+    pr, pc = state.player_position.tolist()
+    r0, c0 = pr - HALF_R, pc - HALF_C
+    lines = np.empty((ROWS, COLS + 1), np.uint8)
+    lines[:, COLS] = _NEWLINE
+    codes = lines[:, :COLS]
+    codes[...] = _window(state.map[level], r0, c0, int(BlockType.OUT_OF_BOUNDS))
+    items = _window(state.item_map[level], r0, c0, 0)
+    if np.count_nonzero(items):
+        item_codes = _ITEM_CODES[items]
+        if state.monsters_killed[level] < KILLS_TO_OPEN_LADDER:
+            item_codes[item_codes == _LADDER_DOWN] = _LADDER_BLOCKED
+        np.copyto(codes, item_codes, where=items > 0)
+    if level == 8 and is_boss_vulnerable(state):
+        codes[codes == _NECROMANCER] = _NECROMANCER_VULNERABLE
+    flat = lines.reshape(-1)
+    width = COLS + 1
+    for k, mobs in enumerate((state.melee_mobs, state.passive_mobs, state.ranged_mobs,
+                              state.mob_projectiles, state.player_projectiles)):
+        live = mobs.mask[level].tolist()
+        if True not in live:
+            continue
+        base = _MOB0 + 8 * k
+        positions, types = mobs.position[level].tolist(), mobs.type_id[level].tolist()
+        for slot, on in enumerate(live):
+            if on:
+                r, c = positions[slot]
+                r -= r0
+                c -= c0
+                if 0 <= r < ROWS and 0 <= c < COLS:
+                    flat[r * width + c] = base + types[slot]
+    # unlit cells (outside the map: lit, to keep the map-edge glyph)
+    dark = np.less_equal(_window(state.light_map[level], r0, c0, 1.0), _VISIBLE_LIGHT32)
+    if np.count_nonzero(dark):
+        np.putmask(codes, dark, _DARK)
+    flat[HALF_R * width + HALF_C] = _PLAYER0 + (0 if state.is_sleeping else state.player_direction)
+    return lines
+
+
+def cell_codes(state: State) -> np.ndarray:
+    """The window as cell codes (uint8, ROWS x COLS): what each visible cell shows, before the
+    glyph lookup (``_TABLE``)."""
+    return _coded_lines(state)[:, :COLS]
+
+
+def grid(state: State) -> list[str]:
+    """The 9 rows of 11 glyphs around the player."""
+    return _charmap_decode(_coded_lines(state).tobytes(), "strict", _DECODING)[0].splitlines()
+
+
+def legend(rows: list[str]) -> list[tuple[str, str]]:
+    """The ``(glyph, meaning)`` pairs of the glyphs in ``rows``, in ``VOCAB`` order."""
+    text = "".join(rows)
+    return [(g, m) for g, m in VOCAB.items() if g in text]
+
+
+# ---- the HUD -----------------------------------------------------------------------------
+
+TIERS = ("", "wood", "stone", "iron", "diamond")
+ARMOUR_TIERS = ("", "iron", "diamond")
+ARMOUR_SLOTS = ("helmet", "chest", "legs", "boots")
+ENCHANTS = ("", "fire", "ice")
+POTION_COLOURS = ("red", "green", "blue", "pink", "cyan", "yellow")
+SPELLS = ("fireball", "iceball")
+VITALS = ("HP", "Food", "Drink", "Energy", "Mana")
+FACING = {Action.LEFT: "left", Action.RIGHT: "right", Action.UP: "up", Action.DOWN: "down"}
+# the inventory's countable items, in upstream's symbolic observation order
+COUNTED = ("wood", "stone", "coal", "iron", "diamond", "sapphire", "ruby", "sapling", "torches",
+           "arrows", "books")
+_COUNTED_LABELS = tuple((name, name.capitalize()) for name in COUNTED)
+
+
+def max_vitals(state: State) -> tuple[int, int, int, int, int]:
+    """Upstream's maxima: health 8+str, food/drink/energy 7+2*dex, mana 6+3*int (dexterity,
+    strength and intelligence start at 1)."""
+    dex = state.player_dexterity
+    return (8 + state.player_strength, 7 + 2 * dex, 7 + 2 * dex, 7 + 2 * dex,
+            6 + 3 * state.player_intelligence)
+
+
+def _number(x: float) -> str:
+    r = round(x, 1)
+    return str(int(r)) if r == int(r) else str(r)
+
+
+def hud(state: State, settings: Settings | None = None) -> str:
+    """One line: vitals, inventory, equipment, potions, spells, attributes, floor, position,
+    facing, light and rest state; empty parts left out, parts joined by `` | ``."""
+    del settings   # (the HUD reads only the state; kept for the engine's call shape)
+    maxima = max_vitals(state)
+    values = (_number(state.player_health), state.player_food, state.player_drink,
+              state.player_energy, state.player_mana)
+    if len(set(maxima)) == 1:      # (the usual case: every maximum 9) said once
+        parts = [" ".join(f"{name} {v}" for name, v in zip(VITALS, values)) + f" (max {maxima[0]})"]
+    else:
+        parts = [" ".join(f"{name} {v}/{m}" for name, v, m in zip(VITALS, values, maxima))]
+    inv = state.inventory
+    counted = [f"{label} {n}" for name, label in _COUNTED_LABELS if (n := getattr(inv, name))]
+    if counted:
+        parts.append(" ".join(counted))
+    gear = []
+    if inv.pickaxe:
+        gear.append(f"{TIERS[inv.pickaxe]} pickaxe")
+    if inv.sword:
+        gear.append(f"{_enchanted(state.sword_enchantment)}{TIERS[inv.sword]} sword")
+    if inv.bow:
+        gear.append(f"{_enchanted(state.bow_enchantment)}bow")
+    armour = []
+    if np.count_nonzero(inv.armour):
+        armour = [f"{_enchanted(e)}{ARMOUR_TIERS[t]} {slot}" for slot, t, e in
+                  zip(ARMOUR_SLOTS, inv.armour.tolist(), state.armour_enchantments.tolist()) if t]
+    if gear or armour:
+        parts.append(", ".join(gear + armour))
+    if np.count_nonzero(inv.potions):
+        parts.append("Potions " + " ".join(
+            f"{colour} {n}" for colour, n in zip(POTION_COLOURS, inv.potions.tolist()) if n))
+    if np.count_nonzero(state.learned_spells):
+        parts.append("Spells " + " ".join(
+            name for name, known in zip(SPELLS, state.learned_spells.tolist()) if known))
+    levels = [f"{name} {v}" for name, v in (("Dex", state.player_dexterity),
+                                              ("Str", state.player_strength),
+                                              ("Int", state.player_intelligence)) if v > 1]
+    if state.player_xp or levels:
+        parts.append(" ".join([f"XP {state.player_xp}", *levels]))
+    level = state.player_level
+    row, col = state.player_position.tolist()
+    where = f"Floor {level} {LEVEL_NAMES[level]} at {row},{col} facing {FACING.get(state.player_direction, '?')}"
+    if level == 0:
+        where += " Day" if state.light_level >= 0.5 else " Night"
+    elif level in DARK_LEVELS:
+        where += " dark"
+    killed = state.monsters_killed.tolist()[level]
+    if level < len(LEVEL_NAMES) - 1 and killed < KILLS_TO_OPEN_LADDER:
+        where += f" Kills {killed}/{KILLS_TO_OPEN_LADDER}"
+    parts.append(where)
+    if state.is_sleeping:
+        parts.append("Sleeping")
+    elif state.is_resting:
+        parts.append("Resting")
+    return " | ".join(parts)
+
+
+def _enchanted(kind: int) -> str:
+    return f"{ENCHANTS[kind]} " if kind else ""
+
+
+# ---- the rules text ----------------------------------------------------------------------
+
+# (action name, cost, needs a crafting table nearby, needs a furnace nearby): upstream's
+# game_logic; tables.py's recipe table replaces this list when it lands (see rules_text)
+RECIPES: tuple[tuple[str, dict[str, int], bool, bool], ...] = (
+    ("MAKE_WOOD_PICKAXE", {"wood": 1}, True, False),
+    ("MAKE_STONE_PICKAXE", {"wood": 1, "stone": 1}, True, False),
+    ("MAKE_IRON_PICKAXE", {"wood": 1, "stone": 1, "iron": 1, "coal": 1}, True, True),
+    ("MAKE_DIAMOND_PICKAXE", {"wood": 1, "diamond": 3}, True, False),
+    ("MAKE_WOOD_SWORD", {"wood": 1}, True, False),
+    ("MAKE_STONE_SWORD", {"wood": 1, "stone": 1}, True, False),
+    ("MAKE_IRON_SWORD", {"wood": 1, "stone": 1, "iron": 1, "coal": 1}, True, True),
+    ("MAKE_DIAMOND_SWORD", {"wood": 1, "diamond": 2}, True, False),
+    ("MAKE_IRON_ARMOUR", {"iron": 3, "coal": 3}, True, True),
+    ("MAKE_DIAMOND_ARMOUR", {"diamond": 3}, True, False),
+    ("MAKE_ARROW", {"wood": 1, "stone": 1}, True, False),
+    ("MAKE_TORCH", {"wood": 1, "coal": 1}, True, False),
+    ("PLACE_TABLE", {"wood": 2}, False, False),
+    ("PLACE_FURNACE", {"stone": 1}, False, False),
+    ("PLACE_STONE", {"stone": 1}, False, False),
+    ("PLACE_TORCH", {"torches": 1}, False, False),
+    ("PLACE_PLANT", {"sapling": 1}, False, False),
+)
+# the pickaxe tier a block needs (0: none)
+MINING_TIERS = ((BlockType.TREE, 0), (BlockType.STONE, 1), (BlockType.COAL, 1),
+                (BlockType.STALAGMITE, 1), (BlockType.IRON, 2), (BlockType.DIAMOND, 3),
+                (BlockType.SAPPHIRE, 4), (BlockType.RUBY, 4))
+
+
+def _recipe_lines(recipes) -> list[str]:
+    """Recipes grouped by where they are made, those with equal costs merged:
+    ``table: wood pickaxe/wood sword 1 wood; ...``."""
+    places: dict[str, dict[tuple, list[str]]] = {}
+    for name, cost, table, furnace in recipes:
+        place = "table+furnace" if table and furnace else "table" if table else \
+            "furnace" if furnace else "anywhere"
+        what = name.lower().removeprefix("make_").replace("_", " ")
+        places.setdefault(place, {}).setdefault(tuple(cost.items()), []).append(what)
+    lines = []
+    for place, groups in places.items():
+        items = [f"{'/'.join(names)} {'+'.join(f'{n} {item}' for item, n in cost)}"
+                 for cost, names in groups.items()]
+        lines.append(f"{place}: " + "; ".join(items))
+    return lines
+
+
+def rules_text(recipes=RECIPES, mining=MINING_TIERS) -> str:
+    """The rules section of the Craftax system prompt, generated from the tables: DO, the
+    recipes, mining tiers, vitals, sleep, floors and the ladder gate."""
+    tiers = ", ".join(f"{BLOCK_GLYPHS[b][1]} {TIERS[t] if t else 'hand'}" for b, t in mining)
+    return "\n".join([
+        "The view is 9x11 around you; your arrow shows your facing; positions are row,col. A move "
+        "turns you even when blocked. DO acts on the faced cell: mine, attack, eat (cow, ripe "
+        "plant), drink water, open a chest.",
+        f"Pickaxe needed: {tiers}.",
+        "Crafting and placing (table, furnace: one must be among your 8 neighbours):",
+        *_recipe_lines(recipes),
+        "Food, drink and energy drop over time; at 0 they cost HP, when all are up HP regrows. "
+        "SLEEP restores energy.",
+        f"DESCEND on > once {KILLS_TO_OPEN_LADDER} monsters on the floor are killed (] until "
+        "then); ASCEND on <. On dark floors only cells near light show.",
+    ])
