@@ -80,7 +80,7 @@ class Planner:
                 nxt = (cell[0] + dr, cell[1] + dc)
                 if nxt in prev or not (0 <= nxt[0] < rows and 0 <= nxt[1] < cols):
                     continue
-                if not rules.walkable(s, level, nxt):
+                if not rules.player_can_enter(s, *nxt):
                     continue
                 prev[nxt] = cell
                 if (nxt in goals) if onto else any(_beside(nxt, g) for g in goals):
@@ -144,7 +144,7 @@ class Planner:
         level = self.state.player_level
         for direction in (Action.RIGHT, Action.DOWN, Action.LEFT, Action.UP) * 2:
             ahead = rules.facing(self.state)
-            if rules.in_bounds(self.state, ahead) and self.state.map[level][ahead] != block:
+            if rules.in_bounds(self.state, *ahead) and self.state.map[level][ahead] != block:
                 before = int(self.state.map[level][ahead])
                 if not self.act(action):
                     return False

@@ -684,8 +684,10 @@ _ENCHANT = frozenset(int(a) for a in (Action.ENCHANT_SWORD, Action.ENCHANT_ARMOU
 _LEVEL_UP = frozenset(_ATTRIBUTES)
 
 
-def step(state: State, action: int, settings, draws) -> float:
-    """One upstream step (see the module docstring); returns upstream's reward."""
+def step(state: State, action: int, settings, draws, after_mobs=None) -> float:
+    """One upstream step (see the module docstring); returns upstream's reward. ``after_mobs``,
+    if given, is called with the state after the mobs moved and before any spawn (a task
+    counting kills looks at the mob slots then, before a spawn can reuse one)."""
     before = state.achievements.tobytes()
     health = state.player_health
     action = int(action)
@@ -716,6 +718,8 @@ def step(state: State, action: int, settings, draws) -> float:
         move(state, action, settings)
 
     mobs.update(state, settings, draws)
+    if after_mobs is not None:
+        after_mobs(state)
     if settings.spawning:
         mobs.spawn(state, settings, draws)
 

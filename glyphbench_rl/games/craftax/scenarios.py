@@ -241,7 +241,7 @@ class NearLadder:
     dmax: int
 
     def apply(self, state, rng, ctx) -> None:
-        from .rules import walkable
+        from .rules import player_can_enter
         level = state.player_level
         target = tuple(int(v) for v in state.down_ladders[level])
         seen, frontier, found = {target}, [target], []
@@ -251,7 +251,7 @@ class NearLadder:
                 for dr, dc in ((1, 0), (-1, 0), (0, 1), (0, -1)):
                     p = (r + dr, c + dc)
                     if p not in seen and 0 <= p[0] < state.map.shape[1] and 0 <= p[1] < state.map.shape[2] \
-                            and walkable(state, level, p):
+                            and player_can_enter(state, *p):
                         seen.add(p)
                         nxt.append(p)
                         if self.dmin <= max(abs(p[0] - target[0]), abs(p[1] - target[1])) <= self.dmax \
@@ -289,7 +289,6 @@ class Context:
         self.reserve: list[tuple[str, int, int]] = []
 
     def admit(self, state, rng) -> None:
-        from .mobs import add_mob
         waiting = []
         for name, dmin, dmax in self.reserve:
             spots = [p for p in _cells(state, dmin, dmax) if _free(state, *p, self.floor)]
@@ -346,8 +345,9 @@ class Scenario:
                 getattr(state, k)[:] = v
             else:
                 setattr(state, k, v)
-        from .rules import light_level
-        state.light_level = light_level(state.timestep, self.settings)
+        from .tables import light_level
+        state.light_level = (light_level(state.timestep, self.settings.day_length)
+                             if self.settings.daylight else 1.0)
         ctx = Context(state)
         for edit in self.edits:
             edit.apply(state, rng, ctx)
@@ -372,7 +372,7 @@ class Scenario:
     def intro(self) -> str:
         from .view import LEVEL_NAMES
         where = "on the surface" if not self.floor else f"on floor {self.floor} ({LEVEL_NAMES[self.floor]})"
-        return f"You play Craftax, starting {where}."
+        return f"You start {where}."
 
     def reward_text(self) -> str:
         parts = []
@@ -420,3 +420,15 @@ def variant(base: Scenario, **kw) -> Scenario:
     s = replace(base, **kw)
     SCENARIOS[s.name] = s
     return s
+
+
+def add_mob(state, name: str, cell) -> bool:
+    """TEMPORARY (replaced by mobs.add_mob at merge)."""
+    from .bestiary import MOB_NAMES
+    from .mobs import _add_mob
+    kind = next(k for k, names in enumerate(MOB_NAMES) if name in names)
+    group = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)[kind]
+    if group.mask[state.player_level].all():
+        return False
+    _add_mob(state, group, kind, MOB_NAMES[kind].index(name), tuple(cell))
+    return True

@@ -63,6 +63,7 @@ PLACED = {Action.PLACE_STONE: BlockType.STONE, Action.PLACE_TABLE: BlockType.CRA
 MOB_KINDS = ("passive_mobs", "melee_mobs", "ranged_mobs")
 CASTS = (Action.CAST_FIREBALL, Action.CAST_ICEBALL)
 DRINKS = tuple(range(Action.DRINK_POTION_RED, Action.DRINK_POTION_YELLOW + 1))
+NIGHT_LIGHT = 0.5     # below this light level the surface is in night (the HUD says so too)
 POTION_EFFECTS = ("heal", "harm", "mana", "drain", "energy", "tire")   # upstream's effect order
 
 
@@ -146,7 +147,7 @@ class Tally:
     @staticmethod
     def _facing_block(state) -> int:
         r, c = rules.facing(state)
-        if not rules.in_bounds(state, (r, c)):
+        if not rules.in_bounds(state, r, c):
             return -1
         return int(state.map[state.player_level, r, c])
 
@@ -191,7 +192,7 @@ class Tally:
             colour = action - Action.DRINK_POTION_RED
             if state.inventory.potions[colour] < self._potions[colour]:
                 self.potions[POTION_EFFECTS[int(state.potion_mapping[colour])]] += 1
-        if state.player_level == 0 and state.light_level < view.NIGHT_LIGHT:
+        if state.player_level == 0 and state.light_level < NIGHT_LIGHT:
             counts["night"] += 1
         if state.player_level > counts["deepest"]:
             counts["deepest"] = state.player_level
@@ -206,8 +207,7 @@ class CraftaxTask(GlyphTask):
     title = "Craftax"
     Params = CraftaxParams
     ACTIONS = ACTIONS
-    glyphs = view.GLYPHS
-    extra_chars = view.EXTRA_CHARS
+    glyphs = view.VOCAB
     default_max_turns = 200
     rules = "{intro} {objective} {game_rules}"
     rewards = "{reward_text}"
@@ -222,7 +222,7 @@ class CraftaxTask(GlyphTask):
 
     def prompt_fields(self) -> dict:
         s = self.scenario
-        return {"intro": s.intro(), "objective": s.objective, "game_rules": view.rules_text(s.topics),
+        return {"intro": s.intro(), "objective": s.objective, "game_rules": view.rules_text(),
                 "reward_text": s.reward_text(), "ends_text": s.ends_text()}
 
     def _setup(self, rng: np.random.Generator) -> None:
