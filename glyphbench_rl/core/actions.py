@@ -26,7 +26,9 @@ class ActionSet:
     """Ordered action names with descriptions.
 
     ``groups`` lets many similar actions (one per board cell, say) share one description line in
-    the system prompt: each group is ``(description, [names...])``.
+    the system prompt: each group is ``(description, [names...])``. Actions are numbered singles
+    first, then the groups' in turn, unless ``order`` lists every name in the order wanted (an
+    engine's own action numbers, say); the prompt still shows the groups as one line each.
     """
 
     __slots__ = ("_actions", "_exact", "_folded", "_aliases", "_groups", "noop")
@@ -38,6 +40,7 @@ class ActionSet:
         groups: Sequence[tuple[str, Sequence[str]]] = (),
         aliases: Mapping[str, str] | None = None,
         noop: str | None = None,
+        order: Sequence[str] | None = None,
     ) -> None:
         items = [Action(n, d) for n, d in actions]
         self._groups: list[tuple[str, tuple[str, ...]]] = []
@@ -45,6 +48,11 @@ class ActionSet:
             names = tuple(names)
             self._groups.append((description, names))
             items.extend(Action(n, description) for n in names)
+        if order is not None:   # indices in a given order (an engine's own action numbers)
+            by_name = {a.name: a for a in items}
+            if sorted(order) != sorted(by_name):
+                raise ValueError("order must name every action exactly once")
+            items = [by_name[n] for n in order]
         if not items:
             raise ValueError("an ActionSet needs at least one action")
         self._actions: tuple[Action, ...] = tuple(items)

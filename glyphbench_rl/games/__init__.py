@@ -10,6 +10,7 @@ another game (``tests/test_import_graph.py`` checks all of this).
 
 from . import arcade  # noqa: F401
 from . import classics  # noqa: F401
+from . import craftax  # noqa: F401
 from . import minigrid  # noqa: F401
 from . import nethack  # noqa: F401
 from . import procgen  # noqa: F401

@@ -24,36 +24,27 @@ from .bestiary import MOB_NAMES
 from .scenarios import SCENARIOS, Scenario, parse_test
 from .tables import Action, Achievement, BlockType
 
-ACTION_TEXT = {
-    "NOOP": "do nothing", "LEFT": "move or face west", "RIGHT": "move or face east",
-    "UP": "move or face north", "DOWN": "move or face south",
-    "DO": "act on the facing cell: collect, mine, attack, drink, eat, open",
-    "SLEEP": "sleep until energy is full", "PLACE_STONE": "place stone ahead",
-    "PLACE_TABLE": "place a crafting table ahead", "PLACE_FURNACE": "place a furnace ahead",
-    "PLACE_PLANT": "plant a sapling on grass ahead", "REST": "rest until health is full",
-    "DESCEND": "go down the ladder you stand on", "ASCEND": "go up the ladder you stand on",
-    "SHOOT_ARROW": "shoot an arrow ahead", "PLACE_TORCH": "place a torch ahead",
-    "READ_BOOK": "read a book to learn a spell", "CAST_FIREBALL": "cast a fireball ahead",
-    "CAST_ICEBALL": "cast an iceball ahead",
-}
-
-
-def _describe(name: str) -> str:
-    if name in ACTION_TEXT:
-        return ACTION_TEXT[name]
-    words = name.lower().split("_")
-    if words[0] == "make":
-        return "craft " + " ".join(words[1:]).replace("armour", "armour piece")
-    if words[0] == "drink":
-        return f"drink a {words[-1]} potion"
-    if words[0] == "enchant":
-        return f"enchant your {words[-1]} at a facing enchantment table"
-    if words[:2] == ["level", "up"]:
-        return f"spend 1 XP on {words[-1]}"
-    return name.lower().replace("_", " ")
-
-
-ACTIONS = ActionSet([(a.name, _describe(a.name)) for a in Action], noop="NOOP")
+SINGLE = [
+    ("NOOP", "do nothing"),
+    ("DO", "act on the faced cell: chop, mine, attack, eat (cow, ripe plant), drink (water), open a chest"),
+    ("SLEEP", "sleep until energy is full (monsters hit a sleeper harder)"),
+    ("REST", "rest until health is full"),
+    ("DESCEND", "go down the ladder you stand on"), ("ASCEND", "go up the ladder you stand on"),
+    ("SHOOT_ARROW", "shoot an arrow the way you face (needs a bow)"),
+    ("READ_BOOK", "read a book: learn a spell"),
+]
+GROUPS = [
+    ("move one cell that way, or turn to face it when blocked", ("LEFT", "RIGHT", "UP", "DOWN")),
+    ("place it on the faced cell", ("PLACE_STONE", "PLACE_TABLE", "PLACE_FURNACE", "PLACE_PLANT", "PLACE_TORCH")),
+    ("craft the named item (recipes above)", tuple(a.name for a in Action if a.name.startswith("MAKE_"))),
+    ("cast the spell the way you face (2 mana)", ("CAST_FIREBALL", "CAST_ICEBALL")),
+    ("drink a potion of that colour", tuple(a.name for a in Action if a.name.startswith("DRINK_POTION_"))),
+    ("enchant it at a faced enchantment table (9 mana; ruby at fire, sapphire at ice)",
+     ("ENCHANT_SWORD", "ENCHANT_ARMOUR", "ENCHANT_BOW")),
+    ("spend 1 XP on that attribute", ("LEVEL_UP_DEXTERITY", "LEVEL_UP_STRENGTH", "LEVEL_UP_INTELLIGENCE")),
+]
+# numbered as upstream's Action (index i is Action(i)); the prompt groups similar actions
+ACTIONS = ActionSet(SINGLE, groups=GROUPS, noop="NOOP", order=[a.name for a in Action])
 
 # inventory fields the tally follows (counts; tools are tiers)
 ITEMS = ("wood", "stone", "coal", "iron", "diamond", "sapling", "ruby", "sapphire", "arrows",
