@@ -6,7 +6,10 @@
 passive mobs (wander), ranged mobs (keep their distance, shoot), mob projectiles, player
 projectiles. ``spawn(state, settings, draws)`` spawns at most one mob of each class.
 ``boss_logic`` and ``damage_necromancer`` are the necromancer's rules, ``attack_mob`` and
-``hurt_player`` the damage rules that the player's own actions share (``rules``).
+``hurt_player`` / ``damage_to_player`` the damage rules; they exist only here, and the step
+(``rules``) and the view (``is_boss_vulnerable``) import them. ``add_mob`` places a named mob
+(for scenarios). The mob tables are ``bestiary``'s; solid blocks, level and boss-fight
+constants and the player's side of combat (armour, the sleeping factor) are ``tables``'.
 
 Randomness comes from ``draws``, one draw per choice that upstream makes at random, and only
 when the choice matters (upstream draws for every slot, live or not; we draw for live mobs).

@@ -331,7 +331,8 @@ def _enchanted(kind: int) -> str:
 # (action name, cost, needs a crafting table nearby, needs a furnace nearby), from tables.py's
 # RECIPES (made at a table, some also at a furnace) and PLACING (anywhere)
 RECIPES: tuple[tuple[str, dict[str, int], bool, bool], ...] = (
-    *((action.name, dict(recipe.cost), True, recipe.furnace) for action, recipe in CRAFTING.items()),
+    *((action.name, dict(recipe.cost), True, recipe.furnace)
+      for action, recipe in CRAFTING.items()),
     *((action.name, {item: cost}, False, False) for action, (item, cost, _, _) in PLACING.items()),
 )
 # the pickaxe tier each mined block needs (0: none), from tables.py's MINING, lowest tier first

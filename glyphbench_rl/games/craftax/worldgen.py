@@ -494,7 +494,7 @@ def _state(block, items, light, down, up, potion_mapping, settings: Settings) ->
         learned_spells=np.zeros(2, bool),
         sword_enchantment=0, bow_enchantment=0, armour_enchantments=np.zeros(4, np.int32),
         boss_progress=0, boss_timesteps_to_spawn_this_round=BOSS_FIGHT_SPAWN_TURNS,
-        light_level=float(np.float32(light_level(0, settings.day_length))),   # float32, as upstream
+        light_level=float(np.float32(light_level(0, settings.day_length))),  # upstream: float32
         achievements=np.zeros(len(Achievement), bool),
         timestep=0,
     )

@@ -58,7 +58,7 @@ def test_game_mechanics_constants():
     assert T.BOSS_FIGHT_EXTRA_DAMAGE == C.BOSS_FIGHT_EXTRA_DAMAGE
     assert T.BOSS_FIGHT_SPAWN_TURNS == C.BOSS_FIGHT_SPAWN_TURNS
     assert T.BOSS_LEVEL == T.NUM_LEVELS - 1 == StaticEnvParams().num_levels - 1
-    assert np.allclose(T.TORCH_LIGHT_MAP, np.asarray(C.TORCH_LIGHT_MAP))
+    np.testing.assert_array_equal(T.TORCH_LIGHT_MAP, np.asarray(C.TORCH_LIGHT_MAP))
 
 
 def test_dark_levels_follow_the_world_generation_configs():
