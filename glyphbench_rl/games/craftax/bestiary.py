@@ -130,16 +130,12 @@ MOB_ACHIEVEMENT_MAP = (
 )
 MOB_ACHIEVEMENT_MAP = tuple(tuple(int(a) for a in row) for row in MOB_ACHIEVEMENT_MAP)
 
-# Game mechanics.
-MONSTERS_KILLED_TO_CLEAR_LEVEL = 8   # below this, monsters spawn at three times the rate
-BOSS_FIGHT_EXTRA_DAMAGE = 0.5        # damage to the player is x1.5 on the boss level
-BOSS_FIGHT_SPAWN_TURNS = 7           # turns of a spawn wave after each hit on the necromancer
-BOSS_LEVEL = 8                       # the graveyard (num_levels - 1)
-MOB_DESPAWN_DISTANCE = 14            # upstream EnvParams default (Settings.mob_despawn_distance)
+# Game mechanics of mobs. (The level constants the mobs read, BOSS_LEVEL,
+# MONSTERS_KILLED_TO_CLEAR_LEVEL and the boss fight's, and the player's side of combat, the
+# sleeping factor, armour defence and the food of an eaten mob, are in ``tables``; the despawn
+# distance is ``Settings.mob_despawn_distance``.)
 MELEE_ATTACK_COOLDOWN = 5            # turns a melee mob waits after an attack
 RANGED_ATTACK_COOLDOWN = 4           # turns a ranged mob waits after a shot
-SLEEPING_DAMAGE_FACTOR = 3.5         # melee damage x (1 + 2.5) on a sleeping player
-PASSIVE_FOOD = 6                     # food from eating a passive mob (melee kills only)
 
 # Slots per level (upstream StaticEnvParams).
 MAX_MOBS = {MobType.PASSIVE: MAX_PASSIVE, MobType.MELEE: MAX_MELEE, MobType.RANGED: MAX_RANGED}

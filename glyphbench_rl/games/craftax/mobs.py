@@ -6,7 +6,10 @@
 passive mobs (wander), ranged mobs (keep their distance, shoot), mob projectiles, player
 projectiles. ``spawn(state, settings, draws)`` spawns at most one mob of each class.
 ``boss_logic`` and ``damage_necromancer`` are the necromancer's rules, ``attack_mob`` and
-``hurt_player`` the damage rules that the player's own actions share (``rules``).
+``hurt_player`` / ``damage_to_player`` the damage rules; they exist only here, and the step
+(``rules``) and the view (``is_boss_vulnerable``) import them. ``add_mob`` places a named mob
+(for scenarios). The mob tables are ``bestiary``'s; solid blocks, level and boss-fight
+constants and the player's side of combat (armour, the sleeping factor) are ``tables``'.
 
 Randomness comes from ``draws``, one draw per choice that upstream makes at random, and only
 when the choice matters (upstream draws for every slot, live or not; we draw for live mobs).
@@ -17,27 +20,17 @@ from __future__ import annotations
 
 import numpy as np
 
-from .bestiary import (BOSS_FIGHT_EXTRA_DAMAGE, BOSS_FIGHT_SPAWN_TURNS, BOSS_LEVEL,
-                       FLOOR_MOB_MAPPING, FLOOR_MOB_SPAWN_CHANCE, MELEE_ATTACK_COOLDOWN,
-                       MOB_ACHIEVEMENT_MAP, MOB_TYPE_COLLISION_MAPPING, MOB_TYPE_DAMAGE_MAPPING,
-                       MOB_TYPE_DEFENCE_MAPPING, MOB_TYPE_HEALTH_MAPPING,
-                       MONSTERS_KILLED_TO_CLEAR_LEVEL, PASSIVE_FOOD, PROJECTILE_DAMAGE,
-                       RANGED_ATTACK_COOLDOWN, RANGED_MOB_TYPE_TO_PROJECTILE_TYPE_MAPPING,
-                       SLEEPING_DAMAGE_FACTOR)
+from .bestiary import (FLOOR_MOB_MAPPING, FLOOR_MOB_SPAWN_CHANCE, MELEE_ATTACK_COOLDOWN,
+                       MOB_ACHIEVEMENT_MAP, MOB_NAMES, MOB_TYPE_COLLISION_MAPPING,
+                       MOB_TYPE_DAMAGE_MAPPING, MOB_TYPE_DEFENCE_MAPPING, MOB_TYPE_HEALTH_MAPPING,
+                       PROJECTILE_DAMAGE, RANGED_ATTACK_COOLDOWN,
+                       RANGED_MOB_TYPE_TO_PROJECTILE_TYPE_MAPPING)
 from .state import MAX_MELEE, MAX_PASSIVE, MAX_RANGED, Mobs, Settings, State
-from .tables import Achievement, BlockType, MobType, ProjectileType
+from .tables import (ARMOUR_DEFENCE_PER_TIER, BOSS_FIGHT_EXTRA_DAMAGE, BOSS_FIGHT_SPAWN_TURNS,
+                     BOSS_LEVEL, COW_FOOD, ENCHANTED_ARMOUR_DEFENCE, IS_SOLID,
+                     MONSTERS_KILLED_TO_CLEAR_LEVEL, SLEEPING_MELEE_FACTOR, Achievement, BlockType,
+                     MobType, ProjectileType, max_food)
 
-# Upstream's SOLID_BLOCKS (constants.py). Defined here privately until the lead unifies it with
-# tables.py's copy: [block id] -> solid.
-_SOLID_IDS = (
-    BlockType.STONE, BlockType.TREE, BlockType.COAL, BlockType.IRON, BlockType.DIAMOND,
-    BlockType.CRAFTING_TABLE, BlockType.FURNACE, BlockType.PLANT, BlockType.RIPE_PLANT,
-    BlockType.WALL, BlockType.WALL_MOSS, BlockType.STALAGMITE, BlockType.RUBY, BlockType.SAPPHIRE,
-    BlockType.CHEST, BlockType.FOUNTAIN, BlockType.FIRE_TREE, BlockType.ENCHANTMENT_TABLE_FIRE,
-    BlockType.ENCHANTMENT_TABLE_ICE, BlockType.GRAVE, BlockType.GRAVE2, BlockType.GRAVE3,
-    BlockType.NECROMANCER,
-)
-_SOLID = tuple(b in _SOLID_IDS for b in range(len(BlockType)))
 _WATER, _LAVA = int(BlockType.WATER), int(BlockType.LAVA)
 # A mob projectile that flies into these breaks them (they become PATH).
 _BREAKABLE = (int(BlockType.CRAFTING_TABLE), int(BlockType.FURNACE))
@@ -108,8 +101,9 @@ def damage_to_player(state: State, damage: tuple) -> float:
     over the four pieces), each fire (ice) enchanted piece 20% of fire (ice) damage; damage is
     x1.5 on the boss level."""
     enchant = state.armour_enchantments.tolist()
-    defence = (0.1 * sum(state.inventory.armour.tolist()), 0.2 * enchant.count(1),
-               0.2 * enchant.count(2))
+    defence = (ARMOUR_DEFENCE_PER_TIER * sum(state.inventory.armour.tolist()),
+               ENCHANTED_ARMOUR_DEFENCE * enchant.count(1),
+               ENCHANTED_ARMOUR_DEFENCE * enchant.count(2))
     scale = 1.0 + BOSS_FIGHT_EXTRA_DAMAGE if state.player_level == BOSS_LEVEL else 1.0
     return sum((1.0 - d) * x * scale for d, x in zip(defence, damage))
 
@@ -119,7 +113,7 @@ def hurt_player(state: State, damage: tuple, melee: bool = False) -> float:
     them. A melee blow on a sleeping player does x3.5 damage and earns WAKE_UP (upstream's
     melee mobs do both; projectiles do neither, they only wake). Returns the health lost."""
     if melee and state.is_sleeping:
-        damage = tuple(SLEEPING_DAMAGE_FACTOR * x for x in damage)
+        damage = tuple(SLEEPING_MELEE_FACTOR * x for x in damage)
         state.achievements[Achievement.WAKE_UP] = True
     lost = damage_to_player(state, damage)
     state.player_health -= lost
@@ -165,7 +159,7 @@ def attack_mob(state: State, row: int, col: int, damage: tuple, can_eat: bool) -
         hit, killed = _attack_class(state, state.passive_mobs, MobType.PASSIVE, row, col, damage,
                                     can_eat)
         if killed and can_eat:
-            state.player_food = min(7 + 2 * state.player_dexterity, state.player_food + PASSIVE_FOOD)
+            state.player_food = min(max_food(state.player_dexterity), state.player_food + COW_FOOD)
             state.player_hunger = 0.0
     if not hit:
         hit, killed = _attack_class(state, state.ranged_mobs, MobType.RANGED, row, col, damage,
@@ -206,7 +200,7 @@ class _Turn:
         if self.occupied.item(row, col) or (row == self.p_row and col == self.p_col):
             return False
         block = self.map.item(row, col)
-        if _SOLID[block]:
+        if IS_SOLID[block]:
             return False
         if block == _WATER:
             return not collision[1]
@@ -329,7 +323,7 @@ def _move_mob_projectile(turn: _Turn, slot: int) -> None:
     flies_on = 0 <= new_row < turn.rows and 0 <= new_col < turn.cols
     if flies_on:
         block = turn.map.item(new_row, new_col)
-        flies_on = not (hit_player or _SOLID[block] or turn.occupied.item(new_row, new_col))
+        flies_on = not (hit_player or IS_SOLID[block] or turn.occupied.item(new_row, new_col))
         if block in _BREAKABLE:
             turn.map[new_row, new_col] = BlockType.PATH
     if hit_player:
@@ -369,7 +363,7 @@ def _move_player_projectile(turn: _Turn, slot: int) -> None:
                and turn.occupied.item(new_row, new_col)
                and attack_mob(state, new_row, new_col, damage, False)[0]))
     flies_on = (not hit and 0 <= new_row < turn.rows and 0 <= new_col < turn.cols
-                and not _SOLID[turn.map.item(new_row, new_col)])
+                and not IS_SOLID[turn.map.item(new_row, new_col)])
     projectiles.position[level, slot, 0], projectiles.position[level, slot, 1] = new_row, new_col
     if not flies_on:
         projectiles.mask[level, slot] = False
@@ -468,14 +462,49 @@ def _spawn_cell(state: State, allowed: np.ndarray, near: int, far: int, draws):
     return r0 + k // width, c0 + k % width
 
 
-def _add_mob(state: State, mobs: Mobs, kind: int, type_id: int, cell: tuple) -> None:
+def _add_mob(state: State, mobs: Mobs, kind: int, type_id: int, cell: tuple,
+             cooldown: int | None = None) -> bool:
+    """A mob of class ``kind`` and type ``type_id`` at ``cell`` of the player's level, in the
+    class's first free slot, at its type's full health; False (nothing changed) when the class
+    has no free slot. The slot keeps its attack cooldown (upstream: a spawned mob inherits it)
+    unless ``cooldown`` is given."""
     level = state.player_level
-    slot = int(np.flatnonzero(~mobs.mask[level])[0])
+    free = np.flatnonzero(~mobs.mask[level])
+    if free.size == 0:
+        return False
+    slot = int(free[0])
     mobs.position[level, slot] = cell
     mobs.health[level, slot] = MOB_TYPE_HEALTH_MAPPING[type_id][kind]
     mobs.mask[level, slot] = True
     mobs.type_id[level, slot] = type_id
+    if cooldown is not None:
+        mobs.attack_cooldown[level, slot] = cooldown
     state.mob_map[level, cell[0], cell[1]] = True
+    return True
+
+
+# bestiary.MOB_NAMES: name -> (class, type_id)
+MOB_BY_NAME = {name: (kind, type_id) for kind, names in enumerate(MOB_NAMES)
+               for type_id, name in enumerate(names)}
+
+
+def add_mob(state: State, name: str, cell) -> bool:
+    """Place a mob named ``name`` (``bestiary.MOB_NAMES``) at ``cell`` (row, col) of the player's
+    level: full health for its type, attack cooldown 0, the mob map set. False (nothing changed)
+    when the cell is off the map, solid, or taken by a mob or the player, or when the mob's
+    class has no free slot. (For scenarios; the game's own spawning is ``spawn``.)"""
+    if name not in MOB_BY_NAME:
+        raise ValueError(f"unknown mob {name!r}; known: {', '.join(MOB_BY_NAME)}")
+    kind, type_id = MOB_BY_NAME[name]
+    level = state.player_level
+    row, col = int(cell[0]), int(cell[1])
+    rows, cols = state.map.shape[1:]
+    if not (0 <= row < rows and 0 <= col < cols) or IS_SOLID[state.map.item(level, row, col)]:
+        return False
+    if state.mob_map.item(level, row, col) or (row, col) == tuple(state.player_position.tolist()):
+        return False
+    group = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)[kind]
+    return _add_mob(state, group, kind, type_id, (row, col), cooldown=0)
 
 
 def spawn(state: State, settings: Settings, draws) -> None:
@@ -522,6 +551,6 @@ def spawn(state: State, settings: Settings, draws) -> None:
             _add_mob(state, state.ranged_mobs, MobType.RANGED, type_id, cell)
 
 
-__all__ = ["update", "spawn", "boss_logic", "damage_necromancer", "attack_mob", "hurt_player",
-           "damage_to_player", "player_projectile_damage", "is_fighting_boss",
+__all__ = ["update", "spawn", "add_mob", "boss_logic", "damage_necromancer", "attack_mob",
+           "hurt_player", "damage_to_player", "player_projectile_damage", "is_fighting_boss",
            "is_boss_spawn_wave", "is_boss_vulnerable", "has_beaten_boss"]

@@ -8,7 +8,7 @@ weights of the achievements unlocked this step plus 0.1 x the change in health).
 2. ``change_floor`` (DESCEND / ASCEND, and the first-entry achievement and XP of a level);
 3. the action's own rule: ``craft``, ``do`` (attack, mine, drink, eat, open chests, hit the
    necromancer), ``place``, ``shoot_arrow``, ``cast_spell``, ``drink_potion``, ``read_book``,
-   ``enchant``; then ``boss_round`` (every step) and ``level_up``;
+   ``enchant``; then the boss rule (``mobs.boss_logic``, every step) and ``level_up``;
 4. ``move`` (the move actions only);
 5. ``mobs.update`` and ``mobs.spawn`` (``settings.spawning`` off skips the spawn);
 6. ``grow_plants``, ``update_intrinsics``, ``clip_vitals``, ``inventory_achievements``;
@@ -18,9 +18,11 @@ Randomness is explicit: ``draws`` (``games.common.lanes.Draws``) gives the unifo
 the sapling found on grass, chest loot, the spell a book teaches and the armour piece an
 enchantment lands on, one draw per upstream random choice, taken only when the choice matters.
 
-Helpers other modules use: ``in_bounds``, ``is_in_mob``, ``is_free``, ``player_damage_vector``,
-``damage_against``, ``player_damage`` (damage a mob's attack does to the player) and
-``attack_mob`` (the player's hit on a mob at a cell, with the kill bookkeeping).
+Helpers other modules use: ``in_bounds``, ``is_in_mob``, ``is_free``, ``player_can_enter`` and
+``player_damage_vector`` (the player's melee damage). The combat and boss rules the player's
+actions share with the mobs live once, in ``mobs``: ``mobs.attack_mob`` (a hit on a mob, with the
+kill bookkeeping), ``mobs.hurt_player`` / ``mobs.damage_to_player`` (a mob's damage to the
+player), ``mobs.damage_necromancer`` and ``mobs.boss_logic``; the mob tables are ``bestiary``'s.
 """
 
 from __future__ import annotations
@@ -30,20 +32,19 @@ import numpy as np
 from . import mobs
 from .state import MAX_PLAYER_PROJECTILES, State
 from .tables import (
-    ACHIEVEMENT_REWARD, ARMOUR_DEFENCE_PER_TIER, BOOK_CHEST_LEVELS, BOSS_FIGHT_EXTRA_DAMAGE,
-    BOSS_FIGHT_SPAWN_TURNS, BOSS_LEVEL, BOW_CHEST_LEVEL, CAN_PLACE_ITEM, CHEST_ARROWS,
-    CHEST_ORE_CHANCE, CHEST_ORES, CHEST_POTION, CHEST_TOOL_CHANCE, CHEST_TOOL_TIER_WEIGHTS,
-    CHEST_TORCH, CLOSE_BLOCKS, COW_FOOD, DERECOVER_LIMIT, DERECOVER_RATE, DEXTERITY_DECAY,
-    DIRECTIONS, DRINK_BLOCKS, ENCHANT_DAMAGE_FRACTION, ENCHANT_MANA_COST, ENCHANT_TABLES,
-    ENCHANTED_ARMOUR_DEFENCE, FATIGUE_LIMIT, IS_SOLID, FATIGUE_RESTED, GOD_MODE_MIN_HEALTH, HUNGER_LIMIT,
-    INTELLIGENCE_ENCHANT_BONUS, INTELLIGENCE_MANA_BONUS, INVENTORY_ACHIEVEMENTS,
+    ACHIEVEMENT_REWARD, BOOK_CHEST_LEVELS, BOSS_LEVEL, BOW_CHEST_LEVEL, CAN_PLACE_ITEM,
+    CHEST_ARROWS, CHEST_ORES, CHEST_ORE_CHANCE, CHEST_POTION, CHEST_TOOL_CHANCE,
+    CHEST_TOOL_TIER_WEIGHTS, CHEST_TORCH, CLOSE_BLOCKS, DERECOVER_LIMIT, DERECOVER_RATE,
+    DEXTERITY_DECAY, DIRECTIONS, DRINK_BLOCKS, ENCHANT_DAMAGE_FRACTION, ENCHANT_MANA_COST,
+    ENCHANT_TABLES, FATIGUE_LIMIT, FATIGUE_RESTED, GOD_MODE_MIN_HEALTH, HUNGER_LIMIT,
+    INTELLIGENCE_ENCHANT_BONUS, INTELLIGENCE_MANA_BONUS, INVENTORY_ACHIEVEMENTS, IS_SOLID,
     LEARN_SPELL_ACHIEVEMENT, LEVEL_ACHIEVEMENT, MANA_LIMIT, MANA_RATE, MINING_BY_BLOCK,
     MONSTERS_KILLED_TO_CLEAR_LEVEL, MOVES, NUM_LEVELS, PLACING, PLANT_RIPE_AGE, PLAYER_ARROW,
     POTION_ACTIONS, POTION_EFFECTS, RECIPE_BY_ACTION, RECOVER_LIMIT, RECOVER_RATE,
-    RIPE_PLANT_FOOD, SAPLING_CHANCE, SLEEP_INTRINSIC_RATE, SLEEPING_MELEE_FACTOR,
-    SPELL_MANA_COST, SPELLS, STACK_LIMIT, STRENGTH_DAMAGE_BONUS, SWORD_DAMAGE, THIRST_LIMIT,
-    TORCH_LIGHT_HALF, TORCH_LIGHT_MAP, XP_PER_NEW_LEVEL, Achievement, Action, BlockType,
-    ItemType, light_level, max_drink, max_energy, max_food, max_health, max_mana,
+    RIPE_PLANT_FOOD, SAPLING_CHANCE, SLEEP_INTRINSIC_RATE, SPELLS, SPELL_MANA_COST,
+    STACK_LIMIT, STRENGTH_DAMAGE_BONUS, SWORD_DAMAGE, THIRST_LIMIT, TORCH_LIGHT_HALF,
+    TORCH_LIGHT_MAP, XP_PER_NEW_LEVEL, Achievement, Action, BlockType, ItemType, light_level,
+    max_drink, max_energy, max_food, max_health, max_mana,
 )
 
 _WEIGHTS = np.array(ACHIEVEMENT_REWARD, np.float64)
@@ -60,29 +61,6 @@ _PLANT, _NECRO = int(BlockType.PLANT), int(BlockType.NECROMANCER)
 _TABLE, _FURNACE = int(BlockType.CRAFTING_TABLE), int(BlockType.FURNACE)
 _NOOP, _DO, _SLEEP, _REST = int(Action.NOOP), int(Action.DO), int(Action.SLEEP), int(Action.REST)
 _DESCEND, _ASCEND = int(Action.DESCEND), int(Action.ASCEND)
-
-# The mob tables the player's melee hit needs (upstream MOB_TYPE_DEFENSE_MAPPING and
-# MOB_ACHIEVEMENT_MAP). They are mob tables (``bestiary``'s, written by another helper at the
-# same time); kept here privately until the merge unifies them. Checked against the package in
-# tests/games/craftax/test_craftax_tables.py. Classes: 0 passive, 1 melee, 2 ranged.
-_NO_DEFENCE = (0.0, 0.0, 0.0)
-MOB_DEFENCE = tuple(  # [type_id][class] -> (physical, fire, ice) defence
-    (_NO_DEFENCE, melee, ranged)
-    for melee, ranged in (
-        (_NO_DEFENCE, _NO_DEFENCE), (_NO_DEFENCE, _NO_DEFENCE), (_NO_DEFENCE, _NO_DEFENCE),
-        (_NO_DEFENCE, _NO_DEFENCE), ((0.5, 0.0, 0.0), (0.5, 0.0, 0.0)),
-        ((0.2, 0.0, 0.0), _NO_DEFENCE), ((0.9, 1.0, 0.0), (0.9, 1.0, 0.0)),
-        ((0.9, 0.0, 1.0), (0.9, 0.0, 1.0)), (_NO_DEFENCE, _NO_DEFENCE)))
-A = Achievement
-MOB_KILL_ACHIEVEMENT = (  # [class][type_id]; upstream's unused passive types map to 0
-    (A.EAT_COW, A.EAT_BAT, A.EAT_SNAIL, 0, 0, 0, 0, 0),
-    (A.DEFEAT_ZOMBIE, A.DEFEAT_GNOME_WARRIOR, A.DEFEAT_ORC_SOLIDER, A.DEFEAT_LIZARD,
-     A.DEFEAT_KNIGHT, A.DEFEAT_TROLL, A.DEFEAT_PIGMAN, A.DEFEAT_FROST_TROLL),
-    (A.DEFEAT_SKELETON, A.DEFEAT_GNOME_ARCHER, A.DEFEAT_ORC_MAGE, A.DEFEAT_KOBOLD,
-     A.DEFEAT_ARCHER, A.DEFEAT_DEEP_THING, A.DEFEAT_FIRE_ELEMENTAL, A.DEFEAT_ICE_ELEMENTAL),
-)
-del A
-
 
 # ------------------------------------------------------------------------------------------
 # helpers shared with the other modules
@@ -127,76 +105,8 @@ def player_damage_vector(state: State) -> tuple[float, float, float]:
     return physical, element if ench == 1 else 0.0, element if ench == 2 else 0.0
 
 
-def damage_against(damage, defence) -> float:
-    """Upstream get_damage: each element's damage times (1 - that element's defence), summed."""
-    return sum((1.0 - d) * v for v, d in zip(damage, defence))
-
-
-def player_damage(state: State, damage, melee: bool = False) -> float:
-    """The health a mob's attack of ``damage`` (physical, fire, ice) takes from the player:
-    x3.5 for a melee hit on a sleeping player, x1.5 in the boss fight, less the defence of the
-    armour (0.1 physical per tier per piece) and of its enchantments (0.2 fire / ice per
-    fire / ice piece). Applying it (and waking the player) is the caller's job."""
-    factor = 1.0
-    if melee and state.is_sleeping:
-        factor *= SLEEPING_MELEE_FACTOR
-    if state.player_level == BOSS_LEVEL:
-        factor *= 1 + BOSS_FIGHT_EXTRA_DAMAGE
-    ench = state.armour_enchantments
-    defence = (int(state.inventory.armour.sum()) * ARMOUR_DEFENCE_PER_TIER,
-               int((ench == 1).sum()) * ENCHANTED_ARMOUR_DEFENCE,
-               int((ench == 2).sum()) * ENCHANTED_ARMOUR_DEFENCE)
-    return damage_against([v * factor for v in damage], defence)
-
-
 def unlock(state: State, achievement: int) -> None:
     state.achievements[achievement] = True
-
-
-def attack_mob(state: State, r: int, c: int, damage, can_eat: bool = True) -> tuple[bool, bool]:
-    """The player's attack of ``damage`` on whatever mob stands at (r, c) of the player's level
-    (upstream attack_mob): melee, passive, then ranged mobs are looked up; a mob whose health
-    falls to 0 dies: the kill achievement (a passive kill only when ``can_eat``, which also
-    gives food +6 and resets hunger), the mob map cleared, and a monster (melee or ranged) kill
-    counted in ``monsters_killed``. Returns (a mob was hit, a mob was killed). Upstream's
-    player projectiles use it too (``can_eat`` False: a passive kill gives neither food nor its
-    achievement). The mob map
-    (kept exact by ``mobs``) is read first: no mob there, no lookup."""
-    level = state.player_level
-    hit = killed = False
-    if not in_bounds(state, r, c) or not state.mob_map.item(level, r, c):
-        return hit, killed
-    for cls, mobs_ in ((1, state.melee_mobs), (0, state.passive_mobs), (2, state.ranged_mobs)):
-        mask = mobs_.mask[level]
-        for i in range(mask.shape[0]):
-            if not (mask[i] and mobs_.position[level, i, 0] == r and mobs_.position[level, i, 1] == c):
-                continue
-            hit = True
-            kind = int(mobs_.type_id[level, i])
-            mobs_.health[level, i] -= damage_against(damage, MOB_DEFENCE[kind][cls])
-            if mobs_.health[level, i] <= 0:
-                mobs_.mask[level, i] = False
-                killed = True
-                if cls == 0:
-                    if can_eat:
-                        unlock(state, MOB_KILL_ACHIEVEMENT[0][kind])
-                        state.player_food = min(max_food(state.player_dexterity),
-                                                state.player_food + COW_FOOD)
-                        state.player_hunger = 0.0
-                else:
-                    unlock(state, MOB_KILL_ACHIEVEMENT[cls][kind])
-                    state.monsters_killed[level] += 1
-            break
-    if killed:
-        state.mob_map[level, r, c] = False
-    return hit, killed
-
-
-def is_boss_vulnerable(state: State) -> bool:
-    """No melee or ranged mob alive on the player's level, and the spawn wave is over."""
-    level = state.player_level
-    return (not state.melee_mobs.mask[level].any() and not state.ranged_mobs.mask[level].any()
-            and state.boss_timesteps_to_spawn_this_round <= 0)
 
 
 def facing(state: State) -> tuple[int, int]:
@@ -278,10 +188,11 @@ def do(state: State, settings, draws) -> None:
     r, c = facing(state)
     if not in_bounds(state, r, c):
         return
-    hit, _ = attack_mob(state, r, c, player_damage_vector(state), True)
-    if hit:
-        return
     level, inv = state.player_level, state.inventory
+    if state.mob_map.item(level, r, c):     # (the mob map is exact: no mob there, no lookup)
+        hit, _ = mobs.attack_mob(state, r, c, player_damage_vector(state), True)
+        if hit:
+            return
     block = state.map.item(level, r, c)
     mined = MINING_BY_BLOCK.get(block)
     if mined is not None:
@@ -302,10 +213,7 @@ def do(state: State, settings, draws) -> None:
     elif block == _CHEST:
         open_chest(state, r, c, draws)
     elif block == _NECRO:
-        if state.player_level == BOSS_LEVEL and is_boss_vulnerable(state):
-            state.boss_progress += 1
-            state.boss_timesteps_to_spawn_this_round = BOSS_FIGHT_SPAWN_TURNS
-            unlock(state, Achievement.DAMAGE_NECROMANCER)
+        mobs.damage_necromancer(state)
 
 
 def eat_plant(state: State, r: int, c: int) -> None:
@@ -516,15 +424,6 @@ def enchant(state: State, action: int, draws) -> None:
     state.player_mana -= ENCHANT_MANA_COST
 
 
-def boss_round(state: State) -> None:
-    """Upstream boss_logic: the necromancer is defeated after 8 hits; on the boss level the
-    spawn-wave counter runs down every step."""
-    if state.boss_progress >= NUM_LEVELS - 1:
-        unlock(state, Achievement.DEFEAT_NECROMANCER)
-    if state.player_level == BOSS_LEVEL:
-        state.boss_timesteps_to_spawn_this_round -= 1
-
-
 _ATTRIBUTES = {int(Action.LEVEL_UP_DEXTERITY): "player_dexterity",
                int(Action.LEVEL_UP_STRENGTH): "player_strength",
                int(Action.LEVEL_UP_INTELLIGENCE): "player_intelligence"}
@@ -570,8 +469,10 @@ def update_intrinsics(state: State, action: int, settings) -> None:
     dexterity, hunger and thirst at half speed asleep) and cost food, drink, energy at their
     limits; sleep restores energy; health recovers while food, drink and energy (or sleep) last
     and is lost otherwise; mana recovers (faster with intelligence, double asleep). In the boss
-    fight the needs do not fall and health is not lost. ``settings.intrinsics`` off freezes
-    hunger, thirst and fatigue (food, drink and energy then stay as they are)."""
+    fight the needs do not fall and health is not lost. ``settings.intrinsics`` off stops the
+    drains: hunger, thirst and an awake player's fatigue no longer grow, so food, drink and
+    energy never fall; sleep still restores energy (and so ends), health and mana still
+    recover."""
     dex = state.player_dexterity
     if action == _SLEEP and state.player_energy < max_energy(dex):
         state.is_sleeping = True
@@ -586,8 +487,8 @@ def update_intrinsics(state: State, action: int, settings) -> None:
 
     asleep = state.is_sleeping
     fall = 0 if state.player_level == BOSS_LEVEL else 1
+    decay = 1.0 - DEXTERITY_DECAY * (dex - 1)
     if settings.intrinsics:
-        decay = 1.0 - DEXTERITY_DECAY * (dex - 1)
         rate = (SLEEP_INTRINSIC_RATE if asleep else 1.0) * decay
         state.player_hunger += rate
         if state.player_hunger > HUNGER_LIMIT:
@@ -597,6 +498,7 @@ def update_intrinsics(state: State, action: int, settings) -> None:
         if state.player_thirst > THIRST_LIMIT:
             state.player_drink = max(state.player_drink - fall, 0)
             state.player_thirst = 0.0
+    if settings.intrinsics or asleep:      # (asleep, fatigue only falls: energy only grows)
         energy = state.player_energy
         fatigue = min(state.player_fatigue - 1, 0) if asleep else state.player_fatigue + decay
         if fatigue > FATIGUE_LIMIT:
@@ -649,7 +551,7 @@ def clip_vitals(state: State, settings) -> None:
     health, top = state.player_health, max_health(state.player_strength)
     if health < low or health > top:
         state.player_health = float(min(max(health, low), top))
-    top = 7 + 2 * dex      # max food = max drink = max energy
+    top = max_food(dex)    # = max_drink(dex) = max_energy(dex)
     if not (0 <= state.player_food <= top):
         state.player_food = min(max(state.player_food, 0), top)
     if not (0 <= state.player_drink <= top):
@@ -711,7 +613,7 @@ def step(state: State, action: int, settings, draws, after_mobs=None) -> float:
         read_book(state, draws)
     elif action in _ENCHANT:
         enchant(state, action, draws)
-    boss_round(state)
+    mobs.boss_logic(state)
     if action in _LEVEL_UP:
         level_up(state, action, settings)
     if action in MOVES:

@@ -285,7 +285,9 @@ def _torch_light_map():
     import numpy as np
     r = np.arange(-TORCH_LIGHT_HALF, TORCH_LIGHT_HALF + 1, dtype=np.float32)
     distance = np.sqrt(r[:, None] ** 2 + r[None, :] ** 2)
-    return np.clip(1.0 - distance / np.float32(TORCH_LIGHT_RADIUS), 0.0, 1.0).astype(np.float32)
+    # (x 1/radius, not / radius: what the package's jitted ``/ 5.0`` computes, to the bit)
+    light = 1.0 - distance * np.float32(1 / TORCH_LIGHT_RADIUS)
+    return np.clip(light, 0.0, 1.0).astype(np.float32)
 
 
 TORCH_LIGHT_MAP = _torch_light_map()

@@ -24,17 +24,17 @@ from codecs import charmap_decode as _charmap_decode
 
 import numpy as np
 
+from .mobs import is_boss_vulnerable
 from .state import Settings, State
-from .tables import Action, BlockType, ItemType, ProjectileType
+from .tables import (BOSS_LEVEL, DARK_LEVELS, LEVEL_NAMES, LIGHT_VISIBLE, MINING, PLACING,
+                     POTION_COLOURS, RECIPES as CRAFTING, Action, BlockType, ItemType,
+                     ProjectileType, max_drink, max_energy, max_food, max_health, max_mana)
+from .tables import MONSTERS_KILLED_TO_CLEAR_LEVEL as KILLS_TO_OPEN_LADDER
 
 ROWS, COLS = 9, 11                       # upstream's OBS_DIM
 HALF_R, HALF_C = ROWS // 2, COLS // 2
-VISIBLE_LIGHT = 0.05                     # a cell is seen when its light_map value exceeds this
-KILLS_TO_OPEN_LADDER = 8                 # upstream's MONSTERS_KILLED_TO_CLEAR_LEVEL
-
-LEVEL_NAMES = ("Overworld", "Dungeon", "Gnomish Mines", "Sewers", "Vaults", "Troll Mines",
-               "Fire Realm", "Ice Realm", "Graveyard")
-DARK_LEVELS = frozenset({2, 5, 7, 8})    # world_gen_configs' default_light == 0
+# (the level names, dark levels, the kills that open a ladder and the light a cell needs to be
+# seen are tables.py's)
 
 # ---- glyphs ------------------------------------------------------------------------------
 
@@ -169,20 +169,12 @@ def _window(array: np.ndarray, r0: int, c0: int, fill) -> np.ndarray:
     return out
 
 
-def is_boss_vulnerable(state: State) -> bool:
-    """Upstream's ``is_boss_vulnerable``: no melee or ranged mob on the player's floor and the
-    summoning wave over."""
-    level = state.player_level
-    return (not state.melee_mobs.mask[level].any() and not state.ranged_mobs.mask[level].any()
-            and state.boss_timesteps_to_spawn_this_round <= 0)
-
-
 _LADDER_DOWN = np.uint8(_ITEM0 + ItemType.LADDER_DOWN)
 _LADDER_BLOCKED = np.uint8(_ITEM0 + ItemType.LADDER_DOWN_BLOCKED)
 _NECROMANCER = np.uint8(BlockType.NECROMANCER)
 _NECROMANCER_VULNERABLE = np.uint8(BlockType.NECROMANCER_VULNERABLE)
 _ITEM_CODES = np.arange(len(ItemType), dtype=np.uint8) + _ITEM0
-_VISIBLE_LIGHT32 = np.float32(VISIBLE_LIGHT)      # (light_map is float32: compare as upstream)
+_VISIBLE_LIGHT32 = np.float32(LIGHT_VISIBLE)      # (light_map is float32: compare as upstream)
 
 
 def _coded_lines(state: State) -> np.ndarray:
@@ -202,7 +194,7 @@ def _coded_lines(state: State) -> np.ndarray:
         if state.monsters_killed[level] < KILLS_TO_OPEN_LADDER:
             item_codes[item_codes == _LADDER_DOWN] = _LADDER_BLOCKED
         np.copyto(codes, item_codes, where=items > 0)
-    if level == 8 and is_boss_vulnerable(state):
+    if level == BOSS_LEVEL and is_boss_vulnerable(state):
         codes[codes == _NECROMANCER] = _NECROMANCER_VULNERABLE
     flat = lines.reshape(-1)
     width = COLS + 1
@@ -251,7 +243,6 @@ TIERS = ("", "wood", "stone", "iron", "diamond")
 ARMOUR_TIERS = ("", "iron", "diamond")
 ARMOUR_SLOTS = ("helmet", "chest", "legs", "boots")
 ENCHANTS = ("", "fire", "ice")
-POTION_COLOURS = ("red", "green", "blue", "pink", "cyan", "yellow")
 SPELLS = ("fireball", "iceball")
 VITALS = ("HP", "Food", "Drink", "Energy", "Mana")
 FACING = {Action.LEFT: "left", Action.RIGHT: "right", Action.UP: "up", Action.DOWN: "down"}
@@ -262,11 +253,11 @@ _COUNTED_LABELS = tuple((name, name.capitalize()) for name in COUNTED)
 
 
 def max_vitals(state: State) -> tuple[int, int, int, int, int]:
-    """Upstream's maxima: health 8+str, food/drink/energy 7+2*dex, mana 6+3*int (dexterity,
-    strength and intelligence start at 1)."""
+    """Upstream's maxima (``tables.max_*``): health 8+str, food/drink/energy 7+2*dex, mana
+    6+3*int (dexterity, strength and intelligence start at 1)."""
     dex = state.player_dexterity
-    return (8 + state.player_strength, 7 + 2 * dex, 7 + 2 * dex, 7 + 2 * dex,
-            6 + 3 * state.player_intelligence)
+    return (max_health(state.player_strength), max_food(dex), max_drink(dex), max_energy(dex),
+            max_mana(state.player_intelligence))
 
 
 def _number(x: float) -> str:
@@ -337,31 +328,17 @@ def _enchanted(kind: int) -> str:
 
 # ---- the rules text ----------------------------------------------------------------------
 
-# (action name, cost, needs a crafting table nearby, needs a furnace nearby): upstream's
-# game_logic; tables.py's recipe table replaces this list when it lands (see rules_text)
+# (action name, cost, needs a crafting table nearby, needs a furnace nearby), from tables.py's
+# RECIPES (made at a table, some also at a furnace) and PLACING (anywhere)
 RECIPES: tuple[tuple[str, dict[str, int], bool, bool], ...] = (
-    ("MAKE_WOOD_PICKAXE", {"wood": 1}, True, False),
-    ("MAKE_STONE_PICKAXE", {"wood": 1, "stone": 1}, True, False),
-    ("MAKE_IRON_PICKAXE", {"wood": 1, "stone": 1, "iron": 1, "coal": 1}, True, True),
-    ("MAKE_DIAMOND_PICKAXE", {"wood": 1, "diamond": 3}, True, False),
-    ("MAKE_WOOD_SWORD", {"wood": 1}, True, False),
-    ("MAKE_STONE_SWORD", {"wood": 1, "stone": 1}, True, False),
-    ("MAKE_IRON_SWORD", {"wood": 1, "stone": 1, "iron": 1, "coal": 1}, True, True),
-    ("MAKE_DIAMOND_SWORD", {"wood": 1, "diamond": 2}, True, False),
-    ("MAKE_IRON_ARMOUR", {"iron": 3, "coal": 3}, True, True),
-    ("MAKE_DIAMOND_ARMOUR", {"diamond": 3}, True, False),
-    ("MAKE_ARROW", {"wood": 1, "stone": 1}, True, False),
-    ("MAKE_TORCH", {"wood": 1, "coal": 1}, True, False),
-    ("PLACE_TABLE", {"wood": 2}, False, False),
-    ("PLACE_FURNACE", {"stone": 1}, False, False),
-    ("PLACE_STONE", {"stone": 1}, False, False),
-    ("PLACE_TORCH", {"torches": 1}, False, False),
-    ("PLACE_PLANT", {"sapling": 1}, False, False),
+    *((action.name, dict(recipe.cost), True, recipe.furnace)
+      for action, recipe in CRAFTING.items()),
+    *((action.name, {item: cost}, False, False) for action, (item, cost, _, _) in PLACING.items()),
 )
-# the pickaxe tier a block needs (0: none)
-MINING_TIERS = ((BlockType.TREE, 0), (BlockType.STONE, 1), (BlockType.COAL, 1),
-                (BlockType.STALAGMITE, 1), (BlockType.IRON, 2), (BlockType.DIAMOND, 3),
-                (BlockType.SAPPHIRE, 4), (BlockType.RUBY, 4))
+# the pickaxe tier each mined block needs (0: none), from tables.py's MINING, lowest tier first
+# (the stations, which DO only removes, left out)
+MINING_TIERS = tuple(sorted(((block, tier) for block, (tier, item, _) in MINING.items()
+                             if item is not None), key=lambda pair: pair[1]))
 
 
 def _recipe_lines(recipes) -> list[str]:

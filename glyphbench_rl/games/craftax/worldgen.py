@@ -34,24 +34,18 @@ import numpy as np
 from .noise import fractal
 from .state import (MAP_SIZE, MAX_MELEE, MAX_MOB_PROJECTILES, MAX_PASSIVE, MAX_PLAYER_PROJECTILES,
                     MAX_RANGED, MAX_GROWING_PLANTS, NUM_LEVELS, Inventory, Mobs, Settings, State)
-from .tables import Achievement, Action, BlockType as B, ItemType
+from .tables import (BOSS_FIGHT_SPAWN_TURNS, SOLID_BLOCKS, TORCH_LIGHT_MAP, Achievement, Action,
+                     BlockType as B, ItemType, light_level)
 
 ROWS, COLS = MAP_SIZE
 CENTRE = (ROWS // 2, COLS // 2)
-BOSS_FIGHT_SPAWN_TURNS = 7          # upstream constants.BOSS_FIGHT_SPAWN_TURNS
-
-# Upstream's SOLID_BLOCKS: the player cannot walk into these (nor into water or lava).
-SOLID = frozenset({
-    B.STONE, B.TREE, B.COAL, B.IRON, B.DIAMOND, B.CRAFTING_TABLE, B.FURNACE, B.PLANT,
-    B.RIPE_PLANT, B.WALL, B.WALL_MOSS, B.STALAGMITE, B.RUBY, B.SAPPHIRE, B.CHEST, B.FOUNTAIN,
-    B.FIRE_TREE, B.ENCHANTMENT_TABLE_FIRE, B.ENCHANTMENT_TABLE_ICE, B.GRAVE, B.GRAVE2, B.GRAVE3,
-    B.NECROMANCER})
 # Never carved away to make a level walkable: the structures a level is made for.
 PROTECTED = frozenset({B.CHEST, B.FOUNTAIN, B.ENCHANTMENT_TABLE_FIRE, B.ENCHANTMENT_TABLE_ICE,
                        B.NECROMANCER})
 
 _WALKABLE = np.ones(len(B), bool)
-_WALKABLE[[int(b) for b in SOLID | {B.WATER, B.LAVA}]] = False
+# the player cannot walk into solid blocks (tables.SOLID_BLOCKS), water or lava
+_WALKABLE[[int(b) for b in SOLID_BLOCKS | {B.WATER, B.LAVA}]] = False
 _CARVABLE = np.ones(len(B), bool)
 _CARVABLE[[int(b) for b in PROTECTED]] = False
 
@@ -159,9 +153,6 @@ def _distance_from(centre: tuple[int, int]) -> np.ndarray:
 
 
 _CENTRE_DISTANCE = _distance_from(CENTRE)
-# upstream's TORCH_LIGHT_MAP: a 9x9 patch, 1 at the centre fading to 0 five cells away
-TORCH_LIGHT = np.clip(1 - np.sqrt((np.arange(9)[:, None] - 4) ** 2
-                                  + (np.arange(9)[None, :] - 4) ** 2) / 5.0, 0, 1).astype(np.float32)
 
 
 def _convolve3(mask: np.ndarray, kernel: np.ndarray) -> np.ndarray:
@@ -255,7 +246,7 @@ def cave_level(rng: np.random.Generator, cfg: CaveConfig, noise: CaveNoise | Non
         items[tuple(up)] = ItemType.LADDER_UP
 
     light = np.full(shape, cfg.light, np.float64)
-    _paste_light(light, TORCH_LIGHT * (1 - cfg.light) + cfg.light, up)
+    _paste_light(light, TORCH_LIGHT_MAP * (1 - cfg.light) + cfg.light, up)
     if cfg.lava == B.LAVA:
         light += _convolve3(lava, np.array([[0.2, 0.7, 0.2], [0.7, 1, 0.7], [0.2, 0.7, 0.2]]))
     light = np.clip(light, 0.0, 1.0).astype(np.float32)
@@ -471,12 +462,6 @@ def _inventory(god_mode: bool) -> Inventory:
                      armour=np.full(4, 2, np.int32))
 
 
-def light_level(timestep: int, settings: Settings) -> float:
-    """Upstream's daylight curve (``calculate_light_level``), in float32 as upstream."""
-    progress = (timestep / settings.day_length) % 1 + 0.3
-    return float(np.float32(1 - abs(np.cos(np.pi * progress)) ** 3))
-
-
 def _projectile_directions(slots: int) -> np.ndarray:
     return np.ones((NUM_LEVELS, slots, 2), np.int32)
 
@@ -509,7 +494,7 @@ def _state(block, items, light, down, up, potion_mapping, settings: Settings) ->
         learned_spells=np.zeros(2, bool),
         sword_enchantment=0, bow_enchantment=0, armour_enchantments=np.zeros(4, np.int32),
         boss_progress=0, boss_timesteps_to_spawn_this_round=BOSS_FIGHT_SPAWN_TURNS,
-        light_level=light_level(0, settings),
+        light_level=float(np.float32(light_level(0, settings.day_length))),  # upstream: float32
         achievements=np.zeros(len(Achievement), bool),
         timestep=0,
     )

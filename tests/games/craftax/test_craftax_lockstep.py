@@ -45,7 +45,7 @@ from glyphbench_rl.games.craftax.state import (  # noqa: E402
     MAX_PLAYER_PROJECTILES, MAX_RANGED, NUM_LEVELS, Inventory, Mobs, Settings, State,
 )
 from glyphbench_rl.games.craftax.tables import (  # noqa: E402
-    LEVEL_DEFAULT_LIGHT, Achievement, Action, BlockType, ItemType, light_level,
+    LEVEL_DEFAULT_LIGHT, Achievement, Action, BlockType, ItemType, light_level, max_energy,
 )
 
 A, B = Action, BlockType
@@ -207,14 +207,18 @@ class Lockstep:
             reward = rules.step(self.ours, action, SETTINGS, self.draws)
             where = f"{label} step {self.n} ({A(action).name})"
             if action in (A.SHOOT_ARROW, A.CAST_FIREBALL, A.CAST_ICEBALL):
-                # ours starts the projectile at the player's cell (mobs.update flies it)
+                # the projectile starts at the player's cell and mobs.update flies it at once,
+                # as the package's update_mobs does: the two must agree before mobs are removed
                 fired = (self.ours.inventory.arrows < before[0]
                          or self.ours.player_mana < before[1])   # regen adds at most 1
                 p, level = self.ours.player_projectiles, self.ours.player_level
+                q = self.theirs.player_projectiles
                 live = np.flatnonzero(p.mask[level])
-                assert live.size == int(fired), where
-                if fired:
-                    assert tuple(p.position[level, live[0]]) == tuple(self.ours.player_position)
+                assert live.size <= int(fired), where
+                assert live.tolist() == np.flatnonzero(q.mask[level]).tolist(), where
+                for i in live:
+                    assert p.position[level, i].tolist() == q.position[level, i].tolist(), where
+                    assert p.type_id[level, i] == q.type_id[level, i], where
             if check is not None:
                 check(self.ours, self.theirs, where)
             strip_mobs(self.theirs)
@@ -501,3 +505,34 @@ def test_switches_leave_their_sub_rules_out():
     for _ in range(200):
         rules.step(on, int(A.NOOP), SETTINGS, draws)
     assert on.player_food < 4 and on.light_level != 1.0
+
+
+def _steps_to_wake(settings: Settings) -> tuple[int, State]:
+    s = blank_state()
+    s.player_food, s.player_drink, s.player_energy = 4, 3, 2
+    draws = Draws(np.random.default_rng(0))
+    rules.step(s, int(A.SLEEP), settings, draws)
+    assert s.is_sleeping
+    steps, energy = 1, s.player_energy
+    while s.is_sleeping and steps < 500:
+        rules.step(s, int(A.LEFT), settings, draws)     # (asleep, every action is a NOOP)
+        assert s.player_energy >= energy and s.player_direction != int(A.LEFT)
+        energy = s.player_energy
+        steps += 1
+    return steps, s
+
+
+def test_sleep_restores_energy_and_wakes_with_intrinsics_off():
+    """``Settings(intrinsics=False)`` stops the drains, not sleep: asleep, fatigue still falls
+    and energy still grows (one point per 11 steps, as with intrinsics on), the player wakes at
+    full energy (WAKE_UP) and acts again; food and drink do not fall meanwhile."""
+    off = Settings(spawning=False, intrinsics=False, daylight=False)
+    steps, s = _steps_to_wake(off)
+    assert not s.is_sleeping and s.player_energy == max_energy(s.player_dexterity) == 9
+    assert s.achievements[Achievement.WAKE_UP]
+    assert steps == 7 * 11 + 1        # 7 points of energy, then the step that wakes
+    assert steps == _steps_to_wake(Settings(spawning=False, daylight=False))[0]
+    assert (s.player_food, s.player_drink, s.player_hunger, s.player_thirst) == (4, 3, 0.0, 0.0)
+    row, col = s.player_position.tolist()
+    rules.step(s, int(A.LEFT), off, Draws(np.random.default_rng(1)))
+    assert s.player_direction == int(A.LEFT) and s.player_position.tolist() == [row, col - 1]

@@ -12,11 +12,12 @@ import pytest
 
 from glyphbench_rl.games.common.lanes import Draws
 from glyphbench_rl.games.craftax import mobs
-from glyphbench_rl.games.craftax.bestiary import (BOSS_FIGHT_SPAWN_TURNS, FLOOR_MOB_MAPPING,
+from glyphbench_rl.games.craftax.bestiary import (FLOOR_MOB_MAPPING, MOB_NAMES,
                                                    MOB_TYPE_HEALTH_MAPPING)
 from glyphbench_rl.games.craftax.state import (MAP_SIZE, NUM_LEVELS, Inventory, Mobs, Settings,
                                                State)
-from glyphbench_rl.games.craftax.tables import Achievement, BlockType, MobType, ProjectileType
+from glyphbench_rl.games.craftax.tables import (BOSS_FIGHT_SPAWN_TURNS, Achievement, BlockType,
+                                                MobType, ProjectileType)
 
 G, W, S, L, T = BlockType.GRASS, BlockType.WATER, BlockType.STONE, BlockType.LAVA, BlockType.CRAFTING_TABLE
 SETTINGS = Settings()
@@ -330,6 +331,38 @@ def test_mobs_beyond_the_despawn_distance_vanish():
 
 # ---------------------------------------------------------------------------------------------
 # Spawning
+
+def test_add_mob_places_a_named_mob_until_its_class_is_full():
+    """``mobs.add_mob`` (the scenarios' way to place a mob): the named mob's class and type, its
+    type's full health, cooldown 0, the mob map set; False (and nothing changed) on a taken,
+    solid or off-map cell and once the class's slots are full."""
+    state = blank_state(level=3, player=(24, 24))
+    state.melee_mobs.attack_cooldown[3] = 4          # a dead slot's cooldown is not inherited
+    assert mobs.add_mob(state, "knight", (20, 21))
+    melee = state.melee_mobs
+    assert melee.mask[3, 0] and tuple(melee.position[3, 0]) == (20, 21)
+    assert melee.type_id[3, 0] == MOB_NAMES[MobType.MELEE].index("knight") == 4
+    assert melee.health[3, 0] == MOB_TYPE_HEALTH_MAPPING[4][MobType.MELEE] == 12.0
+    assert melee.attack_cooldown[3, 0] == 0 and state.mob_map[3, 20, 21]
+    assert mobs.add_mob(state, "snail", (21, 21))
+    assert state.passive_mobs.mask[3, 0] and state.passive_mobs.type_id[3, 0] == 2
+    assert state.passive_mobs.health[3, 0] == MOB_TYPE_HEALTH_MAPPING[2][MobType.PASSIVE] == 6.0
+    assert mobs.add_mob(state, "deep thing", (22, 21))
+    assert state.ranged_mobs.type_id[3, 0] == 5 and state.ranged_mobs.health[3, 0] == 4.0
+    before = (melee.mask.copy(), state.mob_map.copy())
+    state.map[3, 10, 10] = BlockType.STONE
+    for cell in ((20, 21), (24, 24), (10, 10), (-1, 5), (48, 0)):   # mob, player, stone, off
+        assert not mobs.add_mob(state, "zombie", cell)
+    assert (melee.mask == before[0]).all() and (state.mob_map == before[1]).all()
+    assert mob_map_is_exact(state)
+    free = [(30, c) for c in range(10, 40)]
+    placed = sum(mobs.add_mob(state, "zombie", cell) for cell in free)
+    assert placed == melee.mask.shape[1] - 1 and melee.mask[3].all()   # one slot was the knight
+    assert not state.mob_map[3, 30, 10 + placed]
+    assert not melee.mask[0].any()                   # only the player's level
+    with pytest.raises(ValueError):
+        mobs.add_mob(state, "dragon", (31, 31))
+
 
 def spawn_rate(state_maker, kind, trials=4000, seed=0):
     rng = draws(seed)

@@ -1,5 +1,5 @@
-"""Every table of ``games.craftax.tables`` (and the two mob tables ``rules`` keeps for the
-player's melee hit) equals the ``craftax`` package's constant. Numbers upstream writes inline in
+"""Every table of ``games.craftax.tables`` equals the ``craftax`` package's constant (the mob
+tables are ``bestiary``'s: test_craftax_bestiary.py). Numbers upstream writes inline in
 ``game_logic.py`` (recipes, mining tiers, intrinsic limits, chest loot, potion effects, spell and
 enchant costs) are named in ``tables`` and checked where they act: in the lockstep test
 (test_craftax_lockstep.py) against the package's step, and below where a table is plain data
@@ -13,9 +13,10 @@ import pytest
 pytest.importorskip("craftax")
 
 from craftax.craftax import constants as C  # noqa: E402
+from craftax.craftax.craftax_state import StaticEnvParams  # noqa: E402
 from craftax.craftax.util import game_logic_utils as U  # noqa: E402
 
-from glyphbench_rl.games.craftax import rules, tables as T  # noqa: E402
+from glyphbench_rl.games.craftax import mobs, rules, tables as T  # noqa: E402
 
 
 def test_enumerations_match():
@@ -52,18 +53,12 @@ def test_achievement_weights_and_level_maps():
         assert all(w.rstrip("S") in achievement.name for w in words), (name, achievement)
 
 
-def test_mob_tables_used_by_the_players_hit():
-    defence = np.asarray(C.MOB_TYPE_DEFENSE_MAPPING)
-    assert np.allclose(np.array(rules.MOB_DEFENCE)[:, :3], defence[:, :3])
-    assert [[int(a) for a in row] for row in rules.MOB_KILL_ACHIEVEMENT] == \
-        np.asarray(C.MOB_ACHIEVEMENT_MAP).tolist()
-
-
 def test_game_mechanics_constants():
     assert T.MONSTERS_KILLED_TO_CLEAR_LEVEL == C.MONSTERS_KILLED_TO_CLEAR_LEVEL
     assert T.BOSS_FIGHT_EXTRA_DAMAGE == C.BOSS_FIGHT_EXTRA_DAMAGE
     assert T.BOSS_FIGHT_SPAWN_TURNS == C.BOSS_FIGHT_SPAWN_TURNS
-    assert np.allclose(T.TORCH_LIGHT_MAP, np.asarray(C.TORCH_LIGHT_MAP))
+    assert T.BOSS_LEVEL == T.NUM_LEVELS - 1 == StaticEnvParams().num_levels - 1
+    np.testing.assert_array_equal(T.TORCH_LIGHT_MAP, np.asarray(C.TORCH_LIGHT_MAP))
 
 
 def test_dark_levels_follow_the_world_generation_configs():
@@ -115,11 +110,15 @@ def test_player_damage_taken(armour, enchantments, level, sleeping):
     static = _Player(num_levels=9)
     for vec in ((2.0, 0.0, 0.0), (1.0, 3.0, 0.5), (0.0, 0.0, 4.0)):
         theirs = float(U.get_damage_done_to_player(ju, static, jnp.array(vec)))
-        assert np.isclose(rules.player_damage(p, vec), theirs, atol=1e-5)
-        # upstream scales a melee hit on a sleeper by 1 + 2.5 before the defence
+        assert np.isclose(mobs.damage_to_player(p, vec), theirs, atol=1e-5)
+        # upstream scales a melee hit on a sleeper by 1 + 2.5 before the defence; the blow wakes
         melee = float(U.get_damage_done_to_player(
             ju, static, jnp.array(vec) * (1 + 2.5 * sleeping)))
-        assert np.isclose(rules.player_damage(p, vec, melee=True), melee, atol=1e-5)
+        p.player_health, p.is_sleeping, p.is_resting = 20.0, sleeping, False
+        p.achievements = np.zeros(T.NUM_ACHIEVEMENTS, bool)
+        assert np.isclose(mobs.hurt_player(p, vec, melee=True), melee, atol=1e-5)
+        assert np.isclose(p.player_health, 20.0 - melee, atol=1e-5) and not p.is_sleeping
+        assert p.achievements[T.Achievement.WAKE_UP] == sleeping
 
 
 def test_light_level_formula():

@@ -17,7 +17,7 @@ import pytest
 from glyphbench_rl.games.craftax import worldgen as W
 from glyphbench_rl.games.craftax.noise import perlin
 from glyphbench_rl.games.craftax.state import NUM_LEVELS, Inventory, Mobs, Settings, State
-from glyphbench_rl.games.craftax.tables import Action, BlockType as B, ItemType
+from glyphbench_rl.games.craftax.tables import TORCH_LIGHT_MAP, Action, BlockType as B, ItemType
 
 SEEDS = range(10)
 CENTRE = W.CENTRE
@@ -133,9 +133,9 @@ def test_light_maps(worlds):
             light = state.light_map[level]
             r, c = (min(max(int(x) - 4, 0), 39) for x in state.up_ladders[level])
             patch = light[r:r + 9, c:c + 9]
-            assert (patch >= W.TORCH_LIGHT).all() and patch[4, 4] == 1
+            assert (patch >= TORCH_LIGHT_MAP).all() and patch[4, 4] == 1
             assert light.min() == 0
-        assert (state.light_map[7] == 0).sum() + (W.TORCH_LIGHT > 0).sum() >= 48 * 48
+        assert (state.light_map[7] == 0).sum() + (TORCH_LIGHT_MAP > 0).sum() >= 48 * 48
         assert ((state.light_map >= 0) & (state.light_map <= 1)).all()
 
 
