@@ -289,6 +289,7 @@ class Context:
         self.reserve: list[tuple[str, int, int]] = []
 
     def admit(self, state, rng) -> None:
+        from .mobs import add_mob
         waiting = []
         for name, dmin, dmax in self.reserve:
             spots = [p for p in _cells(state, dmin, dmax) if _free(state, *p, self.floor)]
@@ -421,14 +422,3 @@ def variant(base: Scenario, **kw) -> Scenario:
     SCENARIOS[s.name] = s
     return s
 
-
-def add_mob(state, name: str, cell) -> bool:
-    """TEMPORARY (replaced by mobs.add_mob at merge)."""
-    from .bestiary import MOB_NAMES
-    from .mobs import _add_mob
-    kind = next(k for k, names in enumerate(MOB_NAMES) if name in names)
-    group = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)[kind]
-    if group.mask[state.player_level].all():
-        return False
-    _add_mob(state, group, kind, MOB_NAMES[kind].index(name), tuple(cell))
-    return True
