@@ -198,6 +198,328 @@ class Planner:
         return self.go([ladder], onto=True, limit=limit) and self.act(Action.DESCEND) or \
             self.state.player_level > level
 
+    # -- floors, fights at range, magic, upkeep (added for the floor tasks) ------------------------
+    def kills(self, name: str | None = None) -> int:
+        """Kills so far in the episode (of ``name``; monsters when None), from the task's tally."""
+        tally = self.task.tally.kills
+        return tally.get(name.replace(" ", "_"), tally.get(name, 0)) if name else tally["monsters"]
+
+    def drink(self, effect: str) -> bool:
+        """Drink a potion whose effect (``task.POTION_EFFECTS``: heal, harm, mana ...) is
+        ``effect``, if one is held; the colour's effect is read from the state."""
+        from .task import POTION_EFFECTS
+        for colour, held in enumerate(self.state.inventory.potions):
+            if held > 0 and POTION_EFFECTS[int(self.state.potion_mapping[colour])] == effect:
+                return self.act(Action.DRINK_POTION_RED + colour)
+        return False
+
+    def upkeep(self, heal_below: float = 4.0) -> bool:
+        """Between fight turns: drink a healing potion when health falls below ``heal_below``;
+        without one, REST while no monster is within 6 steps (a hit ends the rest). True when
+        it took a turn."""
+        s = self.state
+        if s.player_health >= heal_below:
+            return False
+        if self.drink("heal"):
+            return True
+        if not any(abs(r - self.pos[0]) + abs(c - self.pos[1]) <= 6 for r, c in self.mobs()) \
+                and s.player_food > 0 and s.player_drink > 0:
+            self.act(Action.REST)
+            while s.is_resting and not self.done and self.budget > 0 and \
+                    not any(abs(r - self.pos[0]) + abs(c - self.pos[1]) <= 3 for r, c in self.mobs()):
+                self.act(Action.NOOP)
+            return True
+        return False
+
+    def _step_along(self, path) -> bool:
+        r, c = self.pos
+        return self.act(MOVES[(path[0][0] - r, path[0][1] - c)])
+
+    def _reachable(self, limit: int = 4000) -> dict:
+        """Walking distance from the player to each cell it can reach."""
+        s, start = self.state, self.pos
+        rows, cols = s.map.shape[1:]
+        dist, queue = {start: 0}, deque([start])
+        while queue and len(dist) < limit:
+            cell = queue.popleft()
+            for dr, dc in MOVES:
+                nxt = (cell[0] + dr, cell[1] + dc)
+                if nxt not in dist and 0 <= nxt[0] < rows and 0 <= nxt[1] < cols \
+                        and rules.player_can_enter(s, *nxt):
+                    dist[nxt] = dist[cell] + 1
+                    queue.append(nxt)
+        return dist
+
+    def explore(self, turns: int = 12, rng=None) -> bool:
+        """Walk up to ``turns`` toward a far reachable cell (new mobs spawn near the player and
+        monsters come to it): one drawn from the cells 8 to 20 steps away."""
+        rng = rng if rng is not None else self.__dict__.setdefault("_rng", np.random.default_rng(0))
+        dist = self._reachable()
+        far = [c for c, d in dist.items() if 8 <= d <= 20] or [c for c, d in dist.items() if d >= 2]
+        if not far:
+            return self.act(Action.NOOP)
+        goal = far[int(rng.integers(len(far)))]
+        for i in range(turns):
+            if i and self.kills_wanted and self._path(set(self.mobs()), onto=False):
+                return True
+            path = self._path({goal}, onto=True)
+            if not path:
+                return self.act(Action.NOOP) if i == 0 else not self.done
+            if not self._step_along(path):
+                return False
+        return not self.done
+
+    kills_wanted = False
+
+    def hunt(self, name: str | None = None, count: int = 1, limit: int = 400,
+             heal_below: float = 4.0, explore: bool = True, ranged: bool = True) -> bool:
+        """Kill ``count`` more mobs called ``name`` (monsters when None) in melee: walk beside
+        the nearest reachable one (re-planned every turn: mobs move), face it, DO; drink a
+        healing potion when health is low; explore when none can be reached. With ``ranged``,
+        a mob in line 2 or more cells away is first shot at (``_fire_at``)."""
+        goal = self.kills(name) + count
+        self.kills_wanted = True
+        try:
+            for _ in range(limit):
+                if self.kills(name) >= goal:
+                    return True
+                if self.done or self.budget <= 0:
+                    return False
+                if self.upkeep(heal_below):
+                    continue
+                targets = self.mobs(name)
+                beside = [t for t in targets if _beside(self.pos, t)]
+                if ranged and not beside and self._fire_at(targets):
+                    continue
+                if beside:
+                    t = beside[0]
+                    self.act(Action.DO if rules.facing(self.state) == t else MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
+                    continue
+                path = self._path(set(targets), onto=False) if targets else None
+                if path:
+                    self._step_along(path)
+                elif explore:
+                    self.explore(6)
+                else:
+                    self.act(Action.NOOP)
+            return self.kills(name) >= goal
+        finally:
+            self.kills_wanted = False
+
+    def _projectile(self, target) -> int | None:
+        """The projectile action to use on the mob at ``target``: an arrow (with a bow and
+        arrows), else a learned spell with mana for it, the element the mob resists least."""
+        s = self.state
+        if s.inventory.bow >= 1 and s.inventory.arrows >= 1:
+            return Action.SHOOT_ARROW
+        if s.player_mana < 2:
+            return None
+        name = self._name_at(target) or ""
+        order = ((1, Action.CAST_ICEBALL), (0, Action.CAST_FIREBALL)) if name in ("fire elemental", "pigman") \
+            else ((0, Action.CAST_FIREBALL), (1, Action.CAST_ICEBALL))
+        if name in ("ice elemental", "frost troll"):
+            order = ((0, Action.CAST_FIREBALL),)
+        elif name in ("fire elemental", "pigman"):
+            order = ((1, Action.CAST_ICEBALL),)
+        for index, action in order:
+            if s.learned_spells[index]:
+                return action
+        return None
+
+    def _name_at(self, cell) -> str | None:
+        s, level = self.state, self.state.player_level
+        for k, kind in enumerate(KINDS):
+            mobs = getattr(s, kind)
+            for i in np.flatnonzero(mobs.mask[level]):
+                if tuple(int(v) for v in mobs.position[level, i]) == tuple(cell):
+                    return MOB_NAMES[k][int(mobs.type_id[level, i])]
+        return None
+
+    def _fire_at(self, targets, reach: int = 5) -> bool:
+        """One turn of shooting at a mob in line (2..reach cells, nothing solid between): turn
+        toward it, or shoot if already facing it. False (no turn taken) when none is."""
+        for t in _nearest([t for t in targets if self.in_line(t, reach)], self.pos, 3):
+            action = self._projectile(t)
+            if action is None:
+                continue
+            dr, dc = (t[0] > self.pos[0]) - (t[0] < self.pos[0]), (t[1] > self.pos[1]) - (t[1] < self.pos[1])
+            if rules.facing(self.state) != (self.pos[0] + dr, self.pos[1] + dc):
+                return self.act(MOVES[(dr, dc)]) or True
+            return self.act(action) or True
+        return False
+
+    def clear_gate(self, limit: int = 400, **kw) -> bool:
+        """Kill monsters until the level's ladder opens (Craftax: 8 kills on the level)."""
+        from .tables import MONSTERS_KILLED_TO_CLEAR_LEVEL
+        for _ in range(limit):
+            level = self.state.player_level
+            need = MONSTERS_KILLED_TO_CLEAR_LEVEL - int(self.state.monsters_killed[level])
+            if need <= 0:
+                return True
+            if not self.hunt(count=need, limit=limit, **kw):
+                return False
+        return False
+
+    def descend_floor(self, limit: int = 480, **kw) -> bool:
+        """Open the level's ladder (kill monsters until its gate opens), walk onto it, DESCEND."""
+        level = self.state.player_level
+        if not self.clear_gate(limit=limit, **kw):
+            return False
+        ladder = tuple(int(v) for v in self.state.down_ladders[level])
+        for _ in range(limit):
+            if self.state.player_level > level or self.done or self.budget <= 0:
+                break
+            if self.upkeep(kw.get("heal_below", 4.0)):
+                continue
+            if self.pos == ladder:
+                self.act(Action.DESCEND)
+                continue
+            beside = [t for t in self.mobs() if _beside(self.pos, t)]
+            path = self._path({ladder}, onto=True)
+            if beside and (not path or path[0] in beside):
+                t = beside[0]                  # a monster in the way (or at our back): fight it
+                self.act(Action.DO if rules.facing(self.state) == t else MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
+            elif path:
+                self._step_along(path)
+            else:
+                self.act(Action.NOOP)
+        return self.state.player_level > level
+
+    def in_line(self, target, reach: int = 8) -> bool:
+        """``target`` is in the player's row or column within ``reach``, nothing solid between."""
+        (r, c), (tr, tc) = self.pos, target
+        if (r != tr and c != tc) or abs(r - tr) + abs(c - tc) > reach:
+            return False
+        dr, dc = (tr > r) - (tr < r), (tc > c) - (tc < c)
+        level, m = self.state.player_level, self.state.map
+        from .tables import IS_SOLID
+        cell = (r + dr, c + dc)
+        while cell != (tr, tc):
+            if IS_SOLID[int(m[level][cell])] or self.state.mob_map[level][cell]:
+                return False
+            cell = (cell[0] + dr, cell[1] + dc)
+        return True
+
+    def shoot(self, name: str | None = None, count: int = 1, action: int = Action.SHOOT_ARROW,
+              limit: int = 300, reach: int = 6, can=None) -> bool:
+        """Kill ``count`` more mobs called ``name`` with a projectile (``action``: an arrow or a
+        spell): get in line with the nearest one, face it and shoot while ``can()`` (ammunition
+        or mana left); walk into line otherwise."""
+        goal = self.kills(name) + count
+        can = can or (lambda: True)
+        for _ in range(limit):
+            if self.kills(name) >= goal:
+                return True
+            if self.done or self.budget <= 0:
+                return False
+            targets = self.mobs(name)
+            if not targets:
+                self.act(Action.NOOP)
+                continue
+            lined = [t for t in targets if self.in_line(t, reach)]
+            if lined:
+                t = _nearest(lined, self.pos, 1)[0]
+                dr, dc = (t[0] > self.pos[0]) - (t[0] < self.pos[0]), (t[1] > self.pos[1]) - (t[1] < self.pos[1])
+                if rules.facing(self.state) != (self.pos[0] + dr, self.pos[1] + dc):
+                    self.act(MOVES[(dr, dc)])    # (turns; the cell ahead may be free: then a step)
+                    continue
+                if not can():
+                    return False
+                self.act(action)
+                continue
+            # cells in line with a target, two or more from it, reachable by walking
+            goals = set()
+            for tr, tc in targets:
+                for d in range(2, reach + 1):
+                    goals.update({(tr + d, tc), (tr - d, tc), (tr, tc + d), (tr, tc - d)})
+            goals = {g for g in goals if rules.in_bounds(self.state, *g) and (g == self.pos or rules.player_can_enter(self.state, *g))}
+            path = self._path(goals, onto=True) if goals else None
+            if path:
+                self._step_along(path)
+            else:
+                self.act(Action.NOOP)
+        return self.kills(name) >= goal
+
+    def cast(self, name: str | None = None, count: int = 1, spell: int = Action.CAST_FIREBALL, **kw) -> bool:
+        """``shoot`` with a spell, while mana lasts (2 a cast)."""
+        return self.shoot(name, count, action=spell, can=lambda: self.state.player_mana >= 2, **kw)
+
+    def enchant(self, action: int, table: int) -> bool:
+        """Walk beside an enchantment ``table`` (a block), face it and enchant (``action``)."""
+        cells = self.cells(table)
+        if not cells or not self.go(cells):
+            return False
+        t = next(c for c in cells if _beside(self.pos, c))
+        return self.face(t) and rules.facing(self.state) == t and self.act(action)
+
+    def open_chest(self, limit: int = 300) -> bool:
+        """Walk to the nearest reachable chest, face it and open it (DO)."""
+        before = len(self.cells(BlockType.CHEST))
+        if not self.go(self.cells(BlockType.CHEST), limit=limit):
+            return False
+        t = next(c for c in self.cells(BlockType.CHEST) if _beside(self.pos, c))
+        if self.face(t) and rules.facing(self.state) == t:
+            self.act(Action.DO)
+        return len(self.cells(BlockType.CHEST)) < before
+
+    def torch(self) -> bool:
+        """Place a torch on a cell beside the player (turning to find one that takes it)."""
+        before = self.state.inventory.torches
+        for direction in (None, Action.RIGHT, Action.DOWN, Action.LEFT, Action.UP):
+            if direction is not None and not self.act(direction):
+                return False
+            if not self.act(Action.PLACE_TORCH):
+                return False
+            if self.state.inventory.torches < before:
+                return True
+        return False
+
+    def boss(self, limit: int = 420, **kw) -> bool:
+        """The necromancer fight (the graveyard): kill the monsters of each spawn wave; while he
+        is vulnerable (none alive, the wave over) stand beside his block and hit him (DO)."""
+        from .tables import NUM_LEVELS
+        for _ in range(limit):
+            s = self.state
+            if self.done or self.budget <= 0 or s.boss_progress >= NUM_LEVELS - 1:
+                break
+            if self.upkeep(kw.get("heal_below", 4.0)):
+                continue
+            necro = self.cells(BlockType.NECROMANCER)
+            if not necro:
+                return False
+            if self.mobs():
+                self.hunt(count=1, limit=1, explore=False, **kw)
+                continue
+            if not any(_beside(self.pos, n) for n in necro):
+                path = self._path(set(necro), onto=False)
+                self._step_along(path) if path else self.act(Action.NOOP)
+                continue
+            t = next(n for n in necro if _beside(self.pos, n))
+            if rules.facing(self.state) != t:
+                self.act(MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
+            else:
+                self.act(Action.DO if s.boss_timesteps_to_spawn_this_round <= 0 else Action.NOOP)
+        return self.state.boss_progress >= NUM_LEVELS - 1
+
+    def surrender(self, limit: int = 500) -> bool:
+        """A losing policy: walk up to the nearest monster (exploring until one comes) and stand
+        there doing nothing until the player dies. True once dead."""
+        for _ in range(limit):
+            if self.done:
+                break
+            targets = self.mobs()
+            if any(_beside(self.pos, t) for t in targets):
+                self.act(Action.NOOP)
+                continue
+            path = self._path(set(targets), onto=False) if targets else None
+            if path:
+                self._step_along(path)
+            else:
+                self.kills_wanted = True
+                self.explore(6)
+                self.kills_wanted = False
+        return self.state.player_health <= 0
+
 
 def _beside(a, b) -> bool:
     return abs(a[0] - b[0]) + abs(a[1] - b[1]) == 1
