@@ -232,8 +232,36 @@ class Planner:
         return False
 
     def _step_along(self, path) -> bool:
+        """One step along ``path``; if that cell is in a projectile's way this turn and the
+        current one is not, wait a turn instead (``danger``)."""
         r, c = self.pos
+        danger = self.danger()
+        if path[0] in danger and (r, c) not in danger:
+            return self.act(Action.NOOP)
         return self.act(MOVES[(path[0][0] - r, path[0][1] - c)])
+
+    def danger(self) -> set:
+        """Cells a mob projectile hits this turn: the cell it is on and the next one on its way."""
+        s, level = self.state, self.state.player_level
+        out = set()
+        for i in np.flatnonzero(s.mob_projectiles.mask[level]):
+            r, c = (int(v) for v in s.mob_projectiles.position[level, i])
+            dr, dc = (int(v) for v in s.mob_projectile_directions[level, i])
+            out.update({(r, c), (r + dr, c + dc)})
+        return out
+
+    def dodge(self) -> bool:
+        """Step out of a projectile's way (to a free cell it does not cross); True if it took
+        the turn."""
+        danger = self.danger()
+        if self.pos not in danger:
+            return False
+        r, c = self.pos
+        for (dr, dc), action in MOVES.items():
+            cell = (r + dr, c + dc)
+            if cell not in danger and rules.player_can_enter(self.state, *cell):
+                return self.act(action) or True
+        return False
 
     def _reachable(self, limit: int = 4000) -> dict:
         """Walking distance from the player to each cell it can reach."""
@@ -289,6 +317,8 @@ class Planner:
                     continue
                 targets = self.mobs(name)
                 beside = [t for t in targets if _beside(self.pos, t)]
+                if self.dodge():
+                    continue
                 if ranged and not beside and self._fire_at(targets):
                     continue
                 if beside:
@@ -444,10 +474,30 @@ class Planner:
         """``shoot`` with a spell, while mana lasts (2 a cast)."""
         return self.shoot(name, count, action=spell, can=lambda: self.state.player_mana >= 2, **kw)
 
+    def walk(self, goals, onto: bool = False, limit: int = 300) -> bool:
+        """``go`` that does not give up when the way is blocked for a while (a mob in a
+        corridor): it fights a mob beside the player or waits, and plans again."""
+        goals = set(goals)
+        for _ in range(limit):
+            if not goals or self.done or self.budget <= 0:
+                return False
+            path = self._path(goals, onto)
+            if path == []:
+                return True
+            beside = [t for t in self.mobs() if _beside(self.pos, t)]
+            if beside and (path is None or path[0] in beside):
+                t = beside[0]
+                self.act(Action.DO if rules.facing(self.state) == t else MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
+            elif path:
+                self._step_along(path)
+            else:
+                self.act(Action.NOOP)
+        return False
+
     def enchant(self, action: int, table: int) -> bool:
         """Walk beside an enchantment ``table`` (a block), face it and enchant (``action``)."""
         cells = self.cells(table)
-        if not cells or not self.go(cells):
+        if not cells or not self.walk(cells):
             return False
         t = next(c for c in cells if _beside(self.pos, c))
         return self.face(t) and rules.facing(self.state) == t and self.act(action)
@@ -455,7 +505,7 @@ class Planner:
     def open_chest(self, limit: int = 300) -> bool:
         """Walk to the nearest reachable chest, face it and open it (DO)."""
         before = len(self.cells(BlockType.CHEST))
-        if not self.go(self.cells(BlockType.CHEST), limit=limit):
+        if not self.walk(self.cells(BlockType.CHEST), limit=limit):
             return False
         t = next(c for c in self.cells(BlockType.CHEST) if _beside(self.pos, c))
         if self.face(t) and rules.facing(self.state) == t:
@@ -499,6 +549,61 @@ class Planner:
                 self.act(MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
             else:
                 self.act(Action.DO if s.boss_timesteps_to_spawn_this_round <= 0 else Action.NOOP)
+        return self.state.boss_progress >= NUM_LEVELS - 1
+
+    def boss_safe_cells(self, dist: dict | None = None) -> dict:
+        """Reachable cells (with their walking distance) where no monster of a necromancer's
+        spawn wave can appear: no grave within Euclidean distance 6 (Craftax spawns them on
+        graves that near the player)."""
+        graves = [g for b in (BlockType.GRAVE, BlockType.GRAVE2, BlockType.GRAVE3) for g in self.cells(b)]
+        dist = self._reachable() if dist is None else dist
+        return {c: d for c, d in dist.items()
+                if all((c[0] - g[0]) ** 2 + (c[1] - g[1]) ** 2 >= 37 for g in graves)}
+
+    def boss_kite(self, limit: int = 420, **kw) -> bool:
+        """The necromancer fight, waiting out each spawn wave where none can spawn: hit him
+        while vulnerable, then walk to the nearest cell with no grave within 6 and wait there
+        (fighting what comes) until the wave is over and no monster is left, then go back.
+        Falls back to ``boss`` when no such cell can be reached."""
+        from .tables import NUM_LEVELS
+        for _ in range(limit):
+            s = self.state
+            if self.done or self.budget <= 0 or s.boss_progress >= NUM_LEVELS - 1:
+                break
+            necro = self.cells(BlockType.NECROMANCER)
+            if not necro:
+                return False
+            if self.upkeep(kw.get("heal_below", 4.0)) or self.dodge():
+                continue
+            mobs = self.mobs()
+            beside = [t for t in mobs if _beside(self.pos, t)]
+            if beside:
+                t = beside[0]
+                self.act(Action.DO if rules.facing(s) == t else MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
+                continue
+            if s.boss_timesteps_to_spawn_this_round >= 1 or mobs:
+                safe = self.boss_safe_cells()
+                if not safe:
+                    return self.boss(limit=limit, **kw)
+                if self.pos not in safe:
+                    path = self._path(set(safe), onto=True)
+                    self._step_along(path) if path else self.act(Action.NOOP)
+                    continue
+                if mobs and not self._fire_at(mobs):
+                    path = self._path(set(mobs), onto=False)
+                    if s.boss_timesteps_to_spawn_this_round < 1 and path:
+                        self._step_along(path)          # the wave is over: go and finish them
+                    else:
+                        self.act(Action.NOOP)
+                elif not mobs:
+                    self.act(Action.NOOP)
+                continue
+            if not any(_beside(self.pos, n) for n in necro):
+                path = self._path(set(necro), onto=False)
+                self._step_along(path) if path else self.act(Action.NOOP)
+                continue
+            t = next(n for n in necro if _beside(self.pos, n))
+            self.act(Action.DO if rules.facing(s) == t else MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
         return self.state.boss_progress >= NUM_LEVELS - 1
 
     def surrender(self, limit: int = 500) -> bool:
