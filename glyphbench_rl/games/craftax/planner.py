@@ -537,8 +537,12 @@ class Planner:
             necro = self.cells(BlockType.NECROMANCER)
             if not necro:
                 return False
-            if self.mobs():
+            mobs = self.mobs()
+            if mobs and (s.boss_timesteps_to_spawn_this_round < 1
+                         or any(_beside(self.pos, t) for t in mobs) or self.danger()):
                 self.hunt(count=1, limit=1, explore=False, **kw)
+                continue
+            if mobs and self._fire_at(mobs):     # (the wave is on: hold the necromancer's side)
                 continue
             if not any(_beside(self.pos, n) for n in necro):
                 path = self._path(set(necro), onto=False)
@@ -549,61 +553,6 @@ class Planner:
                 self.act(MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
             else:
                 self.act(Action.DO if s.boss_timesteps_to_spawn_this_round <= 0 else Action.NOOP)
-        return self.state.boss_progress >= NUM_LEVELS - 1
-
-    def boss_safe_cells(self, dist: dict | None = None) -> dict:
-        """Reachable cells (with their walking distance) where no monster of a necromancer's
-        spawn wave can appear: no grave within Euclidean distance 6 (Craftax spawns them on
-        graves that near the player)."""
-        graves = [g for b in (BlockType.GRAVE, BlockType.GRAVE2, BlockType.GRAVE3) for g in self.cells(b)]
-        dist = self._reachable() if dist is None else dist
-        return {c: d for c, d in dist.items()
-                if all((c[0] - g[0]) ** 2 + (c[1] - g[1]) ** 2 >= 37 for g in graves)}
-
-    def boss_kite(self, limit: int = 420, **kw) -> bool:
-        """The necromancer fight, waiting out each spawn wave where none can spawn: hit him
-        while vulnerable, then walk to the nearest cell with no grave within 6 and wait there
-        (fighting what comes) until the wave is over and no monster is left, then go back.
-        Falls back to ``boss`` when no such cell can be reached."""
-        from .tables import NUM_LEVELS
-        for _ in range(limit):
-            s = self.state
-            if self.done or self.budget <= 0 or s.boss_progress >= NUM_LEVELS - 1:
-                break
-            necro = self.cells(BlockType.NECROMANCER)
-            if not necro:
-                return False
-            if self.upkeep(kw.get("heal_below", 4.0)) or self.dodge():
-                continue
-            mobs = self.mobs()
-            beside = [t for t in mobs if _beside(self.pos, t)]
-            if beside:
-                t = beside[0]
-                self.act(Action.DO if rules.facing(s) == t else MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
-                continue
-            if s.boss_timesteps_to_spawn_this_round >= 1 or mobs:
-                safe = self.boss_safe_cells()
-                if not safe:
-                    return self.boss(limit=limit, **kw)
-                if self.pos not in safe:
-                    path = self._path(set(safe), onto=True)
-                    self._step_along(path) if path else self.act(Action.NOOP)
-                    continue
-                if mobs and not self._fire_at(mobs):
-                    path = self._path(set(mobs), onto=False)
-                    if s.boss_timesteps_to_spawn_this_round < 1 and path:
-                        self._step_along(path)          # the wave is over: go and finish them
-                    else:
-                        self.act(Action.NOOP)
-                elif not mobs:
-                    self.act(Action.NOOP)
-                continue
-            if not any(_beside(self.pos, n) for n in necro):
-                path = self._path(set(necro), onto=False)
-                self._step_along(path) if path else self.act(Action.NOOP)
-                continue
-            t = next(n for n in necro if _beside(self.pos, n))
-            self.act(Action.DO if rules.facing(s) == t else MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
         return self.state.boss_progress >= NUM_LEVELS - 1
 
     def surrender(self, limit: int = 500) -> bool:
