@@ -215,14 +215,17 @@ class Planner:
 
     def upkeep(self, heal_below: float = 4.0) -> bool:
         """Between fight turns: drink a healing potion when health falls below ``heal_below``;
-        without one, REST while no monster is within 6 steps (a hit ends the rest). True when
+        without one, REST while no monster is within 10 steps (a hit ends the rest). True when
         it took a turn."""
         s = self.state
+        if s.player_drink <= 3 and not any(_beside(self.pos, t) for t in self.mobs()) \
+                and self.quench(reach=25):
+            return True
         if s.player_health >= heal_below:
             return False
         if self.drink("heal"):
             return True
-        if not any(abs(r - self.pos[0]) + abs(c - self.pos[1]) <= 6 for r, c in self.mobs()) \
+        if not any(abs(r - self.pos[0]) + abs(c - self.pos[1]) <= 10 for r, c in self.mobs()) \
                 and s.player_food > 0 and s.player_drink > 0:
             self.act(Action.REST)
             while s.is_resting and not self.done and self.budget > 0 and \
@@ -230,6 +233,28 @@ class Planner:
                 self.act(Action.NOOP)
             return True
         return False
+
+    def quench(self, reach: int = 25, until: int = 8) -> bool:
+        """Drink (DO facing water or a fountain) up to ``until``, walking to the nearest one
+        within ``reach`` steps; True if it took a turn."""
+        from .tables import DRINK_BLOCKS
+        sources = [c for b in DRINK_BLOCKS for c in self.cells(b)]
+        sources = [c for c in sources if abs(c[0] - self.pos[0]) + abs(c[1] - self.pos[1]) <= reach]
+        if not sources:
+            return False
+        beside = [c for c in sources if _beside(self.pos, c)]
+        if not beside:
+            path = self._path(set(sources), onto=False)
+            if not path or len(path) > reach:
+                return False
+            return self._step_along(path) or True
+        took = False
+        while self.state.player_drink < until and not self.done and self.budget > 0 \
+                and not any(_beside(self.pos, t) for t in self.mobs()):
+            t = beside[0]
+            self.act(Action.DO if rules.facing(self.state) == t else MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
+            took = True
+        return took
 
     def _step_along(self, path) -> bool:
         """One step along ``path``; if that cell is in a projectile's way this turn and the

@@ -77,10 +77,10 @@ WINS = {
     "enchant-weapon": (_enchant_weapon, (0, 1)),
     "enchant-choice": (_enchant_choice, (0, 1)),
     "spell-only-kill": (_spell_only, (0, 1)),
-    "speedrun": (_floors(5), (0, 3)),
+    "speedrun": (_floors(5), (0, 1)),
     "torchdescend": (_torchdescend, (0, 1)),
     "dark-ambush": (_dark_ambush, (0, 1)),
-    "floor-clear-9hp": (_floor, (1, 5)),
+    "floor-clear-9hp": (_floor, (1, 3)),
     "descent-gauntlet": (_floors(2), (0, 1)),
     "clear-floor-8gate": (_floor, (0, 1)),
 }
