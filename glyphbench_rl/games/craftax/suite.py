@@ -308,7 +308,7 @@ scenario(name="speedrun", horizon=500, kit=dict(sword=4, bow=1, arrows=20, wood=
 
 # -- D. harder combinations ------------------------------------------------------------------------
 scenario(name="torchdescend", horizon=300, floor=2,
-         kit=dict(sword=3, pickaxe=2, wood=3, coal=3, torches=1, armour=ARMOUR_IRON, potions=ALL_POTIONS),
+         kit=dict(sword=3, pickaxe=2, wood=3, coal=3, armour=ARMOUR_IRON, potions=ALL_POTIONS),
          topics=FLOOR_TOPICS + ("torch",),
          objective="In the dark mines: make torches, light the way, kill 8 monsters to open the ladder, DESCEND.",
          edits=(Clear(3), Stamp(B.CRAFTING_TABLE, ((0, 1),)), Stamp(B.FURNACE, ((1, 0),))),
