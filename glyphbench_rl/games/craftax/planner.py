@@ -348,7 +348,12 @@ class Planner:
                     continue
                 if beside:
                     t = beside[0]
-                    self.act(Action.DO if rules.facing(self.state) == t else MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
+                    if rules.facing(self.state) != t:
+                        self.act(MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
+                        continue
+                    shot = self._projectile(t) if ranged else None
+                    better = shot is not None and self.damage_to(t, shot) > 2 * self.damage_to(t)
+                    self.act(shot if better else Action.DO)
                     continue
                 path = self._path(set(targets), onto=False) if targets else None
                 if path:
@@ -361,25 +366,44 @@ class Planner:
         finally:
             self.kills_wanted = False
 
-    def _projectile(self, target) -> int | None:
-        """The projectile action to use on the mob at ``target``: an arrow (with a bow and
-        arrows), else a learned spell with mana for it, the element the mob resists least."""
-        s = self.state
-        if s.inventory.bow >= 1 and s.inventory.arrows >= 1:
-            return Action.SHOOT_ARROW
-        if s.player_mana < 2:
-            return None
-        name = self._name_at(target) or ""
-        order = ((1, Action.CAST_ICEBALL), (0, Action.CAST_FIREBALL)) if name in ("fire elemental", "pigman") \
-            else ((0, Action.CAST_FIREBALL), (1, Action.CAST_ICEBALL))
-        if name in ("ice elemental", "frost troll"):
-            order = ((0, Action.CAST_FIREBALL),)
-        elif name in ("fire elemental", "pigman"):
-            order = ((1, Action.CAST_ICEBALL),)
-        for index, action in order:
-            if s.learned_spells[index]:
-                return action
+    def _mob_at(self, cell):
+        """(class, type id) of the live mob at ``cell`` of the player's level, or None."""
+        s, level = self.state, self.state.player_level
+        for k, kind in enumerate(KINDS):
+            mobs = getattr(s, kind)
+            for i in np.flatnonzero(mobs.mask[level]):
+                if tuple(int(v) for v in mobs.position[level, i]) == tuple(cell):
+                    return k, int(mobs.type_id[level, i])
         return None
+
+    def damage_to(self, target, action: int = Action.DO) -> float:
+        """Health the mob at ``target`` would lose to ``action`` (DO: the sword; SHOOT_ARROW or
+        a spell: the projectile), by the tables (its defence against each element)."""
+        from . import mobs as mob_rules
+        from .bestiary import MOB_TYPE_DEFENCE_MAPPING
+        from .tables import PLAYER_ARROW, SPELLS
+        mob = self._mob_at(target)
+        if mob is None:
+            return 0.0
+        defence = MOB_TYPE_DEFENCE_MAPPING[mob[1]][mob[0]]
+        if action == Action.DO:
+            damage = rules.player_damage_vector(self.state)
+        else:
+            kind = PLAYER_ARROW if action == Action.SHOOT_ARROW else SPELLS[action][1]
+            damage = mob_rules.player_projectile_damage(self.state, int(kind))
+        return rules.damage_against(damage, defence)
+
+    def _projectile(self, target) -> int | None:
+        """The projectile action that does most damage to the mob at ``target`` among those
+        at hand (an arrow with a bow and arrows; a learned spell with 2 mana), or None."""
+        s, options = self.state, []
+        if s.inventory.bow >= 1 and s.inventory.arrows >= 1:
+            options.append(Action.SHOOT_ARROW)
+        if s.player_mana >= 2:
+            options += [a for i, a in enumerate((Action.CAST_FIREBALL, Action.CAST_ICEBALL)) if s.learned_spells[i]]
+        options = [(self.damage_to(target, a), a) for a in options]
+        options = [o for o in options if o[0] > 0]
+        return max(options)[1] if options else None
 
     def _name_at(self, cell) -> str | None:
         s, level = self.state, self.state.player_level
