@@ -198,6 +198,431 @@ class Planner:
         return self.go([ladder], onto=True, limit=limit) and self.act(Action.DESCEND) or \
             self.state.player_level > level
 
+    # -- floors, fights at range, magic, upkeep (added for the floor tasks) ------------------------
+    def kills(self, name: str | None = None) -> int:
+        """Kills so far in the episode (of ``name``; monsters when None), from the task's tally."""
+        tally = self.task.tally.kills
+        return tally.get(name.replace(" ", "_"), tally.get(name, 0)) if name else tally["monsters"]
+
+    def drink(self, effect: str) -> bool:
+        """Drink a potion whose effect (``task.POTION_EFFECTS``: heal, harm, mana ...) is
+        ``effect``, if one is held; the colour's effect is read from the state."""
+        from .task import POTION_EFFECTS
+        for colour, held in enumerate(self.state.inventory.potions):
+            if held > 0 and POTION_EFFECTS[int(self.state.potion_mapping[colour])] == effect:
+                return self.act(Action.DRINK_POTION_RED + colour)
+        return False
+
+    def upkeep(self, heal_below: float = 4.0) -> bool:
+        """Between fight turns: drink a healing potion when health falls below ``heal_below``;
+        without one, REST while no monster is within 10 steps (a hit ends the rest). True when
+        it took a turn."""
+        s = self.state
+        if s.player_drink <= 3 and not any(_beside(self.pos, t) for t in self.mobs()) \
+                and self.quench(reach=25):
+            return True
+        if s.player_health >= heal_below:
+            return False
+        if self.drink("heal"):
+            return True
+        if not any(abs(r - self.pos[0]) + abs(c - self.pos[1]) <= 10 for r, c in self.mobs()) \
+                and s.player_food > 0 and s.player_drink > 0:
+            self.act(Action.REST)
+            while s.is_resting and not self.done and self.budget > 0 and \
+                    not any(abs(r - self.pos[0]) + abs(c - self.pos[1]) <= 3 for r, c in self.mobs()):
+                self.act(Action.NOOP)
+            return True
+        return False
+
+    def quench(self, reach: int = 25, until: int = 8) -> bool:
+        """Drink (DO facing water or a fountain) up to ``until``, walking to the nearest one
+        within ``reach`` steps; True if it took a turn."""
+        from .tables import DRINK_BLOCKS
+        sources = [c for b in DRINK_BLOCKS for c in self.cells(b)]
+        sources = [c for c in sources if abs(c[0] - self.pos[0]) + abs(c[1] - self.pos[1]) <= reach]
+        if not sources:
+            return False
+        beside = [c for c in sources if _beside(self.pos, c)]
+        if not beside:
+            path = self._path(set(sources), onto=False)
+            if not path or len(path) > reach:
+                return False
+            return self._step_along(path) or True
+        took = False
+        while self.state.player_drink < until and not self.done and self.budget > 0 \
+                and not any(_beside(self.pos, t) for t in self.mobs()):
+            t = beside[0]
+            self.act(Action.DO if rules.facing(self.state) == t else MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
+            took = True
+        return took
+
+    def _step_along(self, path) -> bool:
+        """One step along ``path``; if that cell is in a projectile's way this turn and the
+        current one is not, wait a turn instead (``danger``)."""
+        r, c = self.pos
+        danger = self.danger()
+        if path[0] in danger and (r, c) not in danger:
+            return self.act(Action.NOOP)
+        return self.act(MOVES[(path[0][0] - r, path[0][1] - c)])
+
+    def danger(self) -> set:
+        """Cells a mob projectile hits this turn: the cell it is on and the next one on its way."""
+        s, level = self.state, self.state.player_level
+        out = set()
+        for i in np.flatnonzero(s.mob_projectiles.mask[level]):
+            r, c = (int(v) for v in s.mob_projectiles.position[level, i])
+            dr, dc = (int(v) for v in s.mob_projectile_directions[level, i])
+            out.update({(r, c), (r + dr, c + dc)})
+        return out
+
+    def dodge(self) -> bool:
+        """Step out of a projectile's way (to a free cell it does not cross); True if it took
+        the turn."""
+        danger = self.danger()
+        if self.pos not in danger:
+            return False
+        r, c = self.pos
+        for (dr, dc), action in MOVES.items():
+            cell = (r + dr, c + dc)
+            if cell not in danger and rules.player_can_enter(self.state, *cell):
+                return self.act(action) or True
+        return False
+
+    def _reachable(self, limit: int = 4000) -> dict:
+        """Walking distance from the player to each cell it can reach."""
+        s, start = self.state, self.pos
+        rows, cols = s.map.shape[1:]
+        dist, queue = {start: 0}, deque([start])
+        while queue and len(dist) < limit:
+            cell = queue.popleft()
+            for dr, dc in MOVES:
+                nxt = (cell[0] + dr, cell[1] + dc)
+                if nxt not in dist and 0 <= nxt[0] < rows and 0 <= nxt[1] < cols \
+                        and rules.player_can_enter(s, *nxt):
+                    dist[nxt] = dist[cell] + 1
+                    queue.append(nxt)
+        return dist
+
+    def explore(self, turns: int = 12, rng=None) -> bool:
+        """Walk up to ``turns`` toward a far reachable cell (new mobs spawn near the player and
+        monsters come to it): one drawn from the cells 8 to 20 steps away."""
+        rng = rng if rng is not None else self.__dict__.setdefault("_rng", np.random.default_rng(0))
+        dist = self._reachable()
+        far = [c for c, d in dist.items() if 8 <= d <= 20] or [c for c, d in dist.items() if d >= 2]
+        if not far:
+            return self.act(Action.NOOP)
+        goal = far[int(rng.integers(len(far)))]
+        for i in range(turns):
+            if i and self.kills_wanted and self._path(set(self.mobs()), onto=False):
+                return True
+            path = self._path({goal}, onto=True)
+            if not path:
+                return self.act(Action.NOOP) if i == 0 else not self.done
+            if not self._step_along(path):
+                return False
+        return not self.done
+
+    kills_wanted = False
+
+    def hunt(self, name: str | None = None, count: int = 1, limit: int = 400,
+             heal_below: float = 4.0, explore: bool = True, ranged: bool = True) -> bool:
+        """Kill ``count`` more mobs called ``name`` (monsters when None) in melee: walk beside
+        the nearest reachable one (re-planned every turn: mobs move), face it, DO; drink a
+        healing potion when health is low; explore when none can be reached. With ``ranged``,
+        a mob in line 2 or more cells away is first shot at (``_fire_at``)."""
+        goal = self.kills(name) + count
+        self.kills_wanted = True
+        try:
+            for _ in range(limit):
+                if self.kills(name) >= goal:
+                    return True
+                if self.done or self.budget <= 0:
+                    return False
+                if self.upkeep(heal_below):
+                    continue
+                targets = self.mobs(name)
+                beside = [t for t in targets if _beside(self.pos, t)]
+                if self.dodge():
+                    continue
+                if ranged and not beside and self._fire_at(targets):
+                    continue
+                if beside:
+                    t = beside[0]
+                    if rules.facing(self.state) != t:
+                        self.act(MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
+                        continue
+                    shot = self._projectile(t) if ranged else None
+                    better = shot is not None and self.damage_to(t, shot) > 2 * self.damage_to(t)
+                    self.act(shot if better else Action.DO)
+                    continue
+                path = self._path(set(targets), onto=False) if targets else None
+                if path:
+                    self._step_along(path)
+                elif explore:
+                    self.explore(6)
+                else:
+                    self.act(Action.NOOP)
+            return self.kills(name) >= goal
+        finally:
+            self.kills_wanted = False
+
+    def _mob_at(self, cell):
+        """(class, type id) of the live mob at ``cell`` of the player's level, or None."""
+        s, level = self.state, self.state.player_level
+        for k, kind in enumerate(KINDS):
+            mobs = getattr(s, kind)
+            for i in np.flatnonzero(mobs.mask[level]):
+                if tuple(int(v) for v in mobs.position[level, i]) == tuple(cell):
+                    return k, int(mobs.type_id[level, i])
+        return None
+
+    def damage_to(self, target, action: int = Action.DO) -> float:
+        """Health the mob at ``target`` would lose to ``action`` (DO: the sword; SHOOT_ARROW or
+        a spell: the projectile), by the tables (its defence against each element)."""
+        from . import mobs as mob_rules
+        from .bestiary import MOB_TYPE_DEFENCE_MAPPING
+        from .tables import PLAYER_ARROW, SPELLS
+        mob = self._mob_at(target)
+        if mob is None:
+            return 0.0
+        defence = MOB_TYPE_DEFENCE_MAPPING[mob[1]][mob[0]]
+        if action == Action.DO:
+            damage = rules.player_damage_vector(self.state)
+        else:
+            kind = PLAYER_ARROW if action == Action.SHOOT_ARROW else SPELLS[action][1]
+            damage = mob_rules.player_projectile_damage(self.state, int(kind))
+        return rules.damage_against(damage, defence)
+
+    def _projectile(self, target) -> int | None:
+        """The projectile action that does most damage to the mob at ``target`` among those
+        at hand (an arrow with a bow and arrows; a learned spell with 2 mana), or None."""
+        s, options = self.state, []
+        if s.inventory.bow >= 1 and s.inventory.arrows >= 1:
+            options.append(Action.SHOOT_ARROW)
+        if s.player_mana >= 2:
+            options += [a for i, a in enumerate((Action.CAST_FIREBALL, Action.CAST_ICEBALL)) if s.learned_spells[i]]
+        options = [(self.damage_to(target, a), a) for a in options]
+        options = [o for o in options if o[0] > 0]
+        return max(options)[1] if options else None
+
+    def _name_at(self, cell) -> str | None:
+        s, level = self.state, self.state.player_level
+        for k, kind in enumerate(KINDS):
+            mobs = getattr(s, kind)
+            for i in np.flatnonzero(mobs.mask[level]):
+                if tuple(int(v) for v in mobs.position[level, i]) == tuple(cell):
+                    return MOB_NAMES[k][int(mobs.type_id[level, i])]
+        return None
+
+    def _fire_at(self, targets, reach: int = 5) -> bool:
+        """One turn of shooting at a mob in line (2..reach cells, nothing solid between): turn
+        toward it, or shoot if already facing it. False (no turn taken) when none is."""
+        for t in _nearest([t for t in targets if self.in_line(t, reach)], self.pos, 3):
+            action = self._projectile(t)
+            if action is None:
+                continue
+            dr, dc = (t[0] > self.pos[0]) - (t[0] < self.pos[0]), (t[1] > self.pos[1]) - (t[1] < self.pos[1])
+            if rules.facing(self.state) != (self.pos[0] + dr, self.pos[1] + dc):
+                return self.act(MOVES[(dr, dc)]) or True
+            return self.act(action) or True
+        return False
+
+    def clear_gate(self, limit: int = 400, **kw) -> bool:
+        """Kill monsters until the level's ladder opens (Craftax: 8 kills on the level)."""
+        from .tables import MONSTERS_KILLED_TO_CLEAR_LEVEL
+        for _ in range(limit):
+            level = self.state.player_level
+            need = MONSTERS_KILLED_TO_CLEAR_LEVEL - int(self.state.monsters_killed[level])
+            if need <= 0:
+                return True
+            if not self.hunt(count=need, limit=limit, **kw):
+                return False
+        return False
+
+    def descend_floor(self, limit: int = 480, **kw) -> bool:
+        """Open the level's ladder (kill monsters until its gate opens), walk onto it, DESCEND."""
+        level = self.state.player_level
+        if not self.clear_gate(limit=limit, **kw):
+            return False
+        ladder = tuple(int(v) for v in self.state.down_ladders[level])
+        for _ in range(limit):
+            if self.state.player_level > level or self.done or self.budget <= 0:
+                break
+            if self.upkeep(kw.get("heal_below", 4.0)):
+                continue
+            if self.pos == ladder:
+                self.act(Action.DESCEND)
+                continue
+            beside = [t for t in self.mobs() if _beside(self.pos, t)]
+            path = self._path({ladder}, onto=True)
+            if beside and (not path or path[0] in beside):
+                t = beside[0]                  # a monster in the way (or at our back): fight it
+                self.act(Action.DO if rules.facing(self.state) == t else MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
+            elif path:
+                self._step_along(path)
+            else:
+                self.act(Action.NOOP)
+        return self.state.player_level > level
+
+    def in_line(self, target, reach: int = 8) -> bool:
+        """``target`` is in the player's row or column within ``reach``, nothing solid between."""
+        (r, c), (tr, tc) = self.pos, target
+        if (r != tr and c != tc) or abs(r - tr) + abs(c - tc) > reach:
+            return False
+        dr, dc = (tr > r) - (tr < r), (tc > c) - (tc < c)
+        level, m = self.state.player_level, self.state.map
+        from .tables import IS_SOLID
+        cell = (r + dr, c + dc)
+        while cell != (tr, tc):
+            if IS_SOLID[int(m[level][cell])] or self.state.mob_map[level][cell]:
+                return False
+            cell = (cell[0] + dr, cell[1] + dc)
+        return True
+
+    def shoot(self, name: str | None = None, count: int = 1, action: int = Action.SHOOT_ARROW,
+              limit: int = 300, reach: int = 6, can=None) -> bool:
+        """Kill ``count`` more mobs called ``name`` with a projectile (``action``: an arrow or a
+        spell): get in line with the nearest one, face it and shoot while ``can()`` (ammunition
+        or mana left); walk into line otherwise."""
+        goal = self.kills(name) + count
+        can = can or (lambda: True)
+        for _ in range(limit):
+            if self.kills(name) >= goal:
+                return True
+            if self.done or self.budget <= 0:
+                return False
+            targets = self.mobs(name)
+            if not targets:
+                self.act(Action.NOOP)
+                continue
+            lined = [t for t in targets if self.in_line(t, reach)]
+            if lined:
+                t = _nearest(lined, self.pos, 1)[0]
+                dr, dc = (t[0] > self.pos[0]) - (t[0] < self.pos[0]), (t[1] > self.pos[1]) - (t[1] < self.pos[1])
+                if rules.facing(self.state) != (self.pos[0] + dr, self.pos[1] + dc):
+                    self.act(MOVES[(dr, dc)])    # (turns; the cell ahead may be free: then a step)
+                    continue
+                if not can():
+                    return False
+                self.act(action)
+                continue
+            # cells in line with a target, two or more from it, reachable by walking
+            goals = set()
+            for tr, tc in targets:
+                for d in range(2, reach + 1):
+                    goals.update({(tr + d, tc), (tr - d, tc), (tr, tc + d), (tr, tc - d)})
+            goals = {g for g in goals if rules.in_bounds(self.state, *g) and (g == self.pos or rules.player_can_enter(self.state, *g))}
+            path = self._path(goals, onto=True) if goals else None
+            if path:
+                self._step_along(path)
+            else:
+                self.act(Action.NOOP)
+        return self.kills(name) >= goal
+
+    def cast(self, name: str | None = None, count: int = 1, spell: int = Action.CAST_FIREBALL, **kw) -> bool:
+        """``shoot`` with a spell, while mana lasts (2 a cast)."""
+        return self.shoot(name, count, action=spell, can=lambda: self.state.player_mana >= 2, **kw)
+
+    def walk(self, goals, onto: bool = False, limit: int = 300) -> bool:
+        """``go`` that does not give up when the way is blocked for a while (a mob in a
+        corridor): it fights a mob beside the player or waits, and plans again."""
+        goals = set(goals)
+        for _ in range(limit):
+            if not goals or self.done or self.budget <= 0:
+                return False
+            path = self._path(goals, onto)
+            if path == []:
+                return True
+            beside = [t for t in self.mobs() if _beside(self.pos, t)]
+            if beside and (path is None or path[0] in beside):
+                t = beside[0]
+                self.act(Action.DO if rules.facing(self.state) == t else MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
+            elif path:
+                self._step_along(path)
+            else:
+                self.act(Action.NOOP)
+        return False
+
+    def enchant(self, action: int, table: int) -> bool:
+        """Walk beside an enchantment ``table`` (a block), face it and enchant (``action``)."""
+        cells = self.cells(table)
+        if not cells or not self.walk(cells):
+            return False
+        t = next(c for c in cells if _beside(self.pos, c))
+        return self.face(t) and rules.facing(self.state) == t and self.act(action)
+
+    def open_chest(self, limit: int = 300) -> bool:
+        """Walk to the nearest reachable chest, face it and open it (DO)."""
+        before = len(self.cells(BlockType.CHEST))
+        if not self.walk(self.cells(BlockType.CHEST), limit=limit):
+            return False
+        t = next(c for c in self.cells(BlockType.CHEST) if _beside(self.pos, c))
+        if self.face(t) and rules.facing(self.state) == t:
+            self.act(Action.DO)
+        return len(self.cells(BlockType.CHEST)) < before
+
+    def torch(self) -> bool:
+        """Place a torch on a cell beside the player (turning to find one that takes it)."""
+        before = self.state.inventory.torches
+        for direction in (None, Action.RIGHT, Action.DOWN, Action.LEFT, Action.UP):
+            if direction is not None and not self.act(direction):
+                return False
+            if not self.act(Action.PLACE_TORCH):
+                return False
+            if self.state.inventory.torches < before:
+                return True
+        return False
+
+    def boss(self, limit: int = 420, **kw) -> bool:
+        """The necromancer fight (the graveyard): kill the monsters of each spawn wave; while he
+        is vulnerable (none alive, the wave over) stand beside his block and hit him (DO)."""
+        from .tables import NUM_LEVELS
+        for _ in range(limit):
+            s = self.state
+            if self.done or self.budget <= 0 or s.boss_progress >= NUM_LEVELS - 1:
+                break
+            if self.upkeep(kw.get("heal_below", 4.0)):
+                continue
+            necro = self.cells(BlockType.NECROMANCER)
+            if not necro:
+                return False
+            mobs = self.mobs()
+            if mobs and (s.boss_timesteps_to_spawn_this_round < 1
+                         or any(_beside(self.pos, t) for t in mobs) or self.danger()):
+                self.hunt(count=1, limit=1, explore=False, **kw)
+                continue
+            if mobs and self._fire_at(mobs):     # (the wave is on: hold the necromancer's side)
+                continue
+            if not any(_beside(self.pos, n) for n in necro):
+                path = self._path(set(necro), onto=False)
+                self._step_along(path) if path else self.act(Action.NOOP)
+                continue
+            t = next(n for n in necro if _beside(self.pos, n))
+            if rules.facing(self.state) != t:
+                self.act(MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
+            else:
+                self.act(Action.DO if s.boss_timesteps_to_spawn_this_round <= 0 else Action.NOOP)
+        return self.state.boss_progress >= NUM_LEVELS - 1
+
+    def surrender(self, limit: int = 500) -> bool:
+        """A losing policy: walk up to the nearest monster (exploring until one comes) and stand
+        there doing nothing until the player dies. True once dead."""
+        for _ in range(limit):
+            if self.done:
+                break
+            targets = self.mobs()
+            if any(_beside(self.pos, t) for t in targets):
+                self.act(Action.NOOP)
+                continue
+            path = self._path(set(targets), onto=False) if targets else None
+            if path:
+                self._step_along(path)
+            else:
+                self.kills_wanted = True
+                self.explore(6)
+                self.kills_wanted = False
+        return self.state.player_health <= 0
+
 
 def _beside(a, b) -> bool:
     return abs(a[0] - b[0]) + abs(a[1] - b[1]) == 1
