@@ -105,8 +105,9 @@ class Tally:
             return lambda t: int(np.count_nonzero(t.state.inventory.armour))
         if head == "got" and tail in ITEMS:
             return lambda t: t.got[tail]
-        if head == "kills":
-            return lambda t: t.kills.get(tail, 0)
+        if head == "kills":      # mob names have spaces; a test writes them with _ (kills.fire_elemental)
+            name = tail.replace("_", " ")
+            return lambda t: t.kills.get(name, 0)
         if head == "placed" and tail in self.placed:
             return lambda t: t.placed[tail]
         if head == "potion" and tail in self.potions:
