@@ -395,7 +395,9 @@ class CombatPlanner(Planner):
             step = ((t[0] > me[0]) - (t[0] < me[0]), (t[1] > me[1]) - (t[1] < me[1]))
             ahead = (me[0] + step[0], me[1] + step[1])
             waited = getattr(self, "_waited", 0)
-            if rules.facing(self.state) == ahead and self.danger(me, mobs, t) < 1 and waited < 4:
+            chase = d == 2 and target.cooldown > 1        # it stepped back while it cannot strike
+            if rules.facing(self.state) == ahead and self.danger(me, mobs, t) < 1 and waited < 4 \
+                    and not chase:
                 self._waited = waited + 1
                 return self.act(Action.NOOP)
             self._waited = 0

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import pytest
 
-import glyphbench_rl.games.craftax  # noqa: F401  (registers the tasks)
 from glyphbench_rl.core import registry
 from glyphbench_rl.games.craftax.planner import CombatPlanner, live_mobs
 from glyphbench_rl.games.craftax.scenarios import SCENARIOS
@@ -88,18 +87,36 @@ def win_night_horde(p):
     p.survive(200)
 
 
+def win_potion(p):
+    # the healing potion first (read off the episode's potion mapping), then the zombies
+    assert p.drink("heal")
+    p.skirmish("zombie", 2, rest_below=3, rest_to=3)
+
+
+def win_xp_attribute_spend(p):
+    # the zombies first (at strength 1), health back to full, then the 2 XP on strength: the
+    # knight (6 a blow, half of a sword's blow blocked) comes, and meets the sword in front
+    p.skirmish("zombie", 2, rest_below=3, rest_to=3)
+    while not p.done and p.state.player_health < 9:
+        p.survive(1)
+    p.act(A.LEVEL_UP_STRENGTH)
+    p.act(A.LEVEL_UP_STRENGTH)
+    p.skirmish("knight", 1)
+
+
 def win_reach_dungeon(p):
     assert p.descend()
 
 
 WINS = {
     "fightzombie": win_fightzombie, "survivehorde": win_survivehorde, "fight-cow": win_fight_cow,
-    "fight-skeletons": win_fight_skeletons,
+    "fight-zombies": win_fight_zombies, "fight-skeletons": win_fight_skeletons,
     "wave-defense": win_wave_defense, "bow-kite": win_bow, "bow-kite-hard": win_bow,
     "fight-archers": win_fight_archers, "fight-spiders": win_fight_spiders,
     "fight-bats": win_fight_bats, "kiteskeletons": win_kiteskeletons, "survive-night": win_survive,
     "survivenight": win_survive, "night-horde-no-shelter": win_night_horde,
-    "reach-dungeon": win_reach_dungeon,
+    "reach-dungeon": win_reach_dungeon, "potion-triage": win_potion, "potion-id-stakes": win_potion,
+    "xp-attribute-spend": win_xp_attribute_spend,
 }
 SEEDS = {name: (0, 1) for name in WINS}
 # seed 1 is lost on these: a stray skeleton or a zombie pinned us (see the report)
