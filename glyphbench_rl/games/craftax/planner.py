@@ -210,6 +210,7 @@ def _nearest(cells, pos, k: int) -> list:
 # -- combat goals (helper p2): skirmish with evasion, bow shots, fleeing, potions by effect ---------
 
 LINES = ((0, -1), (0, 1), (-1, 0), (1, 0))
+ROOM_WEIGHT = 0.1     # evade: worth of one cell of running room (``_room``) against one of distance
 
 
 class Mob:
@@ -452,13 +453,32 @@ class CombatPlanner(Planner):
         mobs = live_mobs(self.state) if mobs is None else mobs
         monsters = [m for m in mobs if m.kind > 0]
         best = None
+        chasers = [m.cell for m in monsters if m.kind == 1]
         for action, cell in self._steps():
-            near = min((_dist(cell, m.cell) for m in monsters if m.kind == 1), default=20)
-            room = sum(1 for a, _ in self._steps_from(cell))
-            score = 4.0 * self.danger(cell, mobs) - min(near, 8) - 0.3 * room
+            near = min((_dist(cell, m) for m in chasers), default=20)
+            score = 4.0 * self.danger(cell, mobs) - min(near, 8) - ROOM_WEIGHT * self._room(cell, chasers)
             if best is None or score < best[0]:
                 best = (score, action)
         return self.act(best[1])
+
+    def _room(self, cell, chasers, depth: int = 5) -> int:
+        """Cells within ``depth`` steps of ``cell`` that the player reaches before any chaser
+        could (by Manhattan distance): room to keep running."""
+        s = self.state
+        seen, frontier, count = {cell}, [cell], 0
+        for step in range(1, depth + 1):
+            nxt = []
+            for r, c in frontier:
+                for dr, dc in MOVES:
+                    n = (r + dr, c + dc)
+                    if n in seen or not rules.in_bounds(s, *n) or not rules.player_can_enter(s, *n):
+                        continue
+                    seen.add(n)
+                    if all(_dist(n, m) > step for m in chasers):
+                        count += 1
+                        nxt.append(n)
+            frontier = nxt
+        return count
 
     def _steps_from(self, cell):
         for (dr, dc), a in MOVES.items():
@@ -544,3 +564,25 @@ class CombatPlanner(Planner):
                 self.act(Action.DRINK_POTION_RED + colour)
                 return True
         return False
+
+    def try_potions(self, until, safe_health: float = 4.0, limit: int = 200) -> bool:
+        """Find a potion by its effect without knowing the colours: keep away from monsters
+        until health is at least ``safe_health`` (a harmful potion takes 3), then drink the
+        colours held one by one (after the harmful one showed itself, without waiting) until
+        ``until()`` (e.g. health went up) holds. True if it did."""
+        harmed = False          # the harmful one is found (health fell by 3 as it was drunk)
+        for _ in range(limit):
+            if self.done:
+                return False
+            if until():
+                return True
+            if self.state.player_health < safe_health and not harmed:
+                self.survive(1)
+                continue
+            held = [c for c in range(6) if self.state.inventory.potions[c] > 0]
+            if not held:
+                break
+            health = self.state.player_health
+            self.act(Action.DRINK_POTION_RED + held[0])
+            harmed = harmed or self.state.player_health <= health - 3
+        return not self.done and until()
