@@ -254,6 +254,10 @@ class CombatPlanner(Planner):
     """Planner with combat goals that read the mobs' cells and cooldowns (all public state) and
     act only through ``task.step``."""
 
+    def __init__(self, task, budget: int = 10_000) -> None:
+        super().__init__(task, budget)
+        self._waited = 0          # turns spent waiting in ambush for the same approach
+
     # -- danger of standing on a cell -------------------------------------------------------------
     def _clear_line(self, a, b) -> bool:
         """No solid block strictly between a and b on one row or column (a projectile's way)."""
@@ -271,9 +275,9 @@ class CombatPlanner(Planner):
         return True
 
     def danger(self, cell, mobs, target=None) -> float:
-        """How much harm standing on ``cell`` next turn risks: a ready melee monster beside it or
-        (other than ``target``, the one the player means to meet) two away, a ranged monster with a clear straight line to it, a
-        mob projectile flying at it."""
+        """How much harm standing on ``cell`` next turn risks: a ready melee monster beside it
+        or (other than ``target``, the one the player means to meet) two away, a ranged
+        monster with a clear straight line to it, a mob projectile flying at it."""
         d = 0.0
         for m in mobs:
             if m.kind == 0:
@@ -335,13 +339,13 @@ class CombatPlanner(Planner):
         return self.act(Action.DO)
 
     def skirmish(self, name=None, count: int = 1, limit: int = 600, rest_below: float = 0.0,
-                 rest_to: float = 0.0, until=None, crowd: int = 0) -> int:
+                 rest_to: float = 0.0, until=None) -> int:
         """Kill ``count`` mobs matching ``name`` (see ``_matches``) in melee, choosing each turn
         the step that closes in while keeping off ranged monsters' lines and away from ready
         melee monsters other than the one engaged; below ``rest_below`` health it keeps away
-        from every monster (mobs chase at 3/4 of the player's speed) until ``rest_to``; with
-        ``crowd``, it closes in only when no other melee monster is within ``crowd``. Returns
-        the kills (by the task's tally) made."""
+        from every monster (mobs chase at 3/4 of the player's speed) until ``rest_to``. A melee
+        mob is met in front when it can be (``_ambush``). Returns the kills (by the task's
+        tally) made."""
         kills = self._kills(name)
         start = kills()
         resting = False
@@ -361,14 +365,6 @@ class CombatPlanner(Planner):
             if resting or not targets:
                 self.evade(mobs)
                 continue
-            if crowd and not beside:
-                # close in on the nearest only when no other melee monster is near it
-                first = min(targets, key=lambda m: _dist(m.cell, self.pos))
-                others = [m for m in mobs if m.kind == 1 and m is not first
-                          and _dist(m.cell, self.pos) <= crowd]
-                if others:
-                    self.evade(mobs)
-                    continue
             first = min(targets, key=lambda m: _dist(m.cell, self.pos))
             if first.kind == 1 and self._ambush(first, mobs):
                 continue
@@ -395,17 +391,15 @@ class CombatPlanner(Planner):
         if inline and d >= 2:
             step = ((t[0] > me[0]) - (t[0] < me[0]), (t[1] > me[1]) - (t[1] < me[1]))
             ahead = (me[0] + step[0], me[1] + step[1])
-            waited = getattr(self, "_waited", 0)
+            waited = self._waited
             chase = d == 2 and target.cooldown > 1        # it stepped back while it cannot strike
             if rules.facing(self.state) == ahead and self.danger(me, mobs, t) < 1 and waited < 4 \
                     and not chase:
                 self._waited = waited + 1
                 return self.act(Action.NOOP)
             self._waited = 0
-            if d >= 3 or target.cooldown > 1:
-                if self.danger(ahead, mobs, t) < 1:
-                    return self.act(MOVES[step])
-            return False
+            if (d >= 3 or target.cooldown > 1) and self.danger(ahead, mobs, t) < 1:
+                return self.act(MOVES[step])
         return False
 
     def _ready_beside(self, cell, mobs, but=None) -> list:
@@ -415,8 +409,8 @@ class CombatPlanner(Planner):
 
     def _engage(self, beside: list, mobs: list, resting: bool) -> bool:
         """One melee turn with targets beside: finish one a hit kills; hit (or turn to) one when
-        at most that one strikes back this turn and health allows; else step away. False when
-        nothing was done (the caller moves on)."""
+        at most that one strikes back this turn and health allows; else step away. False once
+        the episode is over."""
         damage = rules.player_damage_vector(self.state)
         facing = rules.facing(self.state)
         health = self.state.player_health
@@ -480,13 +474,7 @@ class CombatPlanner(Planner):
             frontier = nxt
         return count
 
-    def _steps_from(self, cell):
-        for (dr, dc), a in MOVES.items():
-            n = (cell[0] + dr, cell[1] + dc)
-            if rules.in_bounds(self.state, *n) and (n == self.pos or rules.player_can_enter(self.state, *n)):
-                yield a, n
-
-    def survive(self, turns: int, fight_below: int = 99) -> None:
+    def survive(self, turns: int) -> None:
         """Live through ``turns`` turns: hit a monster that is beside and on cooldown (or any
         when cornered), else evade."""
         for _ in range(turns):
@@ -501,7 +489,7 @@ class CombatPlanner(Planner):
 
     def shoot(self, name=None, count: int = 1, limit: int = 400, until=None) -> int:
         """Kill ``count`` mobs matching ``name`` with arrows: get in a straight clear line with
-        one, 2 to 5 cells away, face it and SHOOT_ARROW; melee when one is beside. Stops when
+        one, 2 to 6 cells away, face it and SHOOT_ARROW; melee when one is beside. Stops when
         the arrows run out (then returns the kills so far)."""
         kills = self._kills(name)
         start = kills()
@@ -526,7 +514,7 @@ class CombatPlanner(Planner):
                 step = ((t.cell[0] > self.pos[0]) - (t.cell[0] < self.pos[0]),
                         (t.cell[1] > self.pos[1]) - (t.cell[1] < self.pos[1]))
                 if rules.facing(self.state) != (self.pos[0] + step[0], self.pos[1] + step[1]):
-                    self._turn(step)
+                    self.act(MOVES[step])          # (a move: it turns, stepping if it can)
                 else:
                     self.act(Action.SHOOT_ARROW)
                 continue
@@ -547,11 +535,6 @@ class CombatPlanner(Planner):
                     best = (score, action)
             self.act(best[1])
         return kills() - start
-
-    def _turn(self, step) -> bool:
-        """Face the direction ``step`` without moving if the cell there is blocked, else by a
-        move (which also steps)."""
-        return self.act(MOVES[step])
 
     def drink(self, effect: str) -> bool:
         """Drink a potion whose effect is ``effect`` (tables' order: heal, harm, mana, drain,

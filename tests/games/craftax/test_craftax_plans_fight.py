@@ -198,3 +198,12 @@ def test_loss_path(name):
     assert last == pytest.approx(SCENARIOS[name].death)
     assert p.total <= 1.0 + SCENARIOS[name].death + 1e-9
 
+
+
+@pytest.mark.parametrize("name", ["potion-triage", "potion-id-stakes"])
+def test_loss_by_the_harmful_potion(name):
+    # at 2 health the harmful potion (-3) kills on the step it is drunk
+    p = start(name, 0)
+    assert p.drink("harm")
+    assert p.done and p.task.won is False and p.state.player_health <= 0
+    assert p.total == pytest.approx(SCENARIOS[name].death)
