@@ -1,9 +1,11 @@
 """Scripted win and loss paths for the Craftax fight and survival tasks.
 
 Each WIN path plays the task through ``task.step`` only (``planner.CombatPlanner``: it reads the
-public state to plan) and wins (or, for the tasks that run to the horizon, ends alive with a
-return of at least 0.5). Each LOSS path dies and is paid the scenario's death penalty on the
-step it dies. No jax here.
+state to plan: mob cells, cooldowns, health) and wins with every reward term paid (or, for the
+tasks that run to the horizon, ends alive with a return of at least 0.5). The potion tasks are
+won blind (potions tried once health can take the harmful one); a second test drinks the
+healing potion by its (hidden) effect. Each LOSS path dies and is paid the scenario's death
+penalty on the step it dies. No jax here.
 """
 
 from __future__ import annotations
@@ -154,7 +156,7 @@ def test_win_path(name, seed):
     scenario = SCENARIOS[name]
     if scenario.success:
         assert p.task.won is True, (name, seed, p.total, p.task.tally.kills)
-        assert p.total > 0
+        assert p.total == pytest.approx(sum(t.unit * t.cap for t in scenario.terms))   # all terms
     else:
         p.wait(scenario.horizon)          # to the horizon
         assert p.done and p.task.won is not False
