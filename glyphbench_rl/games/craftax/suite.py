@@ -137,7 +137,8 @@ scenario(name="fight-cow", horizon=80, settings=ARENA, kit=dict(sword=1), topics
          terms=(stage("cow", "kills.cow >= 1", 0.7, "for killing the cow"),
                 stage("zombie", "kills.zombie >= 1", 0.3, "for killing the zombie")),
          success="kills.cow >= 1")
-scenario(name="fight-zombies", horizon=130, settings=CALM, kit=dict(sword=2, armour=ARMOUR_IRON), topics=("fight",),
+scenario(name="fight-zombies", horizon=130, settings=CALM, kit=dict(sword=2, armour=ARMOUR_IRON),
+         topics=("fight",),
          objective="Kill 5 zombies (at most 3 are out at once).", edits=(Clear(4), Mobs("zombie", 5, 2, 5)),
          terms=(kills("zombie", 5, 1.0, "zombie"),), success="kills.zombie >= 5", progress_keys=("kills.zombie",))
 scenario(name="fight-skeletons", horizon=150, settings=Settings(intrinsics=False, spawning=False),
