@@ -630,3 +630,367 @@ def _beside(a, b) -> bool:
 
 def _nearest(cells, pos, k: int) -> list:
     return sorted(cells, key=lambda p: abs(p[0] - pos[0]) + abs(p[1] - pos[1]))[:k]
+
+
+# -- combat goals (helper p2): skirmish with evasion, bow shots, fleeing, potions by effect ---------
+
+LINES = ((0, -1), (0, 1), (-1, 0), (1, 0))
+ROOM_WEIGHT = 0.1     # evade: worth of one cell of running room (``_room``) against one of distance
+
+
+class Mob:
+    """A live mob as the combat goals see it: cell, class (0 passive, 1 melee, 2 ranged), name,
+    attack cooldown and health."""
+    __slots__ = ("cell", "kind", "name", "cooldown", "health")
+
+    def __init__(self, cell, kind, name, cooldown, health) -> None:
+        self.cell, self.kind, self.name, self.cooldown, self.health = cell, kind, name, cooldown, health
+
+
+def live_mobs(state) -> list[Mob]:
+    level, out = state.player_level, []
+    for k, kind in enumerate(KINDS):
+        mobs = getattr(state, kind)
+        for i in np.flatnonzero(mobs.mask[level]):
+            out.append(Mob((int(mobs.position[level, i, 0]), int(mobs.position[level, i, 1])), k,
+                           MOB_NAMES[k][int(mobs.type_id[level, i])], int(mobs.attack_cooldown[level, i]),
+                           float(mobs.health[level, i])))
+    return out
+
+
+def _matches(mob: Mob, name) -> bool:
+    """``name``: a mob name, a tuple of names, or None for every monster (melee or ranged)."""
+    if name is None:
+        return mob.kind > 0
+    if isinstance(name, str):
+        return mob.name == name
+    return mob.name in name
+
+
+def _type_id(mob: Mob) -> int:
+    return MOB_NAMES[mob.kind].index(mob.name)
+
+
+def _dist(a, b) -> int:
+    return abs(a[0] - b[0]) + abs(a[1] - b[1])
+
+
+class CombatPlanner(Planner):
+    """Planner with combat goals that read the mobs' cells and cooldowns (all public state) and
+    act only through ``task.step``."""
+
+    def __init__(self, task, budget: int = 10_000) -> None:
+        super().__init__(task, budget)
+        self._waited = 0          # turns spent waiting in ambush for the same approach
+
+    # -- danger of standing on a cell -------------------------------------------------------------
+    def _clear_line(self, a, b) -> bool:
+        """No solid block strictly between a and b on one row or column (a projectile's way)."""
+        s, level = self.state, self.state.player_level
+        if a[0] != b[0] and a[1] != b[1]:
+            return False
+        dr = (b[0] > a[0]) - (b[0] < a[0])
+        dc = (b[1] > a[1]) - (b[1] < a[1])
+        r, c = a[0] + dr, a[1] + dc
+        while (r, c) != b:
+            if not rules.player_can_enter(s, r, c) and not s.mob_map[level, r, c] \
+                    and s.map.item(level, r, c) not in (BlockType.WATER, BlockType.LAVA):
+                return False
+            r, c = r + dr, c + dc
+        return True
+
+    def danger(self, cell, mobs, target=None) -> float:
+        """How much harm standing on ``cell`` next turn risks: a ready melee monster beside it
+        or (other than ``target``, the one the player means to meet) two away, a ranged
+        monster with a clear straight line to it, a mob projectile flying at it."""
+        d = 0.0
+        for m in mobs:
+            if m.kind == 0:
+                continue
+            dist = _dist(cell, m.cell)
+            if m.kind == 1:
+                if dist <= 1 and m.cooldown <= 0:
+                    d += 3.0
+                elif dist == 2 and m.cooldown <= 1 and m.cell != target:
+                    d += 1.0
+            elif 1 <= dist <= 6 and self._clear_line(m.cell, cell):
+                d += 2.0 if m.cooldown <= 1 else 0.5
+        s, level = self.state, self.state.player_level
+        shots = s.mob_projectiles
+        for i in np.flatnonzero(shots.mask[level]):
+            p = (int(shots.position[level, i, 0]), int(shots.position[level, i, 1]))
+            dr, dc = (int(v) for v in s.mob_projectile_directions[level, i])
+            for k in range(0, 4):
+                if (p[0] + k * dr, p[1] + k * dc) == cell:
+                    d += 3.0
+                    break
+        return d
+
+    def _steps(self):
+        """(action, cell) for staying and each enterable neighbour."""
+        r, c = self.pos
+        out = [(Action.NOOP, (r, c))]
+        for (dr, dc), a in MOVES.items():
+            n = (r + dr, c + dc)
+            if rules.in_bounds(self.state, *n) and rules.player_can_enter(self.state, *n):
+                out.append((a, n))
+        return out
+
+    def _distances(self, goals: set, limit: int = 40) -> dict:
+        """Walking distance from every cell within ``limit`` of the goal cells (BFS from them)."""
+        s = self.state
+        dist = {g: 0 for g in goals}
+        queue = deque(goals)
+        me = self.pos
+        while queue:
+            cell = queue.popleft()
+            if dist[cell] >= limit:
+                continue
+            for dr, dc in MOVES:
+                n = (cell[0] + dr, cell[1] + dc)
+                if n in dist or not rules.in_bounds(s, *n):
+                    continue
+                if n != me and not rules.player_can_enter(s, *n):
+                    continue
+                dist[n] = dist[cell] + 1
+                queue.append(n)
+        return dist
+
+    # -- goals ------------------------------------------------------------------------------------
+    def strike(self, mob: Mob) -> bool:
+        """Face an adjacent mob and hit it (one turn either way)."""
+        if rules.facing(self.state) != mob.cell:
+            return self.face(mob.cell)
+        return self.act(Action.DO)
+
+    def skirmish(self, name=None, count: int = 1, limit: int = 600, rest_below: float = 0.0,
+                 rest_to: float = 0.0, until=None) -> int:
+        """Kill ``count`` mobs matching ``name`` (see ``_matches``) in melee, choosing each turn
+        the step that closes in while keeping off ranged monsters' lines and away from ready
+        melee monsters other than the one engaged; below ``rest_below`` health it keeps away
+        from every monster (mobs chase at 3/4 of the player's speed) until ``rest_to``. A melee
+        mob is met in front when it can be (``_ambush``). Returns the kills (by the task's
+        tally) made."""
+        kills = self._kills(name)
+        start = kills()
+        resting = False
+        for _ in range(limit):
+            if self.done or kills() - start >= count or (until is not None and until()):
+                break
+            mobs = live_mobs(self.state)
+            targets = [m for m in mobs if _matches(m, name)]
+            health = self.state.player_health
+            if rest_below and health < rest_below:
+                resting = True
+            if resting and health >= rest_to:
+                resting = False
+            beside = [m for m in targets if _dist(m.cell, self.pos) == 1]
+            if beside and self._engage(beside, mobs, resting):
+                continue
+            if resting or not targets:
+                self.evade(mobs)
+                continue
+            first = min(targets, key=lambda m: _dist(m.cell, self.pos))
+            if first.kind == 1 and self._ambush(first, mobs):
+                continue
+            goal_cells = {(t.cell[0] + dr, t.cell[1] + dc) for t in targets for dr, dc in MOVES}
+            dist = self._distances(goal_cells)
+            best = None
+            for action, cell in self._steps():
+                score = dist.get(cell, 99) + 2.0 * self.danger(cell, mobs, first.cell)
+                if best is None or score < best[0]:
+                    best = (score, action)
+            self.act(best[1])
+        return kills() - start
+
+    def _ambush(self, target: Mob, mobs: list) -> bool:
+        """Let a melee mob come to the player's sword: a chasing mob steps along its longer axis,
+        so stand in its row or column, 3 or more away, facing it, and wait; it then arrives
+        in front and takes the first blow (a few turns at most). False when not in line (the
+        caller closes in instead)."""
+        me, t = self.pos, target.cell
+        d = _dist(me, t)
+        if d > 9:
+            return False
+        inline = (me[0] == t[0] or me[1] == t[1]) and self._clear_line(me, t)
+        if inline and d >= 2:
+            step = ((t[0] > me[0]) - (t[0] < me[0]), (t[1] > me[1]) - (t[1] < me[1]))
+            ahead = (me[0] + step[0], me[1] + step[1])
+            waited = self._waited
+            chase = d == 2 and target.cooldown > 1        # it stepped back while it cannot strike
+            if rules.facing(self.state) == ahead and self.danger(me, mobs, t) < 1 and waited < 4 \
+                    and not chase:
+                self._waited = waited + 1
+                return self.act(Action.NOOP)
+            self._waited = 0
+            if (d >= 3 or target.cooldown > 1) and self.danger(ahead, mobs, t) < 1:
+                return self.act(MOVES[step])
+        return False
+
+    def _ready_beside(self, cell, mobs, but=None) -> list:
+        """Melee monsters that would strike a player on ``cell`` this turn (beside, ready)."""
+        return [m for m in mobs if m.kind == 1 and m.cooldown <= 0 and m is not but
+                and _dist(m.cell, cell) == 1]
+
+    def _engage(self, beside: list, mobs: list, resting: bool) -> bool:
+        """One melee turn with targets beside: finish one a hit kills; hit (or turn to) one when
+        at most that one strikes back this turn and health allows; else step away. False once
+        the episode is over."""
+        damage = rules.player_damage_vector(self.state)
+        facing = rules.facing(self.state)
+        health = self.state.player_health
+        ahead = next((m for m in beside if m.cell == facing), None)
+        if ahead is not None:
+            from .bestiary import MOB_TYPE_DEFENCE_MAPPING
+            dealt = rules.damage_against(damage, MOB_TYPE_DEFENCE_MAPPING[_type_id(ahead)][ahead.kind])
+            back = self._ready_beside(self.pos, mobs, ahead if dealt >= ahead.health else None)
+            if sum(self._strength(m) for m in back) < health and not (resting and back):
+                return self.act(Action.DO)
+        # the one to face: off cooldown first, then the weakest
+        beside = sorted(beside, key=lambda m: (m.cooldown <= 0, m.health))
+        first = beside[0]
+        back = self._ready_beside(self.pos, mobs)
+        if (not back or back == [first]) and not resting and \
+                sum(self._strength(m) for m in back) < health:
+            return self.strike(first)
+        return self.evade(mobs)
+
+    def _strength(self, mob: Mob) -> float:
+        from .bestiary import MOB_TYPE_DAMAGE_MAPPING
+        return rules.player_damage(self.state, MOB_TYPE_DAMAGE_MAPPING[_type_id(mob)][mob.kind], melee=True)
+
+    def _kills(self, name):
+        tally = self.task.tally
+        if name is None:
+            return lambda: tally.kills["monsters"]
+        names = (name,) if isinstance(name, str) else tuple(name)
+        return lambda: sum(tally.kills.get(n, 0) for n in names)
+
+    def evade(self, mobs=None) -> bool:
+        """One turn keeping away from monsters: the step (or staying) with the least danger,
+        then the largest distance to the nearest melee monster."""
+        mobs = live_mobs(self.state) if mobs is None else mobs
+        monsters = [m for m in mobs if m.kind > 0]
+        best = None
+        chasers = [m.cell for m in monsters if m.kind == 1]
+        for action, cell in self._steps():
+            near = min((_dist(cell, m) for m in chasers), default=20)
+            score = 4.0 * self.danger(cell, mobs) - min(near, 8) - ROOM_WEIGHT * self._room(cell, chasers)
+            if best is None or score < best[0]:
+                best = (score, action)
+        return self.act(best[1])
+
+    def _room(self, cell, chasers, depth: int = 5) -> int:
+        """Cells within ``depth`` steps of ``cell`` that the player reaches before any chaser
+        could (by Manhattan distance): room to keep running."""
+        s = self.state
+        seen, frontier, count = {cell}, [cell], 0
+        for step in range(1, depth + 1):
+            nxt = []
+            for r, c in frontier:
+                for dr, dc in MOVES:
+                    n = (r + dr, c + dc)
+                    if n in seen or not rules.in_bounds(s, *n) or not rules.player_can_enter(s, *n):
+                        continue
+                    seen.add(n)
+                    if all(_dist(n, m) > step for m in chasers):
+                        count += 1
+                        nxt.append(n)
+            frontier = nxt
+        return count
+
+    def survive(self, turns: int) -> None:
+        """Live through ``turns`` turns: hit a monster that is beside and on cooldown (or any
+        when cornered), else evade."""
+        for _ in range(turns):
+            if self.done:
+                return
+            mobs = live_mobs(self.state)
+            beside = [m for m in mobs if m.kind > 0 and _dist(m.cell, self.pos) == 1]
+            if beside and any(m.cooldown > 1 for m in beside) and len(beside) == 1:
+                self.strike(beside[0])
+                continue
+            self.evade(mobs)
+
+    def shoot(self, name=None, count: int = 1, limit: int = 400, until=None) -> int:
+        """Kill ``count`` mobs matching ``name`` with arrows: get in a straight clear line with
+        one, 2 to 6 cells away, face it and SHOOT_ARROW; melee when one is beside. Stops when
+        the arrows run out (then returns the kills so far)."""
+        kills = self._kills(name)
+        start = kills()
+        for _ in range(limit):
+            if self.done or kills() - start >= count or (until is not None and until()):
+                break
+            mobs = live_mobs(self.state)
+            targets = [m for m in mobs if _matches(m, name)]
+            if not targets:
+                self.evade(mobs)
+                continue
+            beside = [m for m in targets if _dist(m.cell, self.pos) == 1]
+            if beside:
+                self.strike(beside[0])
+                continue
+            if self.state.inventory.arrows <= 0:
+                break
+            inline = [m for m in targets if 2 <= _dist(m.cell, self.pos) <= 6
+                      and self._clear_line(self.pos, m.cell)]
+            if inline:
+                t = min(inline, key=lambda m: _dist(m.cell, self.pos))
+                step = ((t.cell[0] > self.pos[0]) - (t.cell[0] < self.pos[0]),
+                        (t.cell[1] > self.pos[1]) - (t.cell[1] < self.pos[1]))
+                if rules.facing(self.state) != (self.pos[0] + step[0], self.pos[1] + step[1]):
+                    self.act(MOVES[step])          # (a move: it turns, stepping if it can)
+                else:
+                    self.act(Action.SHOOT_ARROW)
+                continue
+            # a cell in line with a target, 2-4 away, clear
+            goals = set()
+            for t in targets:
+                for dr, dc in LINES:
+                    for k in range(2, 5):
+                        cell = (t.cell[0] + k * dr, t.cell[1] + k * dc)
+                        if rules.in_bounds(self.state, *cell) and rules.player_can_enter(self.state, *cell) \
+                                and self._clear_line(cell, t.cell):
+                            goals.add(cell)
+            dist = self._distances(goals) if goals else {}
+            best = None
+            for action, cell in self._steps():
+                score = dist.get(cell, 99) + 1.0 * self.danger(cell, mobs)
+                if best is None or score < best[0]:
+                    best = (score, action)
+            self.act(best[1])
+        return kills() - start
+
+    def drink(self, effect: str) -> bool:
+        """Drink a potion whose effect is ``effect`` (tables' order: heal, harm, mana, drain,
+        energy, tire), read from the episode's potion mapping; False if none is held."""
+        from .task import POTION_EFFECTS
+        want = POTION_EFFECTS.index(effect)
+        s = self.state
+        for colour, e in enumerate(s.potion_mapping):
+            if int(e) == want and s.inventory.potions[colour] > 0:
+                self.act(Action.DRINK_POTION_RED + colour)
+                return True
+        return False
+
+    def try_potions(self, until, safe_health: float = 4.0, limit: int = 200) -> bool:
+        """Find a potion by its effect without knowing the colours: keep away from monsters
+        until health is at least ``safe_health`` (a harmful potion takes 3), then drink the
+        colours held one by one (after the harmful one showed itself, without waiting) until
+        ``until()`` (e.g. health went up) holds. True if it did."""
+        harmed = False          # the harmful one is found (health fell by 3 as it was drunk)
+        for _ in range(limit):
+            if self.done:
+                return False
+            if until():
+                return True
+            if self.state.player_health < safe_health and not harmed:
+                self.survive(1)
+                continue
+            held = [c for c in range(6) if self.state.inventory.potions[c] > 0]
+            if not held:
+                break
+            health = self.state.player_health
+            self.act(Action.DRINK_POTION_RED + held[0])
+            harmed = harmed or self.state.player_health <= health - 3
+        return not self.done and until()

@@ -139,7 +139,8 @@ scenario(name="fight-cow", horizon=80, settings=ARENA, kit=dict(sword=1), topics
          terms=(stage("cow", "kills.cow >= 1", 0.7, "for killing the cow"),
                 stage("zombie", "kills.zombie >= 1", 0.3, "for killing the zombie")),
          success="kills.cow >= 1")
-scenario(name="fight-zombies", horizon=130, settings=CALM, kit=dict(sword=2), topics=("fight",),
+scenario(name="fight-zombies", horizon=130, settings=CALM, kit=dict(sword=2, armour=ARMOUR_IRON),
+         topics=("fight",),
          objective="Kill 5 zombies (at most 3 are out at once).", edits=(Clear(4), Mobs("zombie", 5, 2, 5)),
          terms=(kills("zombie", 5, 1.0, "zombie"),), success="kills.zombie >= 5", progress_keys=("kills.zombie",))
 scenario(name="fight-skeletons", horizon=150, settings=Settings(intrinsics=False, spawning=False),
@@ -379,7 +380,7 @@ scenario(name="night-horde-no-shelter", horizon=180, time=DUSK, kit=dict(sword=2
          terms=(stage("k2", "kills.monsters >= 2", 0.2, "at 2 kills"), stage("k4", "kills.monsters >= 4", 0.2, "at 4 kills"),
                 stage("n40", "night >= 40", 0.2, "after 40 night turns"), stage("n80", "night >= 80", 0.2, "after 80"),
                 stage("end", "turn >= 180", 0.2, "for being alive at the end")), success="")
-scenario(name="xp-attribute-spend", horizon=220, settings=ARENA, kit=dict(sword=2), player=dict(player_xp=2),
+scenario(name="xp-attribute-spend", horizon=220, settings=ARENA, kit=dict(sword=3), player=dict(player_xp=2),
          topics=("fight", "attributes"),
          objective="Spend your 2 XP on strength (LEVEL_UP_STRENGTH twice); then a knight comes: kill it.",
          edits=(Clear(6), Mobs("zombie", 2, 4, 6)),
