@@ -14,7 +14,7 @@ import numpy as np
 
 from . import rules
 from .bestiary import MOB_NAMES
-from .tables import Action, BlockType, ItemType
+from .tables import IS_SOLID, MINING_BY_BLOCK, Action, BlockType, ItemType
 
 MOVES = {(0, -1): Action.LEFT, (0, 1): Action.RIGHT, (-1, 0): Action.UP, (1, 0): Action.DOWN}
 KINDS = ("passive_mobs", "melee_mobs", "ranged_mobs")
@@ -198,6 +198,198 @@ class Planner:
         return self.go([ladder], onto=True, limit=limit) and self.act(Action.DESCEND) or \
             self.state.player_level > level
 
+
+    # -- goals added for the crafting and survival tasks (p1) ---------------------------------------
+    def guard(self) -> bool:
+        """If a monster stands beside the player, turn to it and hit it (one turn); True if so."""
+        beside = [m for m in self.mobs() if _beside(self.pos, m)]
+        if not beside or self.done:
+            return False
+        target = beside[0]
+        if rules.facing(self.state) != target:
+            self.face(target)
+        else:
+            self.act(Action.DO)
+        return True
+
+    def _dig_path(self, goals: set) -> list[tuple[int, int]] | None:
+        """Cells from the player to a cell beside a goal, walking or mining through blocks the
+        pickaxe can mine (each mined cell costs two turns: mine, then step)."""
+        import heapq
+        s, level, start = self.state, self.state.player_level, self.pos
+        if any(_beside(start, g) for g in goals):
+            return []
+        rows, cols = s.map.shape[1:]
+        tier = s.inventory.pickaxe
+        best, prev, heap = {start: 0}, {start: None}, [(0, start)]
+        while heap:
+            cost, cell = heapq.heappop(heap)
+            if cost > best[cell]:
+                continue
+            if cell != start and any(_beside(cell, g) for g in goals):
+                path = [cell]
+                while prev[path[-1]] != start:
+                    path.append(prev[path[-1]])
+                return path[::-1]
+            for dr, dc in MOVES:
+                nxt = (cell[0] + dr, cell[1] + dc)
+                if not (0 <= nxt[0] < rows and 0 <= nxt[1] < cols) or nxt in goals:
+                    continue
+                if rules.player_can_enter(s, *nxt):
+                    step = 1
+                else:
+                    mined = MINING_BY_BLOCK.get(int(s.map[level][nxt]))
+                    if mined is None or mined[0] > tier or s.mob_map[level][nxt] \
+                            or s.item_map[level][nxt]:
+                        continue
+                    step = 3
+                if cost + step < best.get(nxt, 1 << 30):
+                    best[nxt], prev[nxt] = cost + step, cell
+                    heapq.heappush(heap, (cost + step, nxt))
+        return None
+
+    def gather(self, block: int, until, limit: int = 600, dig: bool = True) -> bool:
+        """Like ``collect``, one turn at a time: fight off monsters that come beside the player,
+        and (``dig``) mine a way through blocks to a ``block`` no walk reaches."""
+        for _ in range(limit):
+            if until():
+                return True
+            if self.done:
+                return False
+            if self.guard():
+                continue
+            targets = set(self.cells(block))
+            if not targets:
+                return until()
+            path = self._path(targets, False)
+            if path is None and dig:
+                path = self._dig_path(targets)
+            if path is None:
+                return until()
+            if path:
+                r, c = self.pos
+                step = MOVES[(path[0][0] - r, path[0][1] - c)]
+                if rules.player_can_enter(self.state, *path[0]) or rules.facing(self.state) != path[0]:
+                    self.act(step)
+                else:
+                    self.act(Action.DO)
+                continue
+            target = next(t for t in targets if _beside(self.pos, t))
+            if rules.facing(self.state) != target:
+                self.face(target)
+            else:
+                self.act(Action.DO)
+        return until()
+
+    def drink(self, upto: int) -> bool:
+        """Drink at the nearest water until drink reaches ``upto``."""
+        return self.gather(BlockType.WATER, lambda: self.state.player_drink >= upto, dig=False)
+
+    def eat(self, upto: int, limit: int = 300) -> bool:
+        """Eat until food reaches ``upto``: a ripe plant if one is in reach, else hunt a cow."""
+        for _ in range(limit):
+            if self.state.player_food >= upto:
+                return True
+            if self.done:
+                return False
+            if self.guard():
+                continue
+            if self.cells(BlockType.RIPE_PLANT) and self._path(set(self.cells(BlockType.RIPE_PLANT)), False) is not None:
+                self.gather(BlockType.RIPE_PLANT, lambda: True, limit=1)
+                self.gather(BlockType.RIPE_PLANT, lambda: self.state.player_food >= upto, limit=40, dig=False)
+                continue
+            if not self.mobs("cow"):
+                self.act(Action.NOOP)
+                continue
+            self.fight("cow", 1, limit=40)
+        return self.state.player_food >= upto
+
+    def place_n(self, action: int, block: int, count: int, limit: int = 200) -> int:
+        """Place ``block`` ``count`` times on the cell ahead, walking between placements (a move
+        into a free cell is a step, so the cell ahead is the next one in the walking direction)
+        and never walling the player in; monsters beside the player are fought off first."""
+        placed, turn = 0, 0
+        for _ in range(limit):
+            if placed >= count or self.done:
+                break
+            if self.guard():
+                continue
+            s, level = self.state, self.state.player_level
+            r, c = self.pos
+            ahead = rules.facing(s)
+            walk = [(r + dr, c + dc) for dr, dc in MOVES if rules.player_can_enter(s, r + dr, c + dc)]
+            here = int(s.map[level][ahead]) if rules.in_bounds(s, *ahead) else -1
+            fits = (ahead in walk and (action != Action.PLACE_PLANT or here == BlockType.GRASS)) or \
+                (action == Action.PLACE_STONE and here == BlockType.WATER)
+            if fits and len([x for x in walk if x != ahead]) >= 1:
+                self.act(action)
+                if rules.in_bounds(s, *ahead) and int(s.map[level][ahead]) == block and here != block:
+                    placed += 1
+                continue
+            if not walk:
+                self.act(Action.NOOP)
+                continue
+            turn += 1     # walk on, to a side with an open cell beyond it (turning each time)
+            order = list(MOVES)[turn % 4:] + list(MOVES)[:turn % 4]
+            onward = [d for d in order if (r + d[0], c + d[1]) in walk
+                      and rules.player_can_enter(s, r + 2 * d[0], c + 2 * d[1])]
+            dr, dc = (onward or [d for d in order if (r + d[0], c + d[1]) in walk])[0]
+            self.act(MOVES[(dr, dc)])
+        return placed
+
+    def wall_in(self) -> bool:
+        """Stand enclosed: stone placed on each open side (needs stone; monsters fought off)."""
+        for _ in range(24):
+            if self.done:
+                return False
+            r, c = self.pos
+            open_sides = [(r + dr, c + dc) for dr, dc in MOVES
+                          if rules.in_bounds(self.state, r + dr, c + dc)
+                          and not IS_SOLID[int(self.state.map[self.state.player_level, r + dr, c + dc])]]
+            if not open_sides:
+                return True
+            if self.state.inventory.stone < 1:
+                return False
+            if self.guard():
+                continue
+            side = open_sides[0]
+            if rules.facing(self.state) != side:
+                self.face(side)
+            else:
+                self.act(Action.PLACE_STONE)
+        return False
+
+    def survive(self, turns: int, food: int = 4, drink: int = 4, shelter: bool = False) -> None:
+        """Live ``turns`` more turns: fight off monsters beside the player, drink and eat when
+        low; with ``shelter``, wait walled in by stone at night (the walls mined open after)."""
+        end = self.task.tally.counts["turn"] + turns
+        while self.task.tally.counts["turn"] < end and not self.done and self.budget > 0:
+            s = self.state
+            if self.guard():
+                continue
+            if s.player_drink <= drink:
+                self.drink(9)
+            elif s.player_food <= food:
+                self.eat(9)
+            elif shelter and s.light_level < 0.5 and s.inventory.stone >= 4:
+                self.wall_in()
+                self.act(Action.NOOP)
+            else:
+                self.act(Action.NOOP)
+
+    def perish(self, limit: int = 512) -> bool:
+        """A losing policy: go and stand beside the nearest monster, doing nothing; True once
+        the player is dead."""
+        for _ in range(limit):
+            if self.done or self.budget <= 0:
+                break
+            monsters = self.mobs()
+            if monsters and not any(_beside(self.pos, m) for m in monsters):
+                if not self.go(_nearest(monsters, self.pos, 3), limit=1):
+                    self.act(Action.NOOP)
+            else:
+                self.act(Action.NOOP)
+        return self.state.player_health <= 0
 
 def _beside(a, b) -> bool:
     return abs(a[0] - b[0]) + abs(a[1] - b[1]) == 1

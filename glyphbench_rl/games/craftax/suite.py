@@ -365,7 +365,7 @@ scenario(name="clear-floor-8gate", horizon=300, floor=4,
 RESOURCES = pockets((B.TREE, -6, -6, 1, 5), (B.STONE, -6, 2, 1, 5), (B.COAL, 6, -6, 1, 5), (B.IRON, 6, 2, 1, 5))
 scenario(name="surface-to-iron-descend", horizon=500, topics=("craft", "fight", "floors"),
          objective="Make an iron pickaxe and an iron sword, kill 3 monsters to open the ladder, and DESCEND.",
-         edits=(NoMobs(), Clear(8)) + RESOURCES + (MoveLadder((8, 7)), GateAt((0,), 3), Mobs("zombie", 3, 7, 10)),
+         edits=(NoMobs(), Clear(8)) + RESOURCES + (MoveLadder((8, 7)), GateAt((0,), 3), Mobs("zombie", 1, 8, 10)),
          terms=(stage("ipick", "done.make_iron_pickaxe >= 1", 0.25, "for an iron pickaxe"),
                 stage("isword", "done.make_iron_sword >= 1", 0.25, "for an iron sword"),
                 stage("gate", "kills.monsters >= 3", 0.25, "for opening the ladder"),
