@@ -201,8 +201,15 @@ class Planner:
 
     # -- goals added for the crafting and survival tasks (p1) ---------------------------------------
     def guard(self) -> bool:
-        """If a monster stands beside the player, turn to it and hit it (one turn); True if so."""
-        beside = [m for m in self.mobs() if _beside(self.pos, m)]
+        """If a monster stands beside the player, turn to it and hit it (one turn); True if so.
+        With ``self.alert`` (default 1) above 1, a monster that many steps away (by the
+        Manhattan distance) is walked up to first."""
+        monsters, pos = self.mobs(), self.pos
+        beside = [m for m in monsters if _beside(pos, m)]
+        if not beside and not self.done:
+            close = [m for m in monsters if abs(m[0] - pos[0]) + abs(m[1] - pos[1]) <= getattr(self, "alert", 1)]
+            if close:
+                return self.go(_nearest(close, pos, 1), limit=1) or True
         if not beside or self.done:
             return False
         target = beside[0]
@@ -258,6 +265,9 @@ class Planner:
                 return False
             if self.guard():
                 continue
+            if self.state.player_health <= getattr(self, "heal_at", 0) and self.state.inventory.stone >= 4:
+                self.recover(getattr(self, "heal_to", 8))
+                continue
             targets = set(self.cells(block))
             if not targets:
                 return until()
@@ -286,7 +296,8 @@ class Planner:
         return self.gather(BlockType.WATER, lambda: self.state.player_drink >= upto, dig=False)
 
     def eat(self, upto: int, limit: int = 300) -> bool:
-        """Eat until food reaches ``upto``: a ripe plant if one is in reach, else hunt a cow."""
+        """Eat until food reaches ``upto``: a ripe plant if one is in reach, else hunt a cow;
+        False at once when there is neither."""
         for _ in range(limit):
             if self.state.player_food >= upto:
                 return True
@@ -295,13 +306,19 @@ class Planner:
             if self.guard():
                 continue
             if self.cells(BlockType.RIPE_PLANT) and self._path(set(self.cells(BlockType.RIPE_PLANT)), False) is not None:
-                self.gather(BlockType.RIPE_PLANT, lambda: True, limit=1)
                 self.gather(BlockType.RIPE_PLANT, lambda: self.state.player_food >= upto, limit=40, dig=False)
                 continue
-            if not self.mobs("cow"):
-                self.act(Action.NOOP)
-                continue
-            self.fight("cow", 1, limit=40)
+            cows = self.mobs("cow")
+            if not cows:
+                return False
+            beside = [m for m in cows if _beside(self.pos, m)]
+            if not beside:
+                if not self.go(_nearest(cows, self.pos, 1), limit=1):
+                    self.act(Action.NOOP)
+            elif rules.facing(self.state) != beside[0]:
+                self.face(beside[0])
+            else:
+                self.act(Action.DO)
         return self.state.player_food >= upto
 
     def place_n(self, action: int, block: int, count: int, limit: int = 200) -> int:
@@ -364,7 +381,7 @@ class Planner:
         low; with ``shelter``, wait walled in by stone at night (the walls mined open after)."""
         end = self.task.tally.counts["turn"] + turns
         while self.task.tally.counts["turn"] < end and not self.done and self.budget > 0:
-            s = self.state
+            s, before = self.state, self.budget
             if self.guard():
                 continue
             if s.player_drink <= drink:
@@ -373,9 +390,58 @@ class Planner:
                 self.eat(9)
             elif shelter and s.light_level < 0.5 and s.inventory.stone >= 4:
                 self.wall_in()
+            if self.budget == before:     # nothing to do (or no way to do it): wait a turn
                 self.act(Action.NOOP)
-            else:
+
+    def take_ladder(self, limit: int = 400) -> bool:
+        """``descend``, one turn at a time: monsters beside the player are fought off, and a mob
+        standing on the ladder is attacked from beside it; True once on the next level."""
+        level = self.state.player_level
+        ladder = tuple(int(v) for v in self.state.down_ladders[level])
+        for _ in range(limit):
+            if self.state.player_level > level:
+                return True
+            if self.done or self.state.item_map[level][ladder] != ItemType.LADDER_DOWN:
+                return False
+            if self.guard():
+                continue
+            if self.pos == ladder:
+                self.act(Action.DESCEND)
+                if self.state.player_level == level:
+                    self.fight(None, 1, limit=30)     # the ladder is shut: a kill may open it
+                continue
+            if self.state.mob_map[level][ladder]:
+                if _beside(self.pos, ladder):
+                    if rules.facing(self.state) != ladder:
+                        self.face(ladder)
+                    else:
+                        self.act(Action.DO)
+                elif not self.go([ladder], limit=1):
+                    self.act(Action.NOOP)
+                continue
+            if not self.go([ladder], onto=True, limit=1):
                 self.act(Action.NOOP)
+        return self.state.player_level > level
+
+    def recover(self, upto: int, limit: int = 200) -> bool:
+        """Wall in with stone and sleep (or wait) until health reaches ``upto`` (needs the
+        stone for the open sides; the wall ahead is mined open again after)."""
+        if not self.wall_in():
+            return self.state.player_health >= upto
+        for _ in range(limit):
+            s = self.state
+            if s.player_health >= upto or self.done or s.player_food <= 1 or s.player_drink <= 1:
+                break
+            self.act(Action.SLEEP if s.player_energy < 9 and not s.is_sleeping else Action.NOOP)
+        for _ in range(40):     # a sleeper sleeps on until its energy is full
+            if not self.state.is_sleeping or self.done:
+                break
+            self.act(Action.NOOP)
+        ahead = rules.facing(self.state)
+        if not self.done and rules.in_bounds(self.state, *ahead) and \
+                int(self.state.map[self.state.player_level][ahead]) == BlockType.STONE:
+            self.act(Action.DO)
+        return self.state.player_health >= upto
 
     def perish(self, limit: int = 512) -> bool:
         """A losing policy: go and stand beside the nearest monster, doing nothing; True once

@@ -141,15 +141,20 @@ def survive_thirst(p):
 
 
 def firstday(p):
-    tools(p, 6, 5, sword=True)
-    p.place_n(A.PLACE_STONE, B.STONE, 1)
-    p.gather(B.COAL, lambda: inv(p).coal >= 1, limit=80)
-    p.drink(9)
-    p.eat(9)
-    p.gather(B.GRASS, lambda: inv(p).sapling >= 1, limit=60, dig=False)
-    p.place_n(A.PLACE_PLANT, B.PLANT, 1)
-    p.gather(B.TREE, lambda: inv(p).wood >= 2, limit=80)
+    tools(p, 6, 9, sword=True)
     furnace(p)
+    p.place_n(A.PLACE_STONE, B.STONE, 1)
+    p.gather(B.COAL, lambda: inv(p).coal >= 1, limit=60)
+    p.gather(B.IRON, lambda: inv(p).iron >= 1, limit=60)
+    p.drink(9)
+    p.fight("cow", 1, limit=60)
+    p.gather(B.GRASS, lambda: inv(p).sapling >= 1, limit=100, dig=False)
+    p.place_n(A.PLACE_PLANT, B.PLANT, 1)
+    p.fight("zombie", 1, limit=40)
+    if p.wall_in():     # sleep walled in until rested (wake_up)
+        p.act(A.SLEEP)
+        while p.state.is_sleeping and not p.done:
+            p.act(A.NOOP)
     p.survive(300)
 
 
@@ -162,13 +167,74 @@ def survive_wild(p):
     p.survive(300, shelter=True)
 
 
+def tend(p) -> None:
+    """Between goals: heal walled in when hurt, drink and eat when low."""
+    if p.state.player_health <= 5 and inv(p).stone >= 4:
+        p.recover(8)
+    if p.state.player_drink <= 4:
+        p.drink(9)
+    if p.state.player_food <= 4:
+        p.eat(9)
+
+
+def armed_tools(p, wood: int, stone: int) -> None:
+    """A wood pickaxe, a stone sword at once (monsters come), then a stone pickaxe."""
+    p.gather(B.TREE, lambda: inv(p).wood >= 4)
+    p.table()
+    p.craft(A.MAKE_WOOD_PICKAXE)
+    p.gather(B.STONE, lambda: inv(p).stone >= 2)
+    p.table()
+    p.craft(A.MAKE_STONE_SWORD)
+    p.gather(B.TREE, lambda: inv(p).wood >= wood)
+    p.gather(B.STONE, lambda: inv(p).stone >= stone)
+    p.table()
+    p.craft(A.MAKE_STONE_PICKAXE)
+
+
+def open_gate_and_descend(p) -> None:
+    tend(p)
+    p.fight(None, max(0, 8 - int(p.state.monsters_killed[0])))   # kills still needed
+    tend(p)
+    p.take_ladder()
+
+
+def surface_to_iron_descend(p):
+    p.heal_at = 4
+    armed_tools(p, 5, 6)
+    for block in (B.COAL, B.IRON):
+        tend(p)
+        p.gather(block, lambda: getattr(inv(p), block.name.lower()) >= 2)
+    furnace(p)
+    p.craft(A.MAKE_IRON_PICKAXE)
+    p.craft(A.MAKE_IRON_SWORD)
+    open_gate_and_descend(p)
+
+
+def diamond_gear_descend(p):
+    p.heal_at = 4
+    armed_tools(p, 5, 6)
+    for block in (B.COAL, B.IRON):
+        tend(p)
+        p.gather(block, lambda: getattr(inv(p), block.name.lower()) >= 1)
+    furnace(p)
+    p.craft(A.MAKE_IRON_PICKAXE)
+    tend(p)
+    p.gather(B.DIAMOND, lambda: inv(p).diamond >= 8)
+    tend(p)
+    p.table()
+    for action in (A.MAKE_DIAMOND_PICKAXE, A.MAKE_DIAMOND_SWORD, A.MAKE_DIAMOND_ARMOUR):
+        p.craft(action)
+    open_gate_and_descend(p)
+
+
 WINS = {"choptrees": choptrees, "minestone": minestone, "gatherresources": gatherresources,
         "craftpickaxe": craftpickaxe, "craftsword": craftsword, "craftchain": craftchain,
         "craft-ironset": craft_ironset, "mine-iron": mine_iron, "build-shelter": build_shelter,
         "plant-farm": plant_farm, "iron-bootstrap": iron_bootstrap, "diamond-bootstrap": diamond_bootstrap,
         "find-diamond": find_diamond, "find-water": find_water, "survive-hunger": survive_hunger,
-        "survive-thirst": survive_thirst, "firstday": firstday, "survive-wild": survive_wild}
-SEEDS = {"build-shelter": (1, 2), "plant-farm": (0, 1)}
+        "survive-thirst": survive_thirst, "firstday": firstday, "survive-wild": survive_wild,
+        "surface-to-iron-descend": surface_to_iron_descend, "diamond-gear-descend": diamond_gear_descend}
+SEEDS = {"build-shelter": (1, 2), "plant-farm": (0, 1), "diamond-gear-descend": (2, 4)}
 
 
 @pytest.mark.parametrize("name,seed", [(n, s) for n in WINS for s in SEEDS.get(n, (0, 1))])
