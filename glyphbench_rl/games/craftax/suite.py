@@ -127,8 +127,8 @@ scenario(name="survive-night", horizon=150, time=198, kit=dict(sword=2, stone=4)
          events=(Event("turn >= 25", (Mobs("zombie", 1, 4, 6),)), Event("turn >= 50", (Mobs("skeleton", 1, 4, 6),))),
          terms=(stage("dawn", "turn >= 75", 1.0, "when day breaks and you are alive"),),
          success="turn >= 75")
-scenario(name="survive-wild", horizon=200, time=118, player=dict(player_food=4, player_drink=4),
-         objective="Survive 200 turns in the wild: keep fed, watered and rested; night falls at turn 30.",
+scenario(name="survive-wild", horizon=200, time=118, player=dict(player_food=2, player_drink=2, player_health=6),
+         objective="You start hungry, thirsty and hurt: survive 200 turns in the wild, keeping fed, watered and rested; night falls at turn 30.",
          terms=(Term("alive", "turn", 0.1, "each 20 turns alive", cap=10, per=20),), success="")
 scenario(name="fight-cow", horizon=80, settings=ARENA, kit=dict(sword=1), topics=("fight",),
          objective="Hunt the cow; at turn 30 a zombie comes for you.",
