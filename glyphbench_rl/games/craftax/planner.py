@@ -354,26 +354,98 @@ class Planner:
             self.act(MOVES[(dr, dc)])
         return placed
 
-    def wall_in(self) -> bool:
-        """Stand enclosed: stone placed on each open side (needs stone; monsters fought off)."""
-        for _ in range(24):
+    def _walled(self, cell) -> bool:
+        """A cell nothing walks through: in bounds, solid (or water, lava) and no mob on it."""
+        s, level = self.state, self.state.player_level
+        if not rules.in_bounds(s, *cell):
+            return True
+        block = int(s.map[level][cell])
+        return (IS_SOLID[block] or block in (BlockType.WATER, BlockType.LAVA)) and not s.mob_map[level][cell]
+
+    def _diggable(self, cell) -> bool:
+        s, level = self.state, self.state.player_level
+        mined = MINING_BY_BLOCK.get(int(s.map[level][cell]))
+        return mined is not None and mined[0] <= s.inventory.pickaxe and not s.item_map[level][cell] \
+            and IS_SOLID[int(s.map[level][cell])]
+
+    def _pocket(self, radius: int = 12):
+        """The nearest two-cell pocket (entrance E, cells A and B = A + d, B + d and the sides
+        of A and B walled; A and B walkable or diggable) reachable by walking to E."""
+        s = self.state
+        r0, c0 = self.pos
+        best = None
+        for (dr, dc) in MOVES:
+            sides = ((dc, dr), (-dc, -dr))
+            for r in range(r0 - radius, r0 + radius + 1):
+                for c in range(c0 - radius, c0 + radius + 1):
+                    a, b, e = (r, c), (r + dr, c + dc), (r - dr, c - dc)
+                    if not all(rules.in_bounds(s, *x) for x in (a, b, e)):
+                        continue
+                    if not all(rules.player_can_enter(s, *x) or self._diggable(x) for x in (a, b)):
+                        continue
+                    if not (rules.player_can_enter(s, *e) or e == self.pos):
+                        continue
+                    walls = [(b[0] + dr, b[1] + dc)] + [(x[0] + sr, x[1] + sc) for x in (a, b) for sr, sc in sides]
+                    if not all(self._walled(w) for w in walls):
+                        continue
+                    cost = abs(e[0] - r0) + abs(e[1] - c0)
+                    if best is None or cost < best[0]:
+                        best = (cost, e, (dr, dc))
+        return None if best is None else best[1:]
+
+    def sealed(self) -> bool:
+        """The player stands in a closed space of at most two cells."""
+        seen, todo = {self.pos}, [self.pos]
+        while todo:
+            r, c = todo.pop()
+            for dr, dc in MOVES:
+                x = (r + dr, c + dc)
+                if x not in seen and not self._walled(x):
+                    seen.add(x)
+                    todo.append(x)
+                    if len(seen) > 2:
+                        return False
+        return True
+
+    def wall_in(self, limit: int = 60) -> bool:
+        """Stand sealed in a two-cell pocket (found, or dug into stone): walk in two cells and
+        back one, which faces the entrance, and place a stone there (a move into a free cell is
+        a step, so the only cell one can face to seal is the one just walked away from). Needs
+        one stone; True once sealed."""
+        if self.sealed():
+            return True
+        if self.state.inventory.stone < 1:
+            return False
+        found = self._pocket()
+        if found is None:
+            return False
+        e, d = found
+        a = (e[0] + d[0], e[1] + d[1])
+        b = (a[0] + d[0], a[1] + d[1])
+        back = MOVES[(-d[0], -d[1])]
+        for _ in range(limit):
             if self.done:
                 return False
-            r, c = self.pos
-            open_sides = [(r + dr, c + dc) for dr, dc in MOVES
-                          if rules.in_bounds(self.state, r + dr, c + dc)
-                          and not IS_SOLID[int(self.state.map[self.state.player_level, r + dr, c + dc])]]
-            if not open_sides:
-                return True
-            if self.state.inventory.stone < 1:
-                return False
+            pos = self.pos
+            if pos == a and rules.facing(self.state) == e:
+                if self._walled(e):
+                    return True
+                self.act(Action.DO if self.state.mob_map[self.state.player_level][e] else Action.PLACE_STONE)
+                continue
+            if pos == b:
+                self.act(back)
+                continue
+            if pos in (e, a):
+                ahead = (pos[0] + d[0], pos[1] + d[1])
+                if rules.facing(self.state) == ahead and self._diggable(ahead):
+                    self.act(Action.DO)
+                else:
+                    self.act(MOVES[d])     # turns toward a block, steps into a free cell
+                continue
             if self.guard():
                 continue
-            side = open_sides[0]
-            if rules.facing(self.state) != side:
-                self.face(side)
-            else:
-                self.act(Action.PLACE_STONE)
+            if not self.go([e], onto=True, limit=1):
+                return False
         return False
 
     def survive(self, turns: int, food: int = 4, drink: int = 4, shelter: bool = False) -> None:

@@ -10,6 +10,7 @@ from __future__ import annotations
 import pytest
 
 from glyphbench_rl.core import registry
+from glyphbench_rl.games.craftax import rules
 from glyphbench_rl.games.craftax.planner import Planner
 from glyphbench_rl.games.craftax.scenarios import SCENARIOS
 from glyphbench_rl.games.craftax.tables import Action as A
@@ -98,8 +99,22 @@ def mine_iron(p):
 
 
 def build_shelter(p):
-    p.gather(B.STONE, lambda: inv(p).stone >= 6)
-    p.place_n(A.PLACE_STONE, B.STONE, 6)
+    """Stone, then seal oneself in a pocket (a stone placed), then mine that stone and place
+    it back until 6 are placed."""
+    placed = lambda: p.task.tally.placed["stone"]     # noqa: E731
+    p.gather(B.STONE, lambda: inv(p).stone >= 4)
+    for _ in range(60):
+        if placed() >= 6 or p.done:
+            break
+        if inv(p).stone < 1:
+            p.gather(B.STONE, lambda: inv(p).stone >= 2, limit=30)
+            continue
+        if not p.wall_in():       # no pocket near: place them in the open
+            p.place_n(A.PLACE_STONE, B.STONE, 1)
+            continue
+        ahead = p.state.map[0][rules.facing(p.state)]
+        p.act(A.DO if ahead == B.STONE else A.PLACE_STONE)    # mine the wall ahead ...
+        p.act(A.PLACE_STONE)                                   # ... and place it back
 
 
 def plant_farm(p):
@@ -234,7 +249,7 @@ WINS = {"choptrees": choptrees, "minestone": minestone, "gatherresources": gathe
         "find-diamond": find_diamond, "find-water": find_water, "survive-hunger": survive_hunger,
         "survive-thirst": survive_thirst, "firstday": firstday, "survive-wild": survive_wild,
         "surface-to-iron-descend": surface_to_iron_descend, "diamond-gear-descend": diamond_gear_descend}
-SEEDS = {"build-shelter": (1, 2), "plant-farm": (0, 1), "diamond-gear-descend": (2, 4)}
+SEEDS = {"diamond-gear-descend": (2, 4)}
 
 
 @pytest.mark.parametrize("name,seed", [(n, s) for n in WINS for s in SEEDS.get(n, (0, 1))])
