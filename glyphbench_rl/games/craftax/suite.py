@@ -129,8 +129,8 @@ scenario(name="survive-night", horizon=150, time=198, kit=dict(sword=2, stone=4)
          events=(Event("turn >= 25", (Mobs("zombie", 1, 4, 6),)), Event("turn >= 50", (Mobs("skeleton", 1, 4, 6),))),
          terms=(stage("dawn", "turn >= 75", 1.0, "when day breaks and you are alive"),),
          success="turn >= 75")
-scenario(name="survive-wild", horizon=200, time=118, player=dict(player_food=4, player_drink=4),
-         objective="Survive 200 turns in the wild: keep fed, watered and rested; night falls at turn 30.",
+scenario(name="survive-wild", horizon=200, time=118, player=dict(player_food=2, player_drink=2, player_health=6),
+         objective="You start hungry, thirsty and hurt: survive 200 turns in the wild, keeping fed, watered and rested; night falls at turn 30.",
          terms=(Term("alive", "turn", 0.1, "each 20 turns alive", cap=10, per=20),), success="")
 scenario(name="fight-cow", horizon=80, settings=ARENA, kit=dict(sword=1), topics=("fight",),
          objective="Hunt the cow; at turn 30 a zombie comes for you.",
@@ -367,13 +367,14 @@ scenario(name="clear-floor-8gate", horizon=300, floor=4,
          terms=(stage("k4", "kills.monsters >= 4", 0.25, "at 4 kills"), stage("k8", "kills.monsters >= 8", 0.5, "at 8 kills"),
                 stage("down", "level >= 5", 0.25, "for descending")), success="level >= 5", progress_keys=("gate",))
 RESOURCES = pockets((B.TREE, -6, -6, 1, 5), (B.STONE, -6, 2, 1, 5), (B.COAL, 6, -6, 1, 5), (B.IRON, 6, 2, 1, 5))
-scenario(name="surface-to-iron-descend", horizon=500, topics=("craft", "fight", "floors"),
+scenario(name="surface-to-iron-descend", horizon=500, settings=ARENA, topics=("craft", "fight", "floors"),
          objective="Make an iron pickaxe and an iron sword, kill 3 monsters to open the ladder, and DESCEND.",
          edits=(NoMobs(), Clear(8)) + RESOURCES + (MoveLadder((8, 7)), GateAt((0,), 3), Mobs("zombie", 3, 7, 10)),
          terms=(stage("ipick", "done.make_iron_pickaxe >= 1", 0.25, "for an iron pickaxe"),
                 stage("isword", "done.make_iron_sword >= 1", 0.25, "for an iron sword"),
                 stage("gate", "kills.monsters >= 3", 0.25, "for opening the ladder"),
-                stage("down", "level >= 1", 0.25, "for descending")), success="level >= 1")
+                stage("down", "level >= 1", 0.25, "for descending")),
+         success="done.make_iron_pickaxe >= 1 and done.make_iron_sword >= 1 and level >= 1")
 scenario(name="night-horde-no-shelter", horizon=180, time=DUSK, kit=dict(sword=2, torches=2, stone=1),
          topics=("fight", "torch"), objective="Night falls in 5 turns on open ground: fight and survive.",
          edits=(Clear(7), Scatter(B.TREE, 10, 4, 9), Mobs("zombie", 1, 6, 9), Mobs("skeleton", 1, 6, 9)),
@@ -403,11 +404,14 @@ scenario(name="enchant-choice", horizon=180, floor=6, settings=ARENA,
                 kills("fire elemental", 2, 0.5, "fire elemental")),
          success="enchant.sword >= 2 and kills.monsters >= 2")
 DIAMONDS = (Stamp(B.DIAMOND, tuple((-6, c) for c in range(-3, 3)) + tuple((6, c) for c in range(-2, 2))),)
-scenario(name="diamond-gear-descend", horizon=500, topics=("craft", "fight", "floors"),
+scenario(name="diamond-gear-descend", horizon=500, settings=ARENA, topics=("craft", "fight", "floors"),
          objective="Make a diamond pickaxe, a diamond sword and a diamond armour piece, kill 2 monsters, DESCEND.",
-         edits=(NoMobs(), Clear(8)) + RESOURCES + DIAMONDS + (MoveLadder((8, 7)), GateAt((0,), 2), Mobs("zombie", 2, 8, 10)),
+         edits=(NoMobs(), Clear(8)) + RESOURCES + DIAMONDS + (MoveLadder((8, 7)), GateAt((0,), 2), Mobs("zombie", 2, 8, 10),
+                                                                 Mobs("cow", 2, 5, 8)),
          terms=(stage("dpick", "done.make_diamond_pickaxe >= 1", 0.2, "for a diamond pickaxe"),
                 stage("dsword", "done.make_diamond_sword >= 1", 0.2, "for a diamond sword"),
                 stage("darmour", "done.make_diamond_armour >= 1", 0.2, "for a diamond armour piece"),
                 stage("gate", "kills.monsters >= 2", 0.2, "for opening the ladder"),
-                stage("down", "level >= 1", 0.2, "for descending")), success="level >= 1")
+                stage("down", "level >= 1", 0.2, "for descending")),
+         success="done.make_diamond_pickaxe >= 1 and done.make_diamond_sword >= 1 and done.make_diamond_armour >= 1"
+                 " and level >= 1")
