@@ -32,14 +32,26 @@ def sweep(body: Body, hit: Hit, steps: int = 1) -> tuple[int, int] | None:
     """Move ``body`` by its velocity ``steps`` times, one cell at a time along the dominant axis
     (so a fast body cannot jump over a thin thing); stop on the first cell where ``hit`` is true
     and return it (the body stays on the last free cell), else None."""
-    n = max(abs(body.dr), abs(body.dc)) * steps
-    if n == 1:                                   # the usual case: one cell
-        r, c = body.r + body.dr, body.c + body.dc
+    dr, dc = body.dr, body.dc
+    if not dr or not dc:                         # the usual case: straight along an axis (or still)
+        sr = (dr > 0) - (dr < 0)
+        sc = (dc > 0) - (dc < 0)
+        r, c = body.r, body.c
+        for _ in range((abs(dr) + abs(dc)) * steps):
+            r += sr
+            c += sc
+            if hit(r, c):
+                return r, c
+            body.r, body.c = r, c
+        return None
+    n = max(abs(dr), abs(dc)) * steps
+    if n == 1:                                   # one diagonal cell
+        r, c = body.r + dr, body.c + dc
         if hit(r, c):
             return r, c
         body.r, body.c = r, c
         return None
-    r0, c0, tr, tc = body.r, body.c, body.dr * steps, body.dc * steps
+    r0, c0, tr, tc = body.r, body.c, dr * steps, dc * steps
     for i in range(1, n + 1):
         r = r0 + (tr * i // n if tr >= 0 else -(-tr * i // n))
         c = c0 + (tc * i // n if tc >= 0 else -(-tc * i // n))

@@ -65,15 +65,18 @@ class ArcadeParams:
 
 
 class Tally:
-    """Patterns A and D: a monotone credited counter capped at ``goal``."""
-    __slots__ = ("task", "goal", "unit", "done", "points")
+    """Patterns A and D: a monotone credited counter capped at ``goal``. ``shown`` is the HUD
+    text the task last drew for it, None once the score changed (so it is formatted only then)."""
+    __slots__ = ("task", "goal", "unit", "done", "points", "shown")
 
     def __init__(self, task: "ArcadeTask", goal: int, unit: float) -> None:
         self.task, self.goal, self.unit, self.done, self.points = task, goal, unit, 0, 0.0
+        self.shown: str | None = None
 
     def gain(self, k: int = 1) -> None:
         k = min(k, self.goal - self.done)
         if k > 0:
+            self.shown = None
             self.done += k
             self.points += k * self.unit
             self.task.reward(k * self.unit)
@@ -96,6 +99,7 @@ class Milestones(Tally):
 
     def reach(self, key, share: float) -> None:
         if key not in self.keys and self.done < self.goal:
+            self.shown = None
             self.keys.add(key)
             pay = share * self.goal * self.unit
             self.points += pay
@@ -107,12 +111,14 @@ class Milestones(Tally):
 
 class Duel:
     """Pattern C: +unit per own point, -unit per opponent point; first to ``goal`` ends it."""
-    __slots__ = ("task", "goal", "unit", "mine", "theirs")
+    __slots__ = ("task", "goal", "unit", "mine", "theirs", "shown")
 
     def __init__(self, task: "ArcadeTask", goal: int, unit: float) -> None:
         self.task, self.goal, self.unit, self.mine, self.theirs = task, goal, unit, 0, 0
+        self.shown: str | None = None   # as Tally's
 
     def point(self, mine: bool) -> None:
+        self.shown = None
         if mine:
             self.mine += 1
             self.task.reward(self.unit)
@@ -153,6 +159,7 @@ class ArcadeTask(GlyphTask):
         self.native = self.tier != "standard"
         self.score = RULES[self.pattern](self, p.goal, p.unit)
         self.lives = p.lives
+        self._head_lives = -1             # the lives the remembered HUD head shows
         self.draws = Draws(self.stream("arcade"))
         self.tick = 0
         self.still_version = 0            # bumped by set_still, for games caching rows over it
@@ -228,13 +235,14 @@ class ArcadeTask(GlyphTask):
         return rows
 
     def _hud(self) -> str:
-        parts = [self.score.hud(self.native)]
-        if self.params.lives > 1:
-            parts.append(f"Lives {self.lives}")
+        score = self.score
+        if score.shown is None or self.lives != self._head_lives:   # the head changes rarely
+            score.shown = score.hud(self.native)
+            self._head_lives = self.lives
+            self._head = (f"{score.shown} | Lives {self.lives}" if self.params.lives > 1
+                          else score.shown)
         extra = self._extra_hud()
-        if extra:
-            parts.append(extra)
-        return " | ".join(parts)
+        return f"{self._head} | {extra}" if extra else self._head
 
 
 def register_arcade(game: type, name: str, *, mini: dict, atari: dict) -> None:

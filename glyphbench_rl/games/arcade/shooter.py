@@ -159,15 +159,28 @@ class Shooter(ArcadeTask):
         if not self.gun.shots:
             return []
         at = at or self.pack.at
+        blocks = self._blocker()
         hits = []
-        for shot, cell in self.gun.advance(lambda r, c: r < 0 or self._blocks(r, c) or at(r, c) is not None):
+        foe = None
+
+        def stops(r: int, c: int) -> bool:   # remembers the enemy it found for the hit below
+            nonlocal foe
+            if r < 0:
+                return True
+            foe = at(r, c)
+            return foe is not None or (blocks is not None and blocks(r, c))
+
+        for shot, cell in self.gun.advance(stops):   # (each hit is seen before the next shot moves)
             if cell is not None and cell[0] >= 0:
-                foe = at(*cell)
                 if foe is not None:
                     hits.append((foe, cell))
                 else:
                     self._struck(*cell)
         return hits
+
+    def _blocker(self):
+        """``_blocks``, or None where the game keeps the default (nothing blocks: no call per cell)."""
+        return None if type(self)._blocks is Shooter._blocks else self._blocks
 
     def shoot_down(self, say: str, at=None) -> list | None:
         """``volley``, then kill, announce and score (a unit each) every enemy hit; the (enemy,
@@ -205,10 +218,17 @@ class Shooter(ArcadeTask):
             return False
         hit = False
         row, col, h = self.row, self.col, self.params.height
-        for bomb, cell in self.bombs.advance(lambda r, c: r >= h or (r == row and c == col) or self._blocks(r, c)):
+        blocks = self._blocker()
+        if blocks is None:
+            def stops(r: int, c: int) -> bool:
+                return r >= h or (r == row and c == col)
+        else:
+            def stops(r: int, c: int) -> bool:
+                return r >= h or (r == row and c == col) or blocks(r, c)
+        for bomb, cell in self.bombs.advance(stops):
             if cell is None or cell[0] >= h:
                 continue
-            if cell == (row, col):
+            if cell[0] == row and cell[1] == col:
                 hit = True
             else:
                 self._struck(*cell)
