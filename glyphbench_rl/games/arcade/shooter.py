@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 from ...core.actions import ActionSet
 from ...core.params import param
-from .bodies import Body, Gun
+from .bodies import Body, Gun, sweep
 from .engine import ArcadeParams, ArcadeTask
 
 NOOP, LEFT, RIGHT, FIRE = 0, 1, 2, 3
@@ -65,7 +65,7 @@ class Pack:
 
     def at(self, r: int, c: int) -> Body | None:
         for b in self.bodies:
-            if b.r == r and b.c == c:
+            if b.c == c and b.r == r:   # (columns first: a formation shares its rows)
                 return b
         return None
 
@@ -156,11 +156,13 @@ class Shooter(ArcadeTask):
     def volley(self, at=None) -> list[tuple[Body, tuple[int, int]]]:
         """Move your shots; (enemy, cell) for each that hit one of ``at(r, c)`` (the pack's by
         default; a shot leaving the field or hitting ``_blocks`` is gone)."""
-        if not self.gun.shots:
+        gun = self.gun
+        if not gun.shots:
             return []
         at = at or self.pack.at
         blocks = self._blocker()
-        hits = []
+        speed = gun.speed
+        hits, kept = [], []
         foe = None
 
         def stops(r: int, c: int) -> bool:   # remembers the enemy it found for the hit below
@@ -170,12 +172,32 @@ class Shooter(ArcadeTask):
             foe = at(r, c)
             return foe is not None or (blocks is not None and blocks(r, c))
 
-        for shot, cell in self.gun.advance(stops):   # (each hit is seen before the next shot moves)
-            if cell is not None and cell[0] >= 0:
-                if foe is not None:
-                    hits.append((foe, cell))
-                else:
-                    self._struck(*cell)
+        # Gun.advance's loop, inlined with sweep's for the usual shot (straight up): each shot
+        # moves and its hit is dealt with before the next one moves, as there
+        for shot in gun.shots:
+            if shot.dr == -1 and not shot.dc:
+                cell, r, c = None, shot.r, shot.c
+                for _ in range(speed):
+                    r -= 1
+                    if stops(r, c):
+                        cell = r, c
+                        break
+                    shot.r = r
+            else:
+                cell = sweep(shot, stops, speed) if (shot.dr or shot.dc) else None
+            shot.data -= speed
+            if cell is not None:
+                shot.alive = False
+                if cell[0] >= 0:
+                    if foe is not None:
+                        hits.append((foe, cell))
+                    else:
+                        self._struck(*cell)
+            elif shot.data <= 0:
+                shot.alive = False
+            else:
+                kept.append(shot)
+        gun.shots = kept
         return hits
 
     def _blocker(self):
@@ -247,3 +269,45 @@ class Shooter(ArcadeTask):
         out += [(b.r, b.c, BOMB) for b in self.bombs.shots]
         out.append((self.row, self.col, self.cannon))
         return out
+
+    def _grid(self) -> list[str]:
+        """``_sprites`` drawn straight from the bodies (no list of tuples), in the same order;
+        a game that draws other sprites goes through ``ArcadeTask._grid``."""
+        if type(self)._sprites is not Shooter._sprites:
+            return super()._grid()
+        rows = self._rows()
+        h = len(rows)
+        bodies = self.pack.bodies
+        i, n = 0, len(bodies)
+        while i < n:   # the pack, a run of bodies on one row at a time (a formation's row)
+            r = bodies[i].r
+            j = i + 1
+            while j < n and bodies[j].r == r:
+                j += 1
+            if 0 <= r < h:
+                if j - i == 1:
+                    line, c = rows[r], bodies[i].c
+                    if 0 <= c < len(line):
+                        rows[r] = line[:c] + bodies[i].glyph + line[c + 1:]
+                else:
+                    cells = list(rows[r])
+                    w = len(cells)
+                    for k in range(i, j):
+                        b = bodies[k]
+                        if 0 <= b.c < w:
+                            cells[b.c] = b.glyph
+                    rows[r] = "".join(cells)
+            i = j
+        for group, glyph in ((self.gun.shots, SHOT), (self.bombs.shots, BOMB)):
+            for b in group:
+                r, c = b.r, b.c
+                if 0 <= r < h:
+                    line = rows[r]
+                    if 0 <= c < len(line):
+                        rows[r] = line[:c] + glyph + line[c + 1:]
+        r, c = self.row, self.col
+        if 0 <= r < h:
+            line = rows[r]
+            if 0 <= c < len(line):
+                rows[r] = line[:c] + self.cannon + line[c + 1:]
+        return rows
