@@ -17,6 +17,7 @@ WALL, BALL, YOU, CPU = "=", "o", "]", "["
 ACTIONS = ActionSet([("NOOP", "keep your paddle still"), ("UP", "move your paddle one row up"),
                      ("DOWN", "move your paddle one row down")], noop="NOOP")
 MOVES = (0, -1, 1)
+BALL_TEXT: dict = {}                        # the HUD's ball velocity text, by velocity
 
 
 @dataclass(frozen=True)
@@ -81,17 +82,21 @@ class Pong(ArcadeTask):
 
     def _play(self, action: int) -> None:
         p, b = self.params, self.ball
-        self.me = min(max(1, self.me + MOVES[action]), p.height - 1 - p.paddle)
-        self.cpu = min(max(1, self.cpu + track(self.cpu + p.paddle // 2, b.r, p.chance, self.draws)),
-                       p.height - 1 - p.paddle)
+        low = p.height - 1 - p.paddle
+        if action:
+            self.me = min(max(1, self.me + MOVES[action]), low)
+        step = track(self.cpu + p.paddle // 2, b.r, p.chance, self.draws)
+        if step:
+            self.cpu = min(max(1, self.cpu + step), low)
         speed = 1 + (self.hits // p.speedup if p.speedup else 0)
         speed = min(speed, p.top_speed)
+        bottom, right = p.height - 1, p.width - 2
         for _ in range(speed):
-            if b.r + b.dr in (0, p.height - 1):
+            if b.r + b.dr == 0 or b.r + b.dr == bottom:
                 b.dr = -b.dr
             col = b.c + b.dc
-            if col == p.width - 2 or col == 1:
-                top = self.me if col == p.width - 2 else self.cpu
+            if col == right or col == 1:
+                top = self.me if col == right else self.cpu
                 bounce = self._paddle_hit(top, b.r + b.dr)
                 if bounce is not None:
                     b.dc, b.dr = -b.dc, bounce
@@ -124,7 +129,11 @@ class Pong(ArcadeTask):
 
     def _extra_hud(self) -> str:
         b = self.ball
-        return f"Ball v {b.dr:+d},{b.dc:+d}"
+        key = (b.dr, b.dc)
+        text = BALL_TEXT.get(key)
+        if text is None:
+            text = BALL_TEXT[key] = f"Ball v {b.dr:+d},{b.dc:+d}"
+        return text
 
 
 register_arcade(Pong, "pong",
