@@ -11,13 +11,13 @@ from dataclasses import dataclass
 from ...core.actions import ActionSet
 from ...core.params import param
 from .bodies import Body, track
+from .duel import velocity_text
 from .engine import EMPTY, ArcadeParams, ArcadeTask, register_arcade
 
 WALL, BALL, YOU, CPU = "=", "o", "]", "["
 ACTIONS = ActionSet([("NOOP", "keep your paddle still"), ("UP", "move your paddle one row up"),
                      ("DOWN", "move your paddle one row down")], noop="NOOP")
 MOVES = (0, -1, 1)
-BALL_TEXT: dict = {}                        # the HUD's ball velocity text, by velocity
 
 
 @dataclass(frozen=True)
@@ -128,12 +128,7 @@ class Pong(ArcadeTask):
         return ((self.ball.r, self.ball.c, BALL),)
 
     def _extra_hud(self) -> str:
-        b = self.ball
-        key = (b.dr, b.dc)
-        text = BALL_TEXT.get(key)
-        if text is None:
-            text = BALL_TEXT[key] = f"Ball v {b.dr:+d},{b.dc:+d}"
-        return text
+        return velocity_text(self.ball)
 
 
 register_arcade(Pong, "pong",
