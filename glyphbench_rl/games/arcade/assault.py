@@ -73,13 +73,15 @@ class Assault(Shooter):
                 self.hot = 0
                 if self.lose_life("Your turret overheated."):
                     return
-        self.steer(action)
-        self.hot = max(0, self.hot - 1)
+        if action:
+            self.steer(action)
+        if self.hot:
+            self.hot -= 1
         drift, down = self.tick % p.drift == 0, self.tick % p.descend == 0
         if drift or down:
             dx = march(self.pack.bodies, self.dx if drift else 0, 0, p.width - 1, down)
             self.dx = dx if drift else self.dx
-        if self.shoot_down("Attacker down!") is None:
+        if self.gun.shots and self.shoot_down("Attacker down!") is None:
             return
         if not self.pack.bodies:
             self._wave()
@@ -87,8 +89,9 @@ class Assault(Shooter):
             self.lives = 1
             self.lose_life("An attacker reached your row.")
             return
-        self.maybe_drop()
-        if self.rain():
+        if p.bomb_chance:
+            self.maybe_drop()
+        if self.bombs.shots and self.rain():
             self.lose_life("An enemy shot hit you.")
 
     def _extra_hud(self) -> str:

@@ -63,17 +63,18 @@ class DemonAttack(Shooter):
 
     def _play(self, action: int) -> None:
         p, d = self.params, self.draws
-        self.steer(action)
-        flap = self.tick % p.flap == 0
+        if action:
+            self.steer(action)
+        flap, col, turn, right = self.tick % p.flap == 0, self.col, p.turn, p.width - 1
         for b in self.pack.bodies:
             if b.glyph == DIVER:
                 b.r += 1
-                b.c += (self.col > b.c) - (self.col < b.c)
+                b.c += (col > b.c) - (col < b.c)
             elif flap:
-                if d.random() < p.turn:
+                if d.random() < turn:
                     b.dc = -b.dc
-                bounce(b, 0, p.width - 1)
-        hits = self.shoot_down("Demon hit!")
+                bounce(b, 0, right)
+        hits = self.shoot_down("Demon hit!") if self.gun.shots else []
         if hits is None:
             return
         for foe, (r, c) in hits:
@@ -91,8 +92,9 @@ class DemonAttack(Shooter):
         if not self.pack.bodies:
             self.waves, self.sent = self.waves + 1, 0
             self._fill()
-        self.maybe_drop()
-        if self.rain():
+        if p.bomb_chance:
+            self.maybe_drop()
+        if self.bombs.shots and self.rain():
             self.lose_life("A bomb hit you.")
 
     def _extra_hud(self) -> str:

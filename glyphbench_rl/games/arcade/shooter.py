@@ -74,7 +74,14 @@ class Pack:
         self.bodies.remove(body)
 
     def lowest(self) -> int:
-        return max((b.r for b in self.bodies), default=-1)
+        bodies = self.bodies
+        if not bodies:
+            return -1
+        low = bodies[0].r
+        for b in bodies:   # (a loop: a generator costs more than the few bodies)
+            if b.r > low:
+                low = b.r
+        return low
 
     def __len__(self) -> int:
         return len(self.bodies)
@@ -277,34 +284,13 @@ class Shooter(ArcadeTask):
             return super()._grid()
         rows = self._rows()
         h = len(rows)
-        bodies = self.pack.bodies
-        i, n = 0, len(bodies)
-        while i < n:   # the pack, a run of bodies on one row at a time (a formation's row)
-            r = bodies[i].r
-            j = i + 1
-            while j < n and bodies[j].r == r:
-                j += 1
-            if 0 <= r < h:
-                if j - i == 1:
-                    line, c = rows[r], bodies[i].c
-                    if 0 <= c < len(line):
-                        rows[r] = line[:c] + bodies[i].glyph + line[c + 1:]
-                else:
-                    cells = list(rows[r])
-                    w = len(cells)
-                    for k in range(i, j):
-                        b = bodies[k]
-                        if 0 <= b.c < w:
-                            cells[b.c] = b.glyph
-                    rows[r] = "".join(cells)
-            i = j
-        for group, glyph in ((self.gun.shots, SHOT), (self.bombs.shots, BOMB)):
+        for group, glyph in ((self.pack.bodies, None), (self.gun.shots, SHOT), (self.bombs.shots, BOMB)):
             for b in group:
                 r, c = b.r, b.c
                 if 0 <= r < h:
                     line = rows[r]
                     if 0 <= c < len(line):
-                        rows[r] = line[:c] + glyph + line[c + 1:]
+                        rows[r] = line[:c] + (glyph or b.glyph) + line[c + 1:]
         r, c = self.row, self.col
         if 0 <= r < h:
             line = rows[r]
