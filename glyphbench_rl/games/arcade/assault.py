@@ -12,6 +12,7 @@ from .shooter import BOMB, FIRE, SHOT, Shooter, ShooterParams, march
 
 TURRET, LEADER, WING = "^", "A", "a"
 HEAT = 3                                  # heat a shot adds; a turn takes 1 off
+HEAT_TEXT: dict[tuple[int, int], str] = {}   # the HUD's heat note, made once per value
 
 
 @dataclass(frozen=True)
@@ -95,7 +96,14 @@ class Assault(Shooter):
             self.lose_life("An enemy shot hit you.")
 
     def _extra_hud(self) -> str:
-        return f"Heat {self.hot}/{self.params.heat}" if self.params.heat else ""
+        heat = self.params.heat
+        if not heat:
+            return ""
+        key = (self.hot, heat)
+        text = HEAT_TEXT.get(key)
+        if text is None:
+            text = HEAT_TEXT[key] = f"Heat {self.hot}/{heat}"
+        return text
 
 
 register_arcade(Assault, "assault",

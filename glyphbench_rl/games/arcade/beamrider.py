@@ -12,6 +12,7 @@ from .engine import EMPTY, register_arcade
 from .shooter import BOMB, CANNON, SHOT, Shooter, ShooterParams, shooter_actions
 
 SAUCER, BEAM = "o", "_"
+SECTOR_TEXT: dict[int, str] = {}         # the HUD's sector note, made once per sector
 
 
 @dataclass(frozen=True)
@@ -104,7 +105,12 @@ class BeamRider(Shooter):
             self.lose_life("An enemy shot hit you.")
 
     def _extra_hud(self) -> str:
-        return f"Sector {self.sectors}" if self.params.sector else ""
+        if not self.params.sector:
+            return ""
+        text = SECTOR_TEXT.get(self.sectors)
+        if text is None:
+            text = SECTOR_TEXT[self.sectors] = f"Sector {self.sectors}"
+        return text
 
 
 register_arcade(BeamRider, "beamrider",

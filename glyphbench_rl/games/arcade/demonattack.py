@@ -11,6 +11,7 @@ from .engine import EMPTY, register_arcade
 from .shooter import BOMB, CANNON, SHOT, Shooter, ShooterParams, bounce
 
 DEMON, DIVER = "W", "w"
+WAVE_TEXT: dict[int, str] = {}           # the HUD's wave note, made once per wave
 
 
 @dataclass(frozen=True)
@@ -98,7 +99,12 @@ class DemonAttack(Shooter):
             self.lose_life("A bomb hit you.")
 
     def _extra_hud(self) -> str:
-        return f"Wave {self.waves}" if self.native else ""
+        if not self.native:
+            return ""
+        text = WAVE_TEXT.get(self.waves)
+        if text is None:
+            text = WAVE_TEXT[self.waves] = f"Wave {self.waves}"
+        return text
 
 
 register_arcade(DemonAttack, "demonattack",

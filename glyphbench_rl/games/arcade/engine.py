@@ -160,6 +160,7 @@ class ArcadeTask(GlyphTask):
         self.score = RULES[self.pattern](self, p.goal, p.unit)
         self.lives = p.lives
         self._head_lives = -1             # the lives the remembered HUD head shows
+        self._tail = None                 # the _extra_hud text the remembered HUD ends with
         self.draws = Draws(self.stream("arcade"))
         self.tick = 0
         self.still_version = 0            # bumped by set_still, for games caching rows over it
@@ -241,8 +242,13 @@ class ArcadeTask(GlyphTask):
             self._head_lives = self.lives
             self._head = (f"{score.shown} | Lives {self.lives}" if self.params.lives > 1
                           else score.shown)
+            self._tail = None
         extra = self._extra_hud()
-        return f"{self._head} | {extra}" if extra else self._head
+        if not extra:
+            return self._head
+        if extra is not self._tail:   # (games that keep their extra text hand back the same object)
+            self._tail, self._hud_text = extra, f"{self._head} | {extra}"
+        return self._hud_text
 
 
 def register_arcade(game: type, name: str, *, mini: dict, atari: dict) -> None:

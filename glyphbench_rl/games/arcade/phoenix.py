@@ -12,6 +12,8 @@ from .shooter import BOMB, CANNON, SHOT, Shooter, ShooterParams, march, shooter_
 
 BIRD, DIVER, SHIELDED = "V", "v", "@"
 SHIELD = 4
+ON_TEXT = tuple(f"Shield {k}" for k in range(11))        # the HUD's shield notes, made once
+WAIT_TEXT = tuple(f"Shield in {k}" for k in range(101))
 
 
 @dataclass(frozen=True)
@@ -121,8 +123,12 @@ class Phoenix(Shooter):
     def _extra_hud(self) -> str:
         if not self.params.shield:
             return ""
-        return f"Shield {self.guard}" if self.guard else (
-            "Shield ready" if self.tick >= self.next_guard else f"Shield in {self.next_guard - self.tick}")
+        if self.guard:
+            return ON_TEXT[self.guard] if self.guard < len(ON_TEXT) else f"Shield {self.guard}"
+        wait = self.next_guard - self.tick
+        if wait <= 0:
+            return "Shield ready"
+        return WAIT_TEXT[wait] if wait < len(WAIT_TEXT) else f"Shield in {wait}"
 
 
 register_arcade(Phoenix, "phoenix",
