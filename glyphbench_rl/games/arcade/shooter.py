@@ -166,18 +166,29 @@ class Shooter(ArcadeTask):
         gun = self.gun
         if not gun.shots:
             return []
-        at = at or self.pack.at
         blocks = self._blocker()
         speed = gun.speed
         hits, kept = [], []
         foe = None
+        if at is None:   # the pack holds still while shots fly: index it by cell once
+            cells: dict[tuple[int, int], Body] = {}
+            for b in reversed(self.pack.bodies):   # (reversed: the first body on a cell wins, as in at)
+                cells[b.r, b.c] = b
+            find = cells.get
 
-        def stops(r: int, c: int) -> bool:   # remembers the enemy it found for the hit below
-            nonlocal foe
-            if r < 0:
-                return True
-            foe = at(r, c)
-            return foe is not None or (blocks is not None and blocks(r, c))
+            def stops(r: int, c: int) -> bool:   # remembers the enemy it found for the hit below
+                nonlocal foe
+                if r < 0:
+                    return True
+                foe = find((r, c))
+                return foe is not None or (blocks is not None and blocks(r, c))
+        else:
+            def stops(r: int, c: int) -> bool:   # as above, asking ``at``
+                nonlocal foe
+                if r < 0:
+                    return True
+                foe = at(r, c)
+                return foe is not None or (blocks is not None and blocks(r, c))
 
         # Gun.advance's loop, inlined with sweep's for the usual shot (straight up): each shot
         # moves and its hit is dealt with before the next one moves, as there
