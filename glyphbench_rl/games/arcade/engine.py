@@ -52,6 +52,7 @@ from ..common.lanes import Draws
 
 EMPTY = "."
 EPS = 1e-9
+DRAWN = 2048   # rows with a mover drawn in that a task remembers (see ArcadeTask._draw)
 
 
 @dataclass(frozen=True)
@@ -166,6 +167,8 @@ class ArcadeTask(GlyphTask):
         self.still_version = 0            # bumped by set_still, for games caching rows over it
         self._layers: dict = {}
         self._layers_of = 0               # the still_version the remembered layers were drawn on
+        if "_drawn" not in self.__dict__:   # kept across episodes: the same rows come back
+            self._drawn, self._grids, self._drawn_from = {}, 0, 0
         self.still = self._still()
 
     def _still(self) -> list[str]:
@@ -228,12 +231,36 @@ class ArcadeTask(GlyphTask):
     def _grid(self) -> list[str]:
         rows = self._rows()
         h = len(rows)
-        for r, c, g in self._sprites():   # a few movers: slicing beats a row-to-list round trip
+        self._grids += 1
+        drawn = self._drawn
+        for r, c, g in self._sprites():   # a few movers: one cell each into its row
             if 0 <= r < h:
                 line = rows[r]
                 if 0 <= c < len(line):
-                    rows[r] = line[:c] + g + line[c + 1:]
+                    if drawn is None:
+                        rows[r] = line[:c] + g + line[c + 1:]
+                    else:
+                        key = (line, c, g)
+                        rows[r] = drawn.get(key) or self._draw(key)
         return rows
+
+    def _draw(self, key: tuple[str, int, str]) -> str:
+        """The row ``line`` with glyph ``g`` in column ``c`` (``key``), remembered: a mover over
+        a still background makes the same few rows again and again, and finding one costs less
+        than making it. A task that makes new rows at more than one a grid (a sliding or filling
+        background) stops remembering them."""
+        line, c, g = key
+        row = line[:c] + g + line[c + 1:]
+        drawn = self._drawn
+        if drawn is not None:
+            if len(drawn) >= DRAWN:
+                if self._grids - self._drawn_from < DRAWN:
+                    self._drawn = None
+                    return row
+                drawn.clear()
+                self._drawn_from = self._grids
+            drawn[key] = row
+        return row
 
     def _hud(self) -> str:
         score = self.score

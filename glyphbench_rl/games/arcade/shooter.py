@@ -142,6 +142,7 @@ class Shooter(ArcadeTask):
         self.gun = Gun(cooldown=p.cooldown, speed=p.shot_speed, reach=p.height, limit=p.shots)
         self.bombs = Gun(cooldown=0, speed=1, reach=p.height, limit=p.bombs)
         self.pack = Pack()
+        self._me = Body(0, 0)              # the cannon, as _grid draws it
 
     def _lanes(self) -> list[int] | None:
         return list(self.lanes) if self.lanes else None
@@ -295,16 +296,21 @@ class Shooter(ArcadeTask):
             return super()._grid()
         rows = self._rows()
         h = len(rows)
-        for group, glyph in ((self.pack.bodies, None), (self.gun.shots, SHOT), (self.bombs.shots, BOMB)):
+        self._grids += 1
+        drawn, draw = self._drawn, self._draw
+        me = self._me
+        me.r, me.c, me.glyph = self.row, self.col, self.cannon
+        for group, glyph in ((self.pack.bodies, None), (self.gun.shots, SHOT), (self.bombs.shots, BOMB),
+                             ((me,), None)):
             for b in group:
                 r, c = b.r, b.c
                 if 0 <= r < h:
                     line = rows[r]
                     if 0 <= c < len(line):
-                        rows[r] = line[:c] + (glyph or b.glyph) + line[c + 1:]
-        r, c = self.row, self.col
-        if 0 <= r < h:
-            line = rows[r]
-            if 0 <= c < len(line):
-                rows[r] = line[:c] + self.cannon + line[c + 1:]
+                        g = glyph or b.glyph
+                        if drawn is None:
+                            rows[r] = line[:c] + g + line[c + 1:]
+                        else:
+                            key = (line, c, g)
+                            rows[r] = drawn.get(key) or draw(key)
         return rows
