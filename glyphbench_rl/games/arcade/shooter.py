@@ -143,6 +143,8 @@ class Shooter(ArcadeTask):
         self.bombs = Gun(cooldown=0, speed=1, reach=p.height, limit=p.bombs)
         self.pack = Pack()
         self._me = Body(0, 0)              # the cannon, as _grid draws it
+        # _blocks, or None where the game keeps the default (nothing blocks: no call per cell)
+        self._blocking = None if type(self)._blocks is Shooter._blocks else self._blocks
 
     def _lanes(self) -> list[int] | None:
         return list(self.lanes) if self.lanes else None
@@ -167,7 +169,7 @@ class Shooter(ArcadeTask):
         gun = self.gun
         if not gun.shots:
             return []
-        blocks = self._blocker()
+        blocks = self._blocking
         speed = gun.speed
         hits, kept = [], []
         foe = None
@@ -219,10 +221,6 @@ class Shooter(ArcadeTask):
         gun.shots = kept
         return hits
 
-    def _blocker(self):
-        """``_blocks``, or None where the game keeps the default (nothing blocks: no call per cell)."""
-        return None if type(self)._blocks is Shooter._blocks else self._blocks
-
     def shoot_down(self, say: str, at=None) -> list | None:
         """``volley``, then kill, announce and score (a unit each) every enemy hit; the (enemy,
         cell) hits come back, or None when one of them won the game."""
@@ -259,7 +257,7 @@ class Shooter(ArcadeTask):
             return False
         hit = False
         row, col, h = self.row, self.col, self.params.height
-        blocks = self._blocker()
+        blocks = self._blocking
         if blocks is None:
             def stops(r: int, c: int) -> bool:
                 return r >= h or (r == row and c == col)
