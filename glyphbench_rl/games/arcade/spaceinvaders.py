@@ -115,13 +115,32 @@ class SpaceInvaders(ArcadeTask):
         if p.bomb_every and self.wave.alive and self.bombs.ready_at(self.tick):
             front = self.wave.front()
             self.bombs.fire(self.tick, *front[self.draws.below(len(front))], 1, 0, BOMB)
-        if not self.bombs.shots:
+        bombs = self.bombs
+        if not bombs.shots:
             return
-        for bomb, cell in self.bombs.advance(lambda r, c: blocked(r, c) or (r == h - 1 and c == self.col)):
-            if cell is not None and cell[0] < h and still[cell[0]][cell[1]] == SHIELD:
-                self.set_still(*cell, EMPTY)
-            elif cell == (h - 1, self.col) and self.lose_life("A bomb hit you."):
-                return
+        # bombs.advance for bombs falling a cell a turn, inlined: a bomb stops on a shield, past
+        # the field or on you (each seen to before the next one falls), else falls and, out of
+        # reach, is gone; a last life lost leaves the bombs as they were, as there
+        kept = []
+        for bomb in bombs.shots:
+            r, c = bomb.r + 1, bomb.c
+            bomb.data -= 1
+            if not r < h:
+                bomb.alive = False
+            elif still[r][c] == SHIELD:
+                bomb.alive = False
+                self.set_still(r, c, EMPTY)
+            elif r == h - 1 and c == self.col:
+                bomb.alive = False
+                if self.lose_life("A bomb hit you."):
+                    return
+            else:
+                bomb.r = r
+                if bomb.data <= 0:
+                    bomb.alive = False
+                else:
+                    kept.append(bomb)
+        bombs.shots = kept
 
     def _strike(self, cell: tuple[int, int]) -> None:
         """Your shot stopped at ``cell``: an invader dies, or a shield loses the cell."""
