@@ -253,24 +253,41 @@ class Shooter(ArcadeTask):
 
     def rain(self) -> bool:
         """Bombs fall a cell; True when one reached the cannon (the bomb is gone)."""
-        if not self.bombs.shots:
+        bombs = self.bombs
+        if not bombs.shots:
             return False
         hit = False
         row, col, h = self.row, self.col, self.params.height
         blocks = self._blocking
-        if blocks is None:
-            def stops(r: int, c: int) -> bool:
-                return r >= h or (r == row and c == col)
-        else:
-            def stops(r: int, c: int) -> bool:
-                return r >= h or (r == row and c == col) or blocks(r, c)
-        for bomb, cell in self.bombs.advance(stops):
-            if cell is None or cell[0] >= h:
-                continue
-            if cell[0] == row and cell[1] == col:
-                hit = True
+
+        def stops(r: int, c: int) -> bool:   # past the bottom, on you or on a blocking cell
+            return r >= h or (r == row and c == col) or (blocks is not None and blocks(r, c))
+
+        # Gun.advance's loop, inlined with sweep's for the usual bomb (a cell down a turn): each
+        # bomb's stop is dealt with before the next one falls, as there
+        speed, kept = bombs.speed, []
+        for bomb in bombs.shots:
+            if speed == 1 and bomb.dr == 1 and not bomb.dc:
+                r, c = bomb.r + 1, bomb.c
+                if stops(r, c):
+                    cell = r, c
+                else:
+                    bomb.r, cell = r, None
             else:
-                self._struck(*cell)
+                cell = sweep(bomb, stops, speed) if (bomb.dr or bomb.dc) else None
+            bomb.data -= speed
+            if cell is not None:
+                bomb.alive = False
+                if cell[0] < h:
+                    if cell[0] == row and cell[1] == col:
+                        hit = True
+                    else:
+                        self._struck(*cell)
+            elif bomb.data <= 0:
+                bomb.alive = False
+            else:
+                kept.append(bomb)
+        bombs.shots = kept
         return hit
 
     def touches(self) -> bool:
