@@ -103,16 +103,20 @@ class Phoenix(Shooter):
             return
         if not bodies:
             self._flock()
-        row, col = self.row, self.col
+        row, col, touching = self.row, self.col, None
         for b in bodies:
-            if b.r >= row and (b.r != row or b.c != col):
-                if b.glyph == BIRD:
+            if b.r >= row:
+                if b.r == row and b.c == col:   # on you: the first such is the one that hits you
+                    if touching is None:
+                        touching = b
+                elif b.glyph == BIRD:
                     self.lives = 1
                     self.lose_life("The flock reached your row.")
                     return
-                b.r, b.glyph = 1, BIRD
-        if self.touches():
-            self.pack.kill(self.pack.at(row, col))
+                else:                          # a diver that missed climbs back to the top
+                    b.r, b.glyph = 1, BIRD
+        if touching is not None:
+            self.pack.kill(touching)
             if not self.guard and self.lose_life("A bird hit you."):
                 return
         if p.bomb_chance:
