@@ -67,8 +67,11 @@ class DemonAttack(Shooter):
         if action:
             self.steer(action)
         flap, col, turn, right = self.tick % p.flap == 0, self.col, p.turn, p.width - 1
+        # only a diver (or a demon where the band reaches your row) gets to your row or past it
+        divers = p.band >= self.row
         for b in self.pack.bodies:
             if b.glyph == DIVER:
+                divers = True
                 b.r += 1
                 b.c += (col > b.c) - (col < b.c)
             elif flap:
@@ -83,13 +86,15 @@ class DemonAttack(Shooter):
                 for dc in (-1, 1):
                     if 0 <= c + dc < p.width:
                         self.pack.add(r, c + dc, DIVER)
-        for b in [b for b in self.pack.bodies if b.r > self.row]:
-            self.pack.kill(b)
-        if self.touches():
-            self.pack.kill(self.pack.at(self.row, self.col))
-            if self.lose_life("A diving demon hit you."):
-                return
-        self._fill()
+        if divers:
+            for b in [b for b in self.pack.bodies if b.r > self.row]:
+                self.pack.kill(b)
+            if self.touches():
+                self.pack.kill(self.pack.at(self.row, self.col))
+                if self.lose_life("A diving demon hit you."):
+                    return
+        if self.sent < p.wave:
+            self._fill()
         if not self.pack.bodies:
             self.waves, self.sent = self.waves + 1, 0
             self._fill()
