@@ -83,11 +83,8 @@ class Pong(ArcadeTask):
     def _play(self, action: int) -> None:
         p, b = self.params, self.ball
         low = p.height - 1 - p.paddle
-        if action:
-            self.me = min(max(1, self.me + MOVES[action]), low)
-        step = track(self.cpu + p.paddle // 2, b.r, p.chance, self.draws)
-        if step:
-            self.cpu = min(max(1, self.cpu + step), low)
+        self.me = min(max(1, self.me + MOVES[action]), low)
+        self.cpu = min(max(1, self.cpu + track(self.cpu + p.paddle // 2, b.r, p.chance, self.draws)), low)
         speed = 1 + (self.hits // p.speedup if p.speedup else 0)
         speed = min(speed, p.top_speed)
         bottom, right = p.height - 1, p.width - 2
