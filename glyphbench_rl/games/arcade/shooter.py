@@ -174,9 +174,16 @@ class Shooter(ArcadeTask):
         hits, kept = [], []
         foe = None
         if at is None:   # the pack holds still while shots fly: index it by cell once
+            lanes: set[int] | None = set()   # the columns straight shots fly up (None: any)
+            for shot in gun.shots:
+                if shot.dc:
+                    lanes = None
+                    break
+                lanes.add(shot.c)
             cells: dict[tuple[int, int], Body] = {}
             for b in reversed(self.pack.bodies):   # (reversed: the first body on a cell wins, as in at)
-                cells[b.r, b.c] = b
+                if lanes is None or b.c in lanes:
+                    cells[b.r, b.c] = b
             find = cells.get
 
             def stops(r: int, c: int) -> bool:   # remembers the enemy it found for the hit below
