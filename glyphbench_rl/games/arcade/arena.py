@@ -331,12 +331,52 @@ class ArenaTask(ArcadeTask):
             self.air.refill()
 
     # -- drawing -------------------------------------------------------------------------------------
+    def _below(self):
+        """Movers of the game's own drawn under the foes: (row, col, glyph) each."""
+        return ()
+
+    def _above(self):
+        """Movers of the game's own drawn over everything."""
+        return ()
+
+    def _you(self) -> str:
+        return ARROWS.get(self.face, SHIP) if self.arrows else SHIP
+
     def _sprites(self):
-        out = [(f.r, f.c, f.glyph) for f in self.foes]
+        out = [*self._below(), *((f.r, f.c, f.glyph) for f in self.foes)]
         out += [(s.r, s.c, SHOT) for s in self.gun.shots]
         out += [(s.r, s.c, SHELL) for s in self.shells.shots]
-        out.append((self.r, self.c, ARROWS.get(self.face, SHIP) if self.arrows else SHIP))
+        out.append((self.r, self.c, self._you()))
+        out += self._above()
         return out
+
+    def _grid(self) -> list[str]:
+        """``_sprites()`` drawn on ``_rows()`` straight from the bodies: no (row, col, glyph)
+        tuple per mover (that cost as much as the drawing) and no bounds test (every mover of an
+        arena stays inside the field)."""
+        rows = self._rows()
+        for r, c, g in self._below():
+            line = rows[r]
+            rows[r] = line[:c] + g + line[c + 1:]
+        for f in self.foes:
+            r, c = f.r, f.c
+            line = rows[r]
+            rows[r] = line[:c] + f.glyph + line[c + 1:]
+        for s in self.gun.shots:
+            r, c = s.r, s.c
+            line = rows[r]
+            rows[r] = line[:c] + SHOT + line[c + 1:]
+        for s in self.shells.shots:
+            r, c = s.r, s.c
+            line = rows[r]
+            rows[r] = line[:c] + SHELL + line[c + 1:]
+        r, c = self.r, self.c
+        line = rows[r]
+        rows[r] = line[:c] + self._you() + line[c + 1:]
+        for r, c, g in self._above():
+            line = rows[r]
+            rows[r] = line[:c] + g + line[c + 1:]
+        return rows
 
     def _extra_hud(self) -> str:
         return f"{self.air_name} {self.air.left}" if self.air is not None else ""

@@ -104,8 +104,8 @@ class Seaquest(ArenaTask):
             self.score.gain()
         self.add_foe(foe.r, 0 if foe.dc > 0 else self.params.width - 1, 0, foe.dc)
 
-    def _sprites(self):
-        return [(d.r, d.c, DIVER) for d in self.swimmers] + super()._sprites()
+    def _below(self):
+        return [(d.r, d.c, DIVER) for d in self.swimmers]
 
     def _extra_hud(self) -> str:
         return f"{super()._extra_hud()} | Divers {self.carried}/{self.params.divers}"
