@@ -94,6 +94,7 @@ class MazeTask(ArcadeTask):
         self.r, self.c = start
         self.exits = {(r, c): tuple(d for d in DIRS if self.open(r + d[0], c + d[1]))
                       for r, c in self.floor_cells()}     # the walls never move
+        self._ways: dict = {}      # (row, col, heading) -> the exits a ghost may take, as needed
 
     def _respawn(self) -> None:
         self.r, self.c = self.home
@@ -114,10 +115,10 @@ class MazeTask(ArcadeTask):
         ghost.r, ghost.c, ghost.dr, ghost.dc = ghost.data[2]
 
     def _play(self, action: int) -> None:
-        dr, dc = STEPS[action]
-        if (dr or dc) and (dr, dc) in self.exits[self.r, self.c]:
-            self.r += dr
-            self.c += dc
+        step = STEPS[action]
+        if action and step in self.exits[self.r, self.c]:
+            self.r += step[0]
+            self.c += step[1]
             self._visit(self.r, self.c)
             if self.done or self._touch():
                 return
@@ -159,13 +160,14 @@ class MazeTask(ArcadeTask):
             i = (path.index((g.r, g.c)) + 1) % len(path) if (g.r, g.c) in path else 0
             g.r, g.c = path[i]
             return
-        back = (-g.dr, -g.dc)
-        ways = [d for d in self.exits[g.r, g.c] if d != back]
-        if not ways:
-            ways = [(-g.dr, -g.dc)]
+        key = (g.r, g.c, g.dr, g.dc)
+        ways = self._ways.get(key)
+        if ways is None:       # every exit but the way back (that only at a dead end), remembered
+            back = (-g.dr, -g.dc)
+            ways = self._ways[key] = tuple(d for d in self.exits[g.r, g.c] if d != back) or (back,)
         if len(ways) == 1:
             pick = ways[0]
-        elif mode in (SCARED, WANDER) or (mode == CHASE and self.draws.random() >= self.params.chance):
+        elif mode == SCARED or mode == WANDER or (mode == CHASE and self.draws.random() >= self.params.chance):
             pick = ways[self.draws.below(len(ways))]
         else:
             if mode == CHASE:
@@ -174,14 +176,39 @@ class MazeTask(ArcadeTask):
                 r0, c0 = g.data[2][:2]
                 tr = 0 if r0 < len(self.still) // 2 else len(self.still)
                 tc = 0 if c0 < len(self.still[0]) // 2 else len(self.still[0])
-            pick = min(ways, key=lambda d: (g.r + d[0] - tr) ** 2 + (g.c + d[1] - tc) ** 2)
+            pick, near = None, 0
+            for d in ways:              # the first way nearest the target
+                dr, dc = g.r + d[0] - tr, g.c + d[1] - tc
+                if pick is None or dr * dr + dc * dc < near:
+                    pick, near = d, dr * dr + dc * dc
         g.dr, g.dc = pick
         g.r += pick[0]
         g.c += pick[1]
 
+    def _below(self):
+        """Things of the game's own drawn under the ghosts: (row, col, glyph) each."""
+        return ()
+
     def _sprites(self):
         scared = self.tick < self.scared_until
-        out = [(g.r, g.c, self.scared_glyph if scared and g.data[0] == CHASE else g.glyph)
-               for g in self.ghosts]
+        out = [*self._below(), *((g.r, g.c, self.scared_glyph if scared and g.data[0] == CHASE else g.glyph)
+                                 for g in self.ghosts)]
         out.append((self.r, self.c, self.player_glyph))
         return out
+
+    def _grid(self) -> list[str]:
+        """``_sprites()`` drawn on ``_rows()`` straight from the bodies (no tuple per mover, no
+        bounds test: everything walks the maze)."""
+        rows = self._rows()
+        for r, c, ch in self._below():
+            line = rows[r]
+            rows[r] = line[:c] + ch + line[c + 1:]
+        scared = self.tick < self.scared_until
+        for g in self.ghosts:
+            r, c = g.r, g.c
+            line = rows[r]
+            rows[r] = line[:c] + (self.scared_glyph if scared and g.data[0] == CHASE else g.glyph) + line[c + 1:]
+        r, c = self.r, self.c
+        line = rows[r]
+        rows[r] = line[:c] + self.player_glyph + line[c + 1:]
+        return rows
