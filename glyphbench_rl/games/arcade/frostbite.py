@@ -75,6 +75,7 @@ class Frostbite(ArcadeTask):
             period = int(rng.integers(1, p.slowest + 1))
             lanes[r] = Lane(pattern, 1 if k % 2 == 0 else -1, period, int(rng.integers(period)))
         self.drift = Drift(lanes, WATER)
+        self._blued: dict[str, str] = {}
         self.blue: set[int] = set()
         self.clock = Countdown(p.cold)
         self._respawn()
@@ -107,13 +108,22 @@ class Frostbite(ArcadeTask):
             self.lose_life("You froze!")
 
     def _rows(self) -> list[str]:
-        rows = self.still[:]
-        for r, line in self.drift.rows(self.tick).items():
-            rows[r] = line.replace(WHITE, BLUE) if r in self.blue else line
+        rows, tick, blue, blued, line = self.still[:], self.tick, self.blue, self._blued, self.drift.line
+        for r in self.drift.lanes:
+            row = line(r, tick)
+            if r in blue:       # (each blue row made once: the rows repeat)
+                row = blued.get(row) or blued.setdefault(row, row.replace(WHITE, BLUE))
+            rows[r] = row
         return rows
 
     def _sprites(self):
         return ((self.r, self.c, YOU),)
+
+    def _grid(self) -> list[str]:
+        rows = self._rows()             # (you are always on the field)
+        line = rows[self.r]
+        rows[self.r] = line[:self.c] + YOU + line[self.c + 1:]
+        return rows
 
     def _extra_hud(self) -> str:
         return f"Cold {self.clock.left}" if self.params.cold else ""

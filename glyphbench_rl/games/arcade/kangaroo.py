@@ -158,6 +158,26 @@ class Kangaroo(ArcadeTask):
         out.append((self.r, self.c, YOU))
         return out
 
+    def _grid(self) -> list[str]:
+        """``_sprites()`` drawn straight from the positions (all inside the building)."""
+        rows = self.still[:]
+        for r, c in self.fruit:
+            line = rows[r]
+            rows[r] = line[:c] + FRUIT + line[c + 1:]
+        if not self.params.floors_pay:
+            r = self.ladders.floors[-1]
+            rows[r] = rows[r][:-1] + JOEY
+        for r, c, _ in self.monkeys:
+            line = rows[r]
+            rows[r] = line[:c] + MONKEY + line[c + 1:]
+        for r, c in self.nuts:
+            line = rows[r]
+            rows[r] = line[:c] + NUT + line[c + 1:]
+        r, c = self.r, self.c
+        line = rows[r]
+        rows[r] = line[:c] + YOU + line[c + 1:]
+        return rows
+
 
 register_arcade(Kangaroo, "kangaroo",
                 mini=dict(max_turns=300),
