@@ -161,8 +161,9 @@ class ArenaTask(ArcadeTask):
         """Your shots fly ``shot_speed`` cells, a cell at a time, and stop on what ``_struck``
         stops (the gun's ``advance`` written out: shots fly along a unit step, and this runs on
         most ticks, where a generator and a hit callback per cell cost more than the flight)."""
-        gun = self.gun
+        gun, p = self.gun, self.params
         speed, struck, kept = gun.speed, self._struck, []
+        h, w, still, solid = p.height, p.width, self.still, self.SOLID
         for shot in gun.shots:
             cell = None
             dr, dc = shot.dr, shot.dc
@@ -171,8 +172,12 @@ class ArenaTask(ArcadeTask):
                 for _ in range(speed):
                     r += dr
                     c += dc
-                    if struck(r, c):
-                        cell = r, c
+                    if p.wrap:
+                        if struck(r, c):
+                            cell = r, c
+                            break
+                    elif not (0 <= r < h and 0 <= c < w) or still[r][c] in solid or self.foe_at(r, c):
+                        cell = r, c                        # (``_struck`` on a field that ends)
                         break
                     shot.r, shot.c = r, c
             shot.data -= speed
@@ -372,7 +377,7 @@ class ArenaTask(ArcadeTask):
             rows[r] = line[:c] + SHELL + line[c + 1:]
         r, c = self.r, self.c
         line = rows[r]
-        rows[r] = line[:c] + self._you() + line[c + 1:]
+        rows[r] = line[:c] + (ARROWS.get(self.face, SHIP) if self.arrows else SHIP) + line[c + 1:]
         for r, c, g in self._above():
             line = rows[r]
             rows[r] = line[:c] + g + line[c + 1:]

@@ -101,7 +101,7 @@ class Kangaroo(ArcadeTask):
 
     def _hit(self) -> bool:
         here = (self.r, self.c)
-        if here in self.nuts or any((m[0], m[1]) == here for m in self.monkeys):
+        if here in self.nuts or (self.monkeys and any((m[0], m[1]) == here for m in self.monkeys)):
             self.nuts = [n for n in self.nuts if n != here]
             return self.lose_life("Ouch!")
         return False

@@ -108,7 +108,7 @@ class Seaquest(ArenaTask):
         return [(d.r, d.c, DIVER) for d in self.swimmers]
 
     def _extra_hud(self) -> str:
-        return f"{super()._extra_hud()} | Divers {self.carried}/{self.params.divers}"
+        return f"{self.air_name} {self.air.left} | Divers {self.carried}/{self.params.divers}"
 
 
 register_arcade(Seaquest, "seaquest",
