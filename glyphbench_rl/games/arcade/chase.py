@@ -127,8 +127,7 @@ class MazeTask(ArcadeTask):
             return
         p = self.params
         if self.tick > p.release and self.tick % p.pace == 0:
-            for g in self.ghosts:
-                self._steer(g)
+            self._steer()
             self._touch()
 
     def _tick_world(self) -> None:
@@ -153,37 +152,43 @@ class MazeTask(ArcadeTask):
             return SCARED
         return SCATTER if self.tick % self.params.cycle < self.params.scatter else CHASE
 
-    def _steer(self, g: Body) -> None:
-        mode = self.mode(g)
-        if mode == PATROL:
-            path = g.data[1]
-            i = (path.index((g.r, g.c)) + 1) % len(path) if (g.r, g.c) in path else 0
-            g.r, g.c = path[i]
-            return
-        key = (g.r, g.c, g.dr, g.dc)
-        ways = self._ways.get(key)
-        if ways is None:       # every exit but the way back (that only at a dead end), remembered
-            back = (-g.dr, -g.dc)
-            ways = self._ways[key] = tuple(d for d in self.exits[g.r, g.c] if d != back) or (back,)
-        if len(ways) == 1:
-            pick = ways[0]
-        elif mode == SCARED or mode == WANDER or (mode == CHASE and self.draws.random() >= self.params.chance):
-            pick = ways[self.draws.below(len(ways))]
-        else:
+    def _steer(self) -> None:
+        """Every ghost takes a step, in order, by its ``mode``."""
+        p, tick, memo, exits, draws = self.params, self.tick, self._ways, self.exits, self.draws
+        clock = SCARED if tick < self.scared_until else SCATTER if tick % p.cycle < p.scatter else CHASE
+        for g in self.ghosts:
+            mode = g.data[0]
             if mode == CHASE:
-                tr, tc = self.r, self.c
+                mode = clock
+            elif mode == PATROL:
+                path = g.data[1]
+                i = (path.index((g.r, g.c)) + 1) % len(path) if (g.r, g.c) in path else 0
+                g.r, g.c = path[i]
+                continue
+            key = (g.r, g.c, g.dr, g.dc)
+            ways = memo.get(key)
+            if ways is None:   # every exit but the way back (that only at a dead end), remembered
+                back = (-g.dr, -g.dc)
+                ways = memo[key] = tuple(d for d in exits[g.r, g.c] if d != back) or (back,)
+            if len(ways) == 1:
+                pick = ways[0]
+            elif mode == SCARED or mode == WANDER or (mode == CHASE and draws.random() >= p.chance):
+                pick = ways[draws.below(len(ways))]
             else:
-                r0, c0 = g.data[2][:2]
-                tr = 0 if r0 < len(self.still) // 2 else len(self.still)
-                tc = 0 if c0 < len(self.still[0]) // 2 else len(self.still[0])
-            pick, near = None, 0
-            for d in ways:              # the first way nearest the target
-                dr, dc = g.r + d[0] - tr, g.c + d[1] - tc
-                if pick is None or dr * dr + dc * dc < near:
-                    pick, near = d, dr * dr + dc * dc
-        g.dr, g.dc = pick
-        g.r += pick[0]
-        g.c += pick[1]
+                if mode == CHASE:
+                    tr, tc = self.r, self.c
+                else:
+                    r0, c0 = g.data[2][:2]
+                    tr = 0 if r0 < len(self.still) // 2 else len(self.still)
+                    tc = 0 if c0 < len(self.still[0]) // 2 else len(self.still[0])
+                pick, near = None, 0
+                for d in ways:          # the first way nearest the target
+                    dr, dc = g.r + d[0] - tr, g.c + d[1] - tc
+                    if pick is None or dr * dr + dc * dc < near:
+                        pick, near = d, dr * dr + dc * dc
+            g.dr, g.dc = pick
+            g.r += pick[0]
+            g.c += pick[1]
 
     def _below(self):
         """Things of the game's own drawn under the ghosts: (row, col, glyph) each."""
