@@ -82,13 +82,15 @@ class Seaquest(ArenaTask):
                 d.c += d.dc
                 if not 0 <= d.c < p.width:
                     d.dc, d.c = -d.dc, d.c - 2 * d.dc
+        r, c, picked = self.r, self.c, False
         for d in self.swimmers:
-            if (d.r, d.c) == (self.r, self.c):
-                d.alive = False
+            if d.r == r and d.c == c:
+                d.alive, picked = False, True
                 self.carried += 1
                 self.say("Diver rescued.")
                 self.score.gain()
-        self.swimmers = [d for d in self.swimmers if d.alive]
+        if picked:
+            self.swimmers = [d for d in self.swimmers if d.alive]
 
     def _restock(self) -> None:
         p = self.params
