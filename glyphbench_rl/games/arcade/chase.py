@@ -33,6 +33,7 @@ COMPASS = [("NOOP", "stay where you are"), ("LEFT", "move one cell left"),
 ACTIONS = ActionSet(COMPASS, noop="NOOP")
 STEPS = ((0, 0), (0, -1), (0, 1), (-1, 0), (1, 0))
 DIRS = STEPS[1:]
+_MAZES: dict[tuple[str, ...], tuple[dict, dict]] = {}   # wall layout -> (exits, ghost ways)
 
 
 @dataclass(frozen=True)
@@ -92,9 +93,17 @@ class MazeTask(ArcadeTask):
         """Place the player and the ghosts (made by ``ghost``)."""
         self.home, self.ghosts, self.scared_until = start, ghosts, 0
         self.r, self.c = start
-        self.exits = {(r, c): tuple(d for d in DIRS if self.open(r + d[0], c + d[1]))
-                      for r, c in self.floor_cells()}     # the walls never move
-        self._ways: dict = {}      # (row, col, heading) -> the exits a ghost may take, as needed
+        # the walls never move: a cell's exits, and the ways a ghost may take from a cell on a
+        # heading (found as needed), hold for every episode on the same walls
+        floor = str.maketrans({g: "." for g in self.vocab() if len(g) == 1 and g != WALL})
+        walls = tuple(row.translate(floor) for row in self.still)
+        maze = _MAZES.get(walls)
+        if maze is None:
+            if len(_MAZES) >= 64:
+                _MAZES.clear()
+            maze = _MAZES[walls] = ({(r, c): tuple(d for d in DIRS if self.open(r + d[0], c + d[1]))
+                                     for r, c in self.floor_cells()}, {})
+        self.exits, self._ways = maze
 
     def _respawn(self) -> None:
         self.r, self.c = self.home
