@@ -75,7 +75,6 @@ class Frostbite(ArcadeTask):
             period = int(rng.integers(1, p.slowest + 1))
             lanes[r] = Lane(pattern, 1 if k % 2 == 0 else -1, period, int(rng.integers(period)))
         self.drift = Drift(lanes, WATER)
-        self._blued: dict[str, str] = {}
         self.blue: set[int] = set()
         self.clock = Countdown(p.cold)
         self._respawn()
@@ -108,12 +107,10 @@ class Frostbite(ArcadeTask):
             self.lose_life("You froze!")
 
     def _rows(self) -> list[str]:
-        rows, tick, blue, blued, line = self.still[:], self.tick, self.blue, self._blued, self.drift.line
-        for r in self.drift.lanes:
-            row = line(r, tick)
-            if r in blue:       # (each blue row made once: the rows repeat)
-                row = blued.get(row) or blued.setdefault(row, row.replace(WHITE, BLUE))
-            rows[r] = row
+        rows, tick, blue = self.still[:], self.tick, self.blue
+        for r, cycle in self.drift.cycles.items():
+            row = cycle[tick % len(cycle)]
+            rows[r] = row.replace(WHITE, BLUE) if r in blue else row
         return rows
 
     def _sprites(self):

@@ -24,22 +24,19 @@ HOPS = ((0, 0), (-1, -1), (-1, 0), (1, 0), (1, 1))   # (row, index) change of a 
 class Drift:
     """Drifting rows: ``lanes`` maps a grid row to its ``Lane``; a cell is solid where the lane
     shows something other than ``water``. A lane's row repeats every ``period x length`` ticks:
-    ``cycles`` keeps, per grid row, the row at each tick of that cycle once it has been asked
-    for (``line``), so a turn looks its rows up instead of working out each shift."""
+    ``cycles`` holds, per grid row, its row at each tick of that cycle (made once, with the
+    lanes), so a turn looks its rows up instead of working out each shift."""
     __slots__ = ("lanes", "water", "cycles")
 
     def __init__(self, lanes: dict[int, Lane], water: str) -> None:
         self.lanes, self.water = lanes, water
-        self.cycles = {r: [None] * (lane.period * len(lane.pattern)) for r, lane in lanes.items()}
+        self.cycles = {r: [lane.row(t) for t in range(lane.period * len(lane.pattern))]
+                       for r, lane in lanes.items()}
 
     def line(self, r: int, tick: int) -> str:
         """The row of the lane on grid row ``r`` at the end of ``tick``."""
         cycle = self.cycles[r]
-        k = tick % len(cycle)
-        line = cycle[k]
-        if line is None:
-            line = cycle[k] = self.lanes[r].row(tick)
-        return line
+        return cycle[tick % len(cycle)]
 
     def solid(self, r: int, c: int, tick: int) -> bool:
         return r in self.lanes and self.line(r, tick)[c % len(self.lanes[r].pattern)] != self.water
