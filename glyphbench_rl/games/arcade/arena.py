@@ -336,6 +336,12 @@ class ArenaTask(ArcadeTask):
             self.air.refill()
 
     # -- drawing -------------------------------------------------------------------------------------
+    def __init_subclass__(cls, **kwargs) -> None:
+        super().__init_subclass__(**kwargs)
+        # whether the game draws movers of its own: else ``_grid`` skips asking (most turns of
+        # most games, where two empty calls cost a tenth of the drawing)
+        cls._own_movers = cls._below is not ArenaTask._below or cls._above is not ArenaTask._above
+
     def _below(self):
         """Movers of the game's own drawn under the foes: (row, col, glyph) each."""
         return ()
@@ -360,9 +366,10 @@ class ArenaTask(ArcadeTask):
         tuple per mover (that cost as much as the drawing) and no bounds test (every mover of an
         arena stays inside the field)."""
         rows = self._rows()
-        for r, c, g in self._below():
-            line = rows[r]
-            rows[r] = line[:c] + g + line[c + 1:]
+        if self._own_movers:
+            for r, c, g in self._below():
+                line = rows[r]
+                rows[r] = line[:c] + g + line[c + 1:]
         for f in self.foes:
             r, c = f.r, f.c
             line = rows[r]
@@ -378,9 +385,10 @@ class ArenaTask(ArcadeTask):
         r, c = self.r, self.c
         line = rows[r]
         rows[r] = line[:c] + (ARROWS.get(self.face, SHIP) if self.arrows else SHIP) + line[c + 1:]
-        for r, c, g in self._above():
-            line = rows[r]
-            rows[r] = line[:c] + g + line[c + 1:]
+        if self._own_movers:
+            for r, c, g in self._above():
+                line = rows[r]
+                rows[r] = line[:c] + g + line[c + 1:]
         return rows
 
     def _extra_hud(self) -> str:
