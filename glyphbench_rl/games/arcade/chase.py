@@ -199,6 +199,10 @@ class MazeTask(ArcadeTask):
             g.r += pick[0]
             g.c += pick[1]
 
+    def __init_subclass__(cls, **kwargs) -> None:
+        super().__init_subclass__(**kwargs)
+        cls._own_things = cls._below is not MazeTask._below   # else ``_grid`` skips asking
+
     def _below(self):
         """Things of the game's own drawn under the ghosts: (row, col, glyph) each."""
         return ()
@@ -214,9 +218,10 @@ class MazeTask(ArcadeTask):
         """``_sprites()`` drawn on ``_rows()`` straight from the bodies (no tuple per mover, no
         bounds test: everything walks the maze)."""
         rows = self._rows()
-        for r, c, ch in self._below():
-            line = rows[r]
-            rows[r] = line[:c] + ch + line[c + 1:]
+        if self._own_things:
+            for r, c, ch in self._below():
+                line = rows[r]
+                rows[r] = line[:c] + ch + line[c + 1:]
         scared = self.tick < self.scared_until
         for g in self.ghosts:
             r, c = g.r, g.c
