@@ -59,6 +59,7 @@ class ArenaTask(ArcadeTask):
     FOE: ClassVar[str] = "X"
     arrows: ClassVar[bool] = True         # draw the player as the arrow it faces (else SHIP)
     drift: ClassVar[bool] = False         # foes keep their own velocity instead of chasing
+    _own_movers: ClassVar[bool] = False   # set per game class: it draws movers of its own
 
     def prompt_fields(self) -> dict:
         p = self.params

@@ -82,6 +82,7 @@ class MazeTask(ArcadeTask):
     ACTIONS = ACTIONS
     pattern = "D"
     scared_glyph, player_glyph = "g", "C"
+    _own_things = False        # set per game class: it draws things of its own (``_below``)
 
     def open(self, r: int, c: int) -> bool:
         return 0 <= r < len(self.still) and 0 <= c < len(self.still[r]) and self.still[r][c] != WALL
