@@ -44,7 +44,7 @@ class Strip:
         if self.axis == "up":
             rows.append(line)
             return rows.pop(0)
-        gone = "".join(row[0] for row in rows)
+        gone = "".join([row[0] for row in rows])      # (a list joins faster than a generator)
         self.rows = [row[1:] + ch for row, ch in zip(rows, line)]
         return gone
 
@@ -120,6 +120,49 @@ class Pacer:
 def put_one(line: str, c: int, ch: str) -> str:
     """``line`` with ``ch`` at column ``c``."""
     return line[:c] + ch + line[c + 1:]
+
+
+def fly_shots(gun: Gun, hit, strike) -> None:
+    """``gun.advance(hit)`` for shots moving one cell a step on each axis they move along (the
+    usual shot), without a generator: each shot steps cell by cell, ``speed`` cells, and stops
+    at the first cell where ``hit(r, c)`` is true; ``strike(r, c)`` then hears of it at once (as
+    a caller looping over ``advance`` would) and returns True to stop the volley (the episode
+    ended: like a caller leaving the loop, the gun keeps its shots as they stand)."""
+    kept, speed = [], gun.speed
+    for shot in gun.shots:
+        dr, dc, r, c = shot.dr, shot.dc, shot.r, shot.c
+        struck = False
+        for _ in range(speed):
+            r += dr
+            c += dc
+            if hit(r, c):
+                struck = True
+                break
+            shot.r, shot.c = r, c
+        shot.data -= speed
+        if struck:
+            shot.alive = False
+            if strike(r, c):
+                return
+        elif shot.data <= 0:
+            shot.alive = False
+        else:
+            kept.append(shot)
+    gun.shots = kept
+
+
+def stamp(rows: list[str], things, glyph: str, left: int = 0, world: int = 0) -> None:
+    """Draw ``glyph`` on ``rows`` at each thing's (``.r``, ``.c``), skipping cells off the rows;
+    with a ``world`` width, ``.c`` is a world column seen through a view starting at world
+    column ``left`` (``Camera.screen``). Cheaper than a (row, col, glyph) per mover."""
+    h, w = len(rows), len(rows[0])
+    for t in things:
+        r, c = t.r, t.c
+        if world:
+            c = (c - left) % world
+        if 0 <= r < h and 0 <= c < w:
+            line = rows[r]
+            rows[r] = line[:c] + glyph + line[c + 1:]
 
 
 class Camera:

@@ -11,7 +11,7 @@ from ...core.actions import ActionSet
 from ...core.params import param, require
 from .bodies import Countdown, Gun
 from .engine import EMPTY, ArcadeParams, ArcadeTask, register_arcade
-from .scroller import Pacer, Strip, put_one
+from .scroller import Pacer, Strip, fly_shots, put_one
 
 SHIP, TURRET, FUEL, WALL, SHOT, BULLET = ">", "T", "F", "#", "-", "~"
 ACTIONS = ActionSet([("NOOP", "hold your altitude"), ("UP", "climb one row"),
@@ -90,13 +90,16 @@ class Zaxxon(ArcadeTask):
         return put_one(line, self.draws.below(p.height), what)
 
     def _shot_hits(self, r: int, c: int) -> bool:
+        """What stops your shot at (r, c): the right edge, a turret shot (both are gone) or
+        anything on the strip (your shots stay on the field's rows and right of column 0)."""
         if c >= self.params.width:
             return True
-        if (r, c) in self.bullets:
-            self.flak.shots = [b for b in self.flak.shots if (b.r, b.c) != (r, c)]
-            self.bullets.discard((r, c))
+        bullets = self.bullets
+        if bullets and (r, c) in bullets:
+            self.flak.shots = [b for b in self.flak.shots if b.r != r or b.c != c]
+            bullets.discard((r, c))
             return True
-        return self.strip.get(r, c) not in (EMPTY, "")
+        return self.strip.rows[r][c] != EMPTY
 
     def _strike(self, r: int, c: int) -> None:
         what = self.strip.get(r, c)
@@ -110,40 +113,40 @@ class Zaxxon(ArcadeTask):
 
     def _flak_moves(self) -> bool:
         """Turret shots fly a cell left (gone at the edge or a wall); True if one meets you."""
-        kept, rows, me = [], self.strip.rows, (self.r, self.col)
+        kept, rows, r0, c0 = [], self.strip.rows, self.r, self.col
         for b in self.flak.shots:
-            b.c -= 1
-            if b.c < 0 or rows[b.r][b.c] == WALL:
+            c = b.c = b.c - 1
+            if c < 0 or rows[b.r][c] == WALL:
                 continue
-            if (b.r, b.c) == me:
+            if c == c0 and b.r == r0:
                 return True
             kept.append(b)
         self.flak.shots = kept
         return False
 
     def _play(self, action: int) -> None:
-        p = self.params
-        self.r = min(p.height - 1, max(0, self.r + MOVES[action]))
+        p, gun = self.params, self.gun
+        r = self.r + MOVES[action]
+        self.r = r = 0 if r < 0 else min(r, p.height - 1)
         if action == FIRE:
-            self.gun.fire(self.tick, self.r, self.col + 1, 0, 1, SHOT)
+            gun.fire(self.tick, r, self.col + 1, 0, 1, SHOT)
         if self._crashed():
             return
-        if self.gun.shots:
-            self.bullets = {(b.r, b.c) for b in self.flak.shots}
-            for shot, cell in self.gun.advance(self._shot_hits):
-                if cell is not None:
-                    self._strike(*cell)
+        if gun.shots:
+            flak = self.flak.shots
+            self.bullets = {(b.r, b.c) for b in flak} if flak else None
+            fly_shots(gun, self._shot_hits, self._strike)
             if self.done:
                 return
         if self.pacer.due(self.tick):
             self.strip.scroll(self._column())
-            for shot in self.gun.shots:
+            for shot in gun.shots:
                 if self._shot_hits(shot.r, shot.c):
                     self._strike(shot.r, shot.c)
                     shot.data = 0
             if self._crashed():
                 return
-        if self._flak_moves():
+        if self.flak.shots and self._flak_moves():
             self.lose_life("A turret shot hit you!")
             return
         if self.volley.due(self.tick):           # new shots start moving next turn
@@ -157,12 +160,14 @@ class Zaxxon(ArcadeTask):
             self.lose_life("Out of fuel!")
 
     def _crashed(self) -> bool:
-        if self.strip.rows[self.r][self.col] != EMPTY:
+        r, c = self.r, self.col
+        if self.strip.rows[r][c] != EMPTY:
             self.lose_life("You crashed!")
             return True
-        if any(b.r == self.r and b.c == self.col for b in self.flak.shots):
-            self.lose_life("A turret shot hit you!")
-            return True
+        for b in self.flak.shots:
+            if b.c == c and b.r == r:
+                self.lose_life("A turret shot hit you!")
+                return True
         return False
 
     def _respawn(self) -> None:
@@ -173,14 +178,23 @@ class Zaxxon(ArcadeTask):
                     self.strip.put(r, c, EMPTY)
         self.fuel.refill()
 
-    def _rows(self) -> list[str]:
-        return self.strip.rows[:]
-
-    def _sprites(self):
-        out = [(s.r, s.c, BULLET) for s in self.flak.shots]
-        out += [(s.r, s.c, SHOT) for s in self.gun.shots]
-        out.append((self.r, self.col, SHIP))
-        return out
+    def _grid(self) -> list[str]:
+        """The strip with the shots and the ship drawn in (all inside the field, bar a turret
+        shot that just left it on the turn it hit you)."""
+        rows = self.strip.rows[:]
+        for b in self.flak.shots:
+            r, c = b.r, b.c
+            if c >= 0:
+                line = rows[r]
+                rows[r] = line[:c] + BULLET + line[c + 1:]
+        for s in self.gun.shots:
+            r, c = s.r, s.c
+            line = rows[r]
+            rows[r] = line[:c] + SHOT + line[c + 1:]
+        r, c = self.r, self.col
+        line = rows[r]
+        rows[r] = line[:c] + SHIP + line[c + 1:]
+        return rows
 
     def _extra_hud(self) -> str:
         return f"Fuel {self.fuel.left}" if self.params.fuel else ""
