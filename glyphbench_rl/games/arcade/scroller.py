@@ -197,8 +197,8 @@ class Flyer:
     """Mixin for an ``ArcadeTask`` whose ship flies over a ground row on a wrapping world the
     view follows (Chopper Command, Defender): its Params have ``world`` and ``reach``; it faces
     the way it last moved and FIRE (``FLY_ACTIONS``) shoots that way. ``fly_start(r)`` in
-    ``_setup``; ``fly(action, lowest)`` moves and fires; ``fly_sprites(out)`` adds the shots and
-    the ship to ``out``, drawn through ``self.camera``."""
+    ``_setup``; ``fly(action, lowest)`` moves and fires; ``fly_draw(rows)`` draws the shots and
+    the ship on the rows, through ``self.camera``."""
 
     def fly_fields(self) -> dict:
         p = self.params
@@ -219,16 +219,21 @@ class Flyer:
         dr, dc = FLY_MOVES[action]
         if dc:
             self.face = dc
-        self.r = min(lowest, max(0, self.r + dr))
+        r = self.r + dr
+        self.r = 0 if r < 0 else min(r, lowest)
         self.x = (self.x + dc) % self.params.world
         if action == FLY_FIRE:
             self.gun.fire(self.tick, self.r, self.x, 0, self.face, FLY_SHOT)
 
-    def fly_sprites(self, out: list) -> list:
-        cam, w = self.camera, self.params.world
-        out += [(s.r, cam.screen(s.c % w), FLY_SHOT) for s in self.gun.shots if s.c != self.x]
-        out.append((self.r, cam.screen(self.x), RIGHT_ME if self.face > 0 else LEFT_ME))
-        return out
+    def fly_draw(self, rows: list[str]) -> list[str]:
+        """Draw the shots (bar one still on your cell) and the ship on ``rows``, through
+        ``self.camera`` (moved to follow you by the caller)."""
+        left, w, x = self.camera.left, self.params.world, self.x
+        stamp(rows, [s for s in self.gun.shots if s.c != x], FLY_SHOT, left, w)
+        c = (x - left) % w
+        if c < len(rows[0]):
+            rows[self.r] = put_one(rows[self.r], c, RIGHT_ME if self.face > 0 else LEFT_ME)
+        return rows
 
 
 def banks_fit(p) -> None:
