@@ -11,7 +11,7 @@ from dataclasses import dataclass
 from ...core.params import param, require
 from .bodies import Body, chase
 from .engine import EMPTY, ArcadeParams, ArcadeTask, register_arcade
-from .scroller import FLY_ACTIONS, FLY_SHOT, GROUND, LEFT_ME, RIGHT_ME, Flyer, fly_shots, stamp
+from .scroller import FLY_ACTIONS, FLY_SHOT, GROUND, LEFT_ME, RIGHT_ME, Flyer, fly_shots
 
 ENEMY, TRUCK = "X", "T"
 
@@ -64,6 +64,7 @@ class ChopperCommand(Flyer, ArcadeTask):
         self.trucks = [gap // 2 + k * gap for k in range(p.trucks)]
         self.enemies: list[Body] = []
         self.level, self.left_in_wave, self.to_launch = 0, p.wave, p.wave
+        self._ground_key = self._ground = None
 
     def _shot_hits(self, r: int, c: int) -> bool:
         c %= self.params.world
@@ -148,13 +149,21 @@ class ChopperCommand(Flyer, ArcadeTask):
         cam = self.camera
         cam.follow(self.x)
         left, w, rows = cam.left, self.params.world, self.still[:]
-        ground, view = rows[-1], len(rows[-1])
-        for t in self.trucks:
-            c = (t - left) % w
+        view = len(rows[0])
+        key = (left, *self.trucks)
+        if key != self._ground_key:            # the trucks seldom move: their row is kept
+            ground = rows[-1]
+            for t in self.trucks:
+                c = (t - left) % w
+                if c < view:
+                    ground = ground[:c] + TRUCK + ground[c + 1:]
+            self._ground_key, self._ground = key, ground
+        rows[-1] = self._ground
+        for e in self.enemies:                 # (enemies fly between the top and the ground)
+            c = (e.c - left) % w
             if c < view:
-                ground = ground[:c] + TRUCK + ground[c + 1:]
-        rows[-1] = ground
-        stamp(rows, self.enemies, ENEMY, left, w)
+                line = rows[e.r]
+                rows[e.r] = line[:c] + ENEMY + line[c + 1:]
         return self.fly_draw(rows)
 
 

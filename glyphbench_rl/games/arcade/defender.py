@@ -11,7 +11,7 @@ from dataclasses import dataclass
 from ...core.params import param, require
 from .bodies import Body, chase
 from .engine import EMPTY, ArcadeParams, ArcadeTask, register_arcade
-from .scroller import FLY_ACTIONS, FLY_SHOT, FLY_UP, GROUND, LEFT_ME, RIGHT_ME, Flyer, fly_shots, stamp
+from .scroller import FLY_ACTIONS, FLY_SHOT, FLY_UP, GROUND, LEFT_ME, RIGHT_ME, Flyer, fly_shots
 
 LANDER, HUMAN = "L", "h"
 STAND, GRABBED, FALL, RIDE = range(4)
@@ -167,8 +167,18 @@ class Defender(Flyer, ArcadeTask):
         cam = self.camera
         cam.follow(self.x)
         left, w, rows = cam.left, self.params.world, self.still[:]
-        stamp(rows, [m for m in self.people if m.data != RIDE], HUMAN, left, w)
-        stamp(rows, self.landers, LANDER, left, w)
+        view = len(rows[0])
+        for m in self.people:                  # (all of it in the air or on the ground)
+            if m.data != RIDE:
+                c = (m.c - left) % w
+                if c < view:
+                    line = rows[m.r]
+                    rows[m.r] = line[:c] + HUMAN + line[c + 1:]
+        for lander in self.landers:
+            c = (lander.c - left) % w
+            if c < view:
+                line = rows[lander.r]
+                rows[lander.r] = line[:c] + LANDER + line[c + 1:]
         return self.fly_draw(rows)
 
     def _extra_hud(self) -> str:

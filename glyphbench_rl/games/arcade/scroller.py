@@ -227,12 +227,18 @@ class Flyer:
 
     def fly_draw(self, rows: list[str]) -> list[str]:
         """Draw the shots (bar one still on your cell) and the ship on ``rows``, through
-        ``self.camera`` (moved to follow you by the caller)."""
-        left, w, x = self.camera.left, self.params.world, self.x
-        stamp(rows, [s for s in self.gun.shots if s.c != x], FLY_SHOT, left, w)
+        ``self.camera`` (moved to follow you by the caller); all fly inside the rows."""
+        left, w, x, view = self.camera.left, self.params.world, self.x, len(rows[0])
+        for s in self.gun.shots:
+            if s.c != x:
+                c = (s.c - left) % w
+                if c < view:
+                    line = rows[s.r]
+                    rows[s.r] = line[:c] + FLY_SHOT + line[c + 1:]
         c = (x - left) % w
-        if c < len(rows[0]):
-            rows[self.r] = put_one(rows[self.r], c, RIGHT_ME if self.face > 0 else LEFT_ME)
+        if c < view:
+            line = rows[self.r]
+            rows[self.r] = line[:c] + (RIGHT_ME if self.face > 0 else LEFT_ME) + line[c + 1:]
         return rows
 
 
