@@ -103,7 +103,7 @@ class ChopperCommand(Flyer, ArcadeTask):
         target, near = 0, w
         for t in self.trucks:
             d = (t - c) % w
-            d = min(d, w - d) if d else 0
+            d = w - d if d + d > w else d
             if d < near:
                 target, near = t, d
         dx = (target - c) % w

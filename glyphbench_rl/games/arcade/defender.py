@@ -141,7 +141,7 @@ class Defender(Flyer, ArcadeTask):
             for m in self.people:
                 if m.data == STAND:
                     d = (m.c - c) % w
-                    d = min(d, w - d) if d else 0
+                    d = w - d if d + d > w else d
                     if d < near:
                         target, near = m, d
             if target is None:

@@ -70,13 +70,14 @@ class Channel:
     spans columns ``left..right``; ``next(draws)`` lets each bank wander by at most one column
     (with probability ``wander``) while the span stays within [narrow, wide] cells and a
     one-cell bank remains on each side."""
-    __slots__ = ("width", "narrow", "wide", "wander", "left", "right")
+    __slots__ = ("width", "narrow", "wide", "wander", "left", "right", "texts")
 
     def __init__(self, width: int, narrow: int, wide: int, wander: float = 0.3) -> None:
         self.width, self.narrow, self.wide, self.wander = width, narrow, min(wide, width - 2), wander
         span = self.wide
         self.left = (width - span) // 2
         self.right = self.left + span - 1
+        self.texts: dict = {}             # (bank, water, left, right) -> the line's text
 
     def next(self, draws) -> tuple[int, int]:
         if self.narrow < self.wide and draws.random() < self.wander:
@@ -98,8 +99,14 @@ class Channel:
         return left, right, self.line(bank)
 
     def line(self, bank: str, water: str = EMPTY) -> str:
-        """This line as text: banks outside the span, water inside."""
-        return bank * self.left + water * (self.right - self.left + 1) + bank * (self.width - 1 - self.right)
+        """This line as text: banks outside the span, water inside (made once per span)."""
+        key = (bank, water, self.left, self.right)
+        text = self.texts.get(key)
+        if text is None:
+            left, right = self.left, self.right
+            text = self.texts[key] = (bank * left + water * (right - left + 1)
+                                      + bank * (self.width - 1 - right))
+        return text
 
 
 class Pacer:
