@@ -146,10 +146,7 @@ class ChopperCommand(Flyer, ArcadeTask):
         return False
 
     def _grid(self) -> list[str]:
-        cam = self.camera
-        cam.follow(self.x)
-        left, w, rows = cam.left, self.params.world, self.still[:]
-        view = len(rows[0])
+        rows, left, w, view = self.fly_view()
         key = (left, *self.trucks)
         if key != self._ground_key:            # the trucks seldom move: their row is kept
             ground = rows[-1]

@@ -164,10 +164,7 @@ class Defender(Flyer, ArcadeTask):
         return False
 
     def _grid(self) -> list[str]:
-        cam = self.camera
-        cam.follow(self.x)
-        left, w, rows = cam.left, self.params.world, self.still[:]
-        view = len(rows[0])
+        rows, left, w, view = self.fly_view()
         for m in self.people:                  # (all of it in the air or on the ground)
             if m.data != RIDE:
                 c = (m.c - left) % w

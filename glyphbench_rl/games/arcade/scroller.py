@@ -48,6 +48,14 @@ class Strip:
         self.rows = [row[1:] + ch for row, ch in zip(rows, line)]
         return gone
 
+    def push(self, line: str) -> None:
+        """``scroll`` for a caller that does not need what left (sideways, that is a cost)."""
+        if self.axis == "left":
+            self.shifts += 1
+            self.rows = [row[1:] + ch for row, ch in zip(self.rows, line)]
+        else:
+            self.scroll(line)
+
     def preroll(self, n: int, make) -> None:
         """Scroll ``n`` fresh lines in before play starts (what leaves is not counted)."""
         for _ in range(n):
@@ -231,6 +239,13 @@ class Flyer:
         self.x = (self.x + dc) % self.params.world
         if action == FLY_FIRE:
             self.gun.fire(self.tick, self.r, self.x, 0, self.face, FLY_SHOT)
+
+    def fly_view(self) -> tuple[list[str], int, int, int]:
+        """The camera follows you; then the still rows to draw on (a copy), the view's first
+        world column, the world's width and the view's width."""
+        cam = self.camera
+        cam.follow(self.x)
+        return self.still[:], cam.left, self.params.world, cam.view
 
     def fly_draw(self, rows: list[str]) -> list[str]:
         """Draw the shots (bar one still on your cell) and the ship on ``rows``, through

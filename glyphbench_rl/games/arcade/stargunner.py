@@ -11,7 +11,7 @@ from ...core.actions import ActionSet
 from ...core.params import param, require
 from .bodies import Body, Gun
 from .engine import EMPTY, ArcadeParams, ArcadeTask, register_arcade
-from .scroller import Pacer, Strip, fly_shots, put_one, stamp
+from .scroller import Pacer, Strip, put_one, stamp
 
 SHIP, ENEMY, SHOT, BOLT, STAR = ">", "E", "-", "~", "*"
 ACTIONS = ActionSet([("NOOP", "hold position"), ("UP", "move one row up"), ("DOWN", "move one row down"),
@@ -72,7 +72,7 @@ class Stargunner(ArcadeTask):
         self.spawner, self.star_cols = Pacer(p.spawn), []
         if p.stars:
             for _ in range(p.width):
-                self.strip.scroll(self._stars())
+                self.strip.push(self._stars())
 
     def _stars(self) -> str:
         """The next backdrop column: one of a few made at the start (cheap per turn)."""
@@ -93,7 +93,7 @@ class Stargunner(ArcadeTask):
         if self._struck():
             return
         if p.stars and self.tick % 2 == 0:
-            self.strip.scroll(self._stars())
+            self.strip.push(self._stars())
         if self.tick % p.pace == 0:
             rand, weave, fire, low = self.draws.random, p.weave, p.fire, p.height - 1
             for e in self.enemies:
@@ -122,11 +122,8 @@ class Stargunner(ArcadeTask):
 
     def _struck(self) -> bool:
         """Shots against enemies (they move first), then anything touching the ship."""
-        if self.gun.shots:
-            self.spots = {(e.r, e.c) for e in self.enemies}   # where a shot stops
-            fly_shots(self.gun, self._shot_hits, self._shot_down)
-            if self.done:
-                return True
+        if self.gun.shots and self._fly():
+            return True
         r, c = self.r, self.col
         for e in self.enemies:
             if e.c == c and e.r == r:
@@ -140,18 +137,35 @@ class Stargunner(ArcadeTask):
         self.lose_life("You were hit!")
         return True
 
-    def _shot_hits(self, r: int, c: int) -> bool:
-        return c >= self.params.width or (r, c) in self.spots
-
-    def _shot_down(self, r: int, c: int) -> bool:
-        """A shot stopped at (r, c): the enemies there are down (none at the edge); True when
-        that won the game."""
-        if c < self.params.width:
-            self.enemies = [e for e in self.enemies if e.r != r or e.c != c]
-            self.spots.discard((r, c))
-            self.score.gain()
-            self.say("Enemy down!")
-        return self.done
+    def _fly(self) -> bool:
+        """Your shots fly right two cells, cell by cell (``fly_shots`` with the hit test
+        written into the loop); True when one won the game (the shots are left as they are)."""
+        width, kept = self.params.width, []
+        spots = {(e.r, e.c) for e in self.enemies}     # where a shot stops
+        for shot in self.gun.shots:
+            r, c = shot.r, shot.c
+            stop = 0                                    # (shots fly right of column 0)
+            for at in (c + 1, c + 2):
+                if at >= width or (r, at) in spots:
+                    stop = at
+                    break
+                shot.c = at
+            shot.data -= 2
+            if stop:
+                shot.alive = False
+                if stop < width:
+                    self.enemies = [e for e in self.enemies if e.r != r or e.c != stop]
+                    spots.discard((r, stop))
+                    self.score.gain()
+                    self.say("Enemy down!")
+                    if self.done:
+                        return True
+            elif shot.data <= 0:
+                shot.alive = False
+            else:
+                kept.append(shot)
+        self.gun.shots = kept
+        return False
 
     def _respawn(self) -> None:
         self.enemies = [e for e in self.enemies if e.c > self.params.width // 2]
