@@ -70,6 +70,7 @@ class Stargunner(ArcadeTask):
         self.gun = Gun(cooldown=1, speed=2, reach=p.width, limit=2)
         self.bolts: list[Body] = []
         self.spawner, self.star_cols = Pacer(p.spawn), []
+        self.moves, self.layer_at, self.layer = 0, -1, []    # moves: stars or enemies changed
         if p.stars:
             for _ in range(p.width):
                 self.strip.push(self._stars())
@@ -94,7 +95,9 @@ class Stargunner(ArcadeTask):
             return
         if p.stars and self.tick % 2 == 0:
             self.strip.push(self._stars())
+            self.moves += 1
         if self.tick % p.pace == 0:
+            self.moves += 1
             rand, weave, fire, low = self.draws.random, p.weave, p.fire, p.height - 1
             for e in self.enemies:
                 e.c -= 1
@@ -112,6 +115,7 @@ class Stargunner(ArcadeTask):
             self.bolts = kept
         if self.spawner.due(self.tick):
             self.enemies.append(Body(self.draws.below(p.height), p.width - 1, glyph=ENEMY))
+            self.moves += 1
         if self._struck():
             return
         col = self.col
@@ -155,6 +159,7 @@ class Stargunner(ArcadeTask):
                 shot.alive = False
                 if stop < width:
                     self.enemies = [e for e in self.enemies if e.r != r or e.c != stop]
+                    self.moves += 1
                     spots.discard((r, stop))
                     self.score.gain()
                     self.say("Enemy down!")
@@ -169,11 +174,15 @@ class Stargunner(ArcadeTask):
 
     def _respawn(self) -> None:
         self.enemies = [e for e in self.enemies if e.c > self.params.width // 2]
+        self.moves += 1
         self.bolts, self.gun.shots = [], []
 
     def _grid(self) -> list[str]:
-        rows = self.strip.rows[:]
-        stamp(rows, self.enemies, ENEMY)
+        if self.layer_at != self.moves:       # stars and enemies: redrawn only when they moved
+            self.layer = self.strip.rows[:]
+            stamp(self.layer, self.enemies, ENEMY)
+            self.layer_at = self.moves
+        rows = self.layer[:]
         stamp(rows, self.bolts, BOLT)
         stamp(rows, self.gun.shots, SHOT)
         rows[self.r] = put_one(rows[self.r], self.col, SHIP)
