@@ -166,16 +166,13 @@ def fly_shots(gun: Gun, hit, strike) -> None:
     gun.shots = kept
 
 
-def stamp(rows: list[str], things, glyph: str, left: int = 0, world: int = 0) -> None:
-    """Draw ``glyph`` on ``rows`` at each thing's (``.r``, ``.c``), skipping cells off the rows;
-    with a ``world`` width, ``.c`` is a world column seen through a view starting at world
-    column ``left`` (``Camera.screen``). Cheaper than a (row, col, glyph) per mover."""
+def stamp(rows: list[str], things, glyph: str) -> None:
+    """Draw ``glyph`` on ``rows`` at each thing's (``.r``, ``.c``), skipping cells off the rows
+    (cheaper than a (row, col, glyph) per mover through ``_sprites``)."""
     h, w = len(rows), len(rows[0])
     for t in things:
         r, c = t.r, t.c
-        if world:
-            c = (c - left) % world
-        if 0 <= r < h and 0 <= c < w:
+        if 0 <= c < w and 0 <= r < h:
             line = rows[r]
             rows[r] = line[:c] + glyph + line[c + 1:]
 
