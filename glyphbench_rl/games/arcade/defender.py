@@ -165,7 +165,7 @@ class Defender(Flyer, ArcadeTask):
 
     def _grid(self) -> list[str]:
         rows, left, w, view = self.fly_view()
-        for m in self.people:                  # (all of it in the air or on the ground)
+        for m in self.people:                  # (humans and landers keep to the rows)
             if m.data != RIDE:
                 c = (m.c - left) % w
                 if c < view:

@@ -27,7 +27,8 @@ class Strip:
     """The window on a scrolling world: ``rows`` of equal width. ``scroll(line)`` moves the world
     one cell: "down" inserts ``line`` (a row) at the top and drops the bottom row, "up" appends
     it at the bottom and drops the top row, "left" appends ``line`` (one char per row, a string)
-    at the right edge and drops the left column. It returns what left the window."""
+    at the right edge and drops the left column. It returns what left the window; ``push(line)``
+    is the same move for a caller that does not need that."""
     __slots__ = ("rows", "axis", "shifts")
 
     def __init__(self, rows: list[str], axis: str = "down") -> None:
@@ -138,8 +139,8 @@ def put_one(line: str, c: int, ch: str) -> str:
 
 
 def fly_shots(gun: Gun, hit, strike) -> None:
-    """``gun.advance(hit)`` for shots moving one cell a step on each axis they move along (the
-    usual shot), without a generator: each shot steps cell by cell, ``speed`` cells, and stops
+    """``gun.advance(hit)`` for shots that move, at most one cell a step on each axis (every
+    shot here), without a generator: each shot steps cell by cell, ``speed`` cells, and stops
     at the first cell where ``hit(r, c)`` is true; ``strike(r, c)`` then hears of it at once (as
     a caller looping over ``advance`` would) and returns True to stop the volley (the episode
     ended: like a caller leaving the loop, the gun keeps its shots as they stand)."""
@@ -209,8 +210,9 @@ class Flyer:
     """Mixin for an ``ArcadeTask`` whose ship flies over a ground row on a wrapping world the
     view follows (Chopper Command, Defender): its Params have ``world`` and ``reach``; it faces
     the way it last moved and FIRE (``FLY_ACTIONS``) shoots that way. ``fly_start(r)`` in
-    ``_setup``; ``fly(action, lowest)`` moves and fires; ``fly_draw(rows)`` draws the shots and
-    the ship on the rows, through ``self.camera``."""
+    ``_setup``; ``fly(action, lowest)`` moves and fires; in ``_grid``, ``fly_view()`` moves the
+    camera and gives the rows to draw on, ``fly_draw(rows)`` draws the shots and the ship (a world
+    column x is at view column ``(x - left) % world``, as ``Camera.screen`` has it)."""
 
     def fly_fields(self) -> dict:
         p = self.params
