@@ -97,11 +97,11 @@ class UpNDown(ArcadeTask):
         if scroll:
             self.strip.scroll(self._line())
         drive = self.tick % p.car_every == 0
-        step, gone = scroll + drive, False
+        step, gone, h = scroll + drive, False, p.height
         if step:
             for car in self.cars:
                 car.data, car.r = car.r, car.r + step
-                gone = gone or car.r >= p.height
+                gone = gone or car.r >= h
         else:
             for car in self.cars:
                 car.data = car.r
