@@ -201,10 +201,9 @@ class Zaxxon(ArcadeTask):
 
     def _respawn(self) -> None:
         self.flak.shots, self.gun.shots = [], []
-        for c in range(self.col + 4):                  # a clear stretch to come back into
-            for r in range(self.params.height):
-                if self.strip.get(r, c) in (TURRET, FUEL, WALL):
-                    self.strip.put(r, c, EMPTY)
+        rows, k = self.strip.rows, self.col + 4       # a clear stretch to come back into
+        for r, row in enumerate(rows):
+            rows[r] = row[:k].replace(TURRET, EMPTY).replace(FUEL, EMPTY).replace(WALL, EMPTY) + row[k:]
         self.fuel.refill()
 
     def _grid(self) -> list[str]:
