@@ -55,8 +55,8 @@ class Enduro(ArcadeTask):
         wreck = f" and costs a life ({p.lives} in all)" if p.wreck else ""
         return {**super().prompt_fields(), "lane_cols": ", ".join(str(c) for c in self._cols()),
                 "top1": p.top + 1, "wreck_text": wreck,
-                "ends_text": ("," if p.wreck and p.day else "") + (" or have no lives left" if p.wreck else "")
-                + (f" or at nightfall, after {p.day} turns (lost if the cars are not passed)" if p.day else "")}
+                "ends_text": (", or you have no lives left" if p.wreck else "")
+                + (f", or night falls after {p.day} turns (lost unless the cars are passed)" if p.day else "")}
 
     def _cols(self) -> list[int]:
         return [2 + 3 * k for k in range(self.params.lanes)]
