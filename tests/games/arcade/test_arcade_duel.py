@@ -368,6 +368,20 @@ def test_bowling_ball_knocks_what_it_meets_and_frames_reset_the_rack():
     assert env.frame_no == 2 and len(env.pins) == 10 and env.roll == 0
 
 
+def test_bowling_curve_ball_takes_one_hook_then_drifts():
+    env = make("glyphbench/miniatari-bowling-v0")
+    env.reset(seed=0)
+    env.pins.clear()                                  # an empty lane: nothing stops the ball
+    env.step(3)
+    env.step(0)
+    col = env.ball[1]
+    assert env.drift == 0 and col == env.col          # rolling straight
+    env.step(2)                                       # the hook: right, for the rest of the roll
+    env.step(1)                                       # a second hook does nothing
+    env.step(0)
+    assert env.drift == 1 and env.ball[1] == col + 3 and "curving right" in env.frame.hud
+
+
 # -- double dunk -----------------------------------------------------------------------------------
 def dunker(env):
     """On offence drive round the defender to the hoop and shoot close in when nobody is beside
