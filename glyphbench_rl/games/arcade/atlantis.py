@@ -2,8 +2,7 @@
 sky one cell a turn, dropping a row lower at each edge; one that gets down to the city wrecks
 it (the Atari preset's city has several buildings, H, each a life). The left turret shoots up
 and to the right, the centre one straight up, the right one up and to the left.
-Balance: Atari raiders drop 5 rows a pass, as the Gorgons' few altitude lanes (a row a pass gave
-a random gunner hundreds of turns a raider, so it downed them all); the city has 4 buildings."""
+Balance: Atari raiders drop 5 rows a pass (the few altitude lanes) on 4 buildings, not 1 row on 6."""
 
 from __future__ import annotations
 

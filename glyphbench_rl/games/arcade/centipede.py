@@ -3,8 +3,7 @@ it meets an edge or a mushroom (#); a shot segment leaves a mushroom and splits 
 (the segment behind becomes a head). You move in a zone of bottom rows and shoot up. On the
 Atari preset a spider (X) zigzags through your zone, mushrooms score when shot down, and the
 centipede climbs back up from the bottom.
-Balance: shots at will, more mushrooms and two centipedes to clear (mini), and on the Atari only
-segments and spiders score (a random gun was paid for the mushrooms it could not miss)."""
+Balance: mini: free fire, 12 mushrooms, two centipedes to clear; Atari: mushrooms no longer score."""
 
 from __future__ import annotations
 

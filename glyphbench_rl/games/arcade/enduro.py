@@ -3,7 +3,7 @@ ride with the road; change lanes to overtake them (a car that drops behind you c
 collision stops your car (speed 0); on the MiniAtari preset it also costs one of a few lives
 (pattern A: credit per overtake, no penalty). As on the Atari, the day is a clock: at nightfall
 the race is over, lost unless the cars are passed.
-Balance: the day clock (without it a random driver, never out of time, passed every car)."""
+Balance: the day clock (without one a random driver, never out of time, passed every car)."""
 
 from __future__ import annotations
 
