@@ -281,28 +281,9 @@ def test_centipede_shot_segment_becomes_a_mushroom_and_splits_the_body():
     assert env.pack.bodies[1].r == 6
 
 
-def sniper(env) -> int:
-    """Try every column: walk there and fire, played out on a copy of the game until the shot
-    scores; keep the plan that scores soonest without losing a life (then the nearest)."""
-    best, pick = None, NOOP
-    for x in range(env.params.width):
-        sim = copy.deepcopy(env)
-        lives, got, first = sim.lives, sim.score.done, None
-        for t in range(env.params.height + abs(x - env.col)):
-            a = FIRE if sim.col == x else (LEFT if x < sim.col else RIGHT)
-            first = a if first is None else first
-            sim.step(a)
-            if sim.done or sim.lives < lives or sim.score.done > got:
-                break
-        value = (sim.lives >= lives and sim.won is not False, sim.score.done > got, -t, -abs(x - env.col))
-        if best is None or value > best:
-            best, pick = value, first
-    return pick
-
-
 @pytest.mark.parametrize("seed", SEEDS)
 def test_centipede_mini_win_by_shooting_every_segment(seed):
-    env, info = play("glyphbench/miniatari-centipede-v0", sniper, seed)
+    env, info = play("glyphbench/miniatari-centipede-v0", lookahead(gunner), seed)
     assert info["won"] is True and env.episode_return == pytest.approx(1.0)
 
 
