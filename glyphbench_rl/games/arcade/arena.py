@@ -59,6 +59,7 @@ class ArenaTask(ArcadeTask):
     FOE: ClassVar[str] = "X"
     arrows: ClassVar[bool] = True         # draw the player as the arrow it faces (else SHIP)
     drift: ClassVar[bool] = False         # foes keep their own velocity instead of chasing
+    _own_movers: ClassVar[bool] = False   # set per game class: it draws movers of its own
 
     def prompt_fields(self) -> dict:
         p = self.params
@@ -82,7 +83,19 @@ class ArenaTask(ArcadeTask):
         self.kills = 0
 
     def free(self, r: int, c: int) -> bool:
-        return self.still[r][c] not in self.SOLID and not any(f.r == r and f.c == c for f in self.foes)
+        if self.still[r][c] in self.SOLID:
+            return False
+        for f in self.foes:           # (a plain loop: a generator costs more than a few foes)
+            if f.r == r and f.c == c:
+                return False
+        return True
+
+    def foe_at(self, r: int, c: int) -> Body | None:
+        """The first foe on (r, c), or None."""
+        for f in self.foes:
+            if f.r == r and f.c == c:
+                return f
+        return None
 
     def spot(self, far: int = 4, rows: range | None = None, cols: range | None = None) -> tuple[int, int]:
         """A random free cell at least ``far`` steps (row plus column) from the player."""
@@ -112,13 +125,14 @@ class ArenaTask(ArcadeTask):
             if 0 <= r < p.height and 0 <= c < p.width:
                 if self._enter(r, c) or self.done:
                     return
-                if self.still[r][c] not in self.SOLID and not any(f.r == r and f.c == c for f in self.foes):
+                if self.free(r, c):
                     self.r, self.c = r, c
         if action == FIRE:
             self.gun.fire(self.tick, self.r, self.c, *self.face, SHOT)
-        self._shots()
-        if self.done:
-            return
+        if self.gun.shots:
+            self._shots()
+            if self.done:
+                return
         if self.tick % p.every == 0 and self._march():
             return
         if p.volley and self._volley():
@@ -136,59 +150,107 @@ class ArenaTask(ArcadeTask):
         return (r % p.height, c % p.width) if p.wrap else (r, c)
 
     def _struck(self, r: int, c: int) -> bool:
+        """What stops your shot: the field's edge (unless it wraps), a solid cell, a foe."""
         p = self.params
         if p.wrap:
             r, c = r % p.height, c % p.width
         elif not (0 <= r < p.height and 0 <= c < p.width):
             return True
-        return self.still[r][c] in self.SOLID or any(f.r == r and f.c == c for f in self.foes)
+        return not self.free(r, c)
 
     def _shots(self) -> None:
-        if not self.gun.shots:
-            return
-        for shot, cell in self.gun.advance(self._struck):
-            if cell is None:
-                continue
-            r, c = self._where(*cell)
-            foe = next((f for f in self.foes if f.r == r and f.c == c), None)
-            if foe is not None:
-                self._hit(foe)
+        """Your shots fly ``shot_speed`` cells, a cell at a time, and stop on what ``_struck``
+        stops (the gun's ``advance`` written out: shots fly along a unit step, and this runs on
+        most ticks, where a generator and a hit callback per cell cost more than the flight)."""
+        gun, p = self.gun, self.params
+        speed, struck, kept = gun.speed, self._struck, []
+        h, w, still, solid = p.height, p.width, self.still, self.SOLID
+        for shot in gun.shots:
+            cell = None
+            dr, dc = shot.dr, shot.dc
+            if dr or dc:
+                r, c = shot.r, shot.c
+                for _ in range(speed):
+                    r += dr
+                    c += dc
+                    if p.wrap:
+                        if struck(r, c):
+                            cell = r, c
+                            break
+                    elif not (0 <= r < h and 0 <= c < w) or still[r][c] in solid or self.foe_at(r, c):
+                        cell = r, c                        # (``_struck`` on a field that ends)
+                        break
+                    shot.r, shot.c = r, c
+            shot.data -= speed
+            if cell is not None:
+                shot.alive = False
+                r, c = self._where(*cell)
+                foe = self.foe_at(r, c)
+                if foe is not None:
+                    self._hit(foe)
+                else:
+                    self._wall_hit(r, c)
+            elif shot.data <= 0:
+                shot.alive = False
             else:
-                self._wall_hit(r, c)
+                kept.append(shot)
+        gun.shots = kept
         if self.params.wrap:
-            for s in self.gun.shots:
-                s.r, s.c = self._where(s.r, s.c)
+            p = self.params
+            for s in kept:
+                s.r, s.c = s.r % p.height, s.c % p.width
 
     def _march(self) -> bool:
         """Every foe takes a step; True when one caught the player and the game is over."""
         p = self.params
-        for foe in self.foes:
-            if self.drift:
-                r, c = self._where(foe.r + foe.dr, foe.c + foe.dc)
-                if not (0 <= r < p.height and 0 <= c < p.width) or self.still[r][c] in self.SOLID:
+        h, w = p.height, p.width
+        still, solid, foes = self.still, self.SOLID, self.foes
+        if self.drift:
+            for foe in foes:
+                r, c = foe.r + foe.dr, foe.c + foe.dc
+                if p.wrap:
+                    r, c = r % h, c % w
+                if not (0 <= r < h and 0 <= c < w) or still[r][c] in solid:
                     foe.dr, foe.dc = -foe.dr, -foe.dc
-                    continue
-                foe.r, foe.c = r, c
-                continue
-            dr, dc = chase(foe.r, foe.c, self.r, self.c)
-            if not (dr or dc):
-                continue
-            if dr:       # blocked on the long axis: slide the way it slid before, else toward you
-                s = foe.dc or (self.c > foe.c) - (self.c < foe.c) or 1
-                steps = ((dr, 0), (0, s), (0, -s))
-            else:
-                s = foe.dr or (self.r > foe.r) - (self.r < foe.r) or 1
-                steps = ((0, dc), (s, 0), (-s, 0))
-            for k, (sr, sc) in enumerate(steps):
-                r, c = foe.r + sr, foe.c + sc
-                if (r, c) == (self.r, self.c) or (0 <= r < p.height and 0 <= c < p.width and self.free(r, c)):
+                else:
                     foe.r, foe.c = r, c
-                    foe.dr, foe.dc = (sr, sc) if k else (0, 0)
+            return self._caught()
+        pr, pc = self.r, self.c
+        at = [f.r * w + f.c for f in foes]      # where the foes stand (inside the field: one key a cell)
+        for i, foe in enumerate(foes):
+            fr, fc = foe.r, foe.c
+            dr, dc = pr - fr, pc - fc
+            if dr and (dr if dr > 0 else -dr) >= (dc if dc > 0 else -dc):
+                r, c = fr + (1 if dr > 0 else -1), fc          # the long axis first
+            elif dc:
+                r, c = fr, fc + (1 if dc > 0 else -1)
+            else:
+                continue
+            if (r == pr and c == pc) or (0 <= r < h and 0 <= c < w and still[r][c] not in solid
+                                         and r * w + c not in at):
+                foe.r, foe.c, foe.dr, foe.dc = r, c, 0, 0
+                at[i] = r * w + c
+                continue
+            # blocked on the long axis: slide the way it slid before, else toward you
+            if r != fr:
+                s = foe.dc or (dc > 0) - (dc < 0) or 1
+                steps = ((0, s), (0, -s))
+            else:
+                s = foe.dr or (dr > 0) - (dr < 0) or 1
+                steps = ((s, 0), (-s, 0))
+            for sr, sc in steps:
+                r, c = fr + sr, fc + sc
+                if (r == pr and c == pc) or (0 <= r < h and 0 <= c < w and still[r][c] not in solid
+                                             and r * w + c not in at):
+                    foe.r, foe.c, foe.dr, foe.dc = r, c, sr, sc
+                    at[i] = r * w + c
                     break
-        return self._caught()
+        if pr * w + pc in at:
+            return self._killed(self.caught_text)
+        return False
 
     def _caught(self) -> bool:
-        if any(f.r == self.r and f.c == self.c for f in self.foes):
+        if self.foe_at(self.r, self.c) is not None:
             return self._killed(self.caught_text)
         return False
 
@@ -198,20 +260,37 @@ class ArenaTask(ArcadeTask):
         return self.lose_life(why)
 
     def _volley(self) -> bool:
-        if not self.shells.shots and self.tick < self.shells.ready:
+        shells, tick = self.shells, self.tick
+        if not shells.shots and tick < shells.ready:
             return False
-        if self.shells.ready_at(self.tick):
+        pr, pc = self.r, self.c
+        if shells.ready_at(tick):
             for foe in self.foes:
-                if foe.r == self.r or foe.c == self.c:
-                    dr, dc = chase(foe.r, foe.c, self.r, self.c)
-                    self.shells.fire(self.tick, foe.r, foe.c, dr, dc, SHELL)
+                if foe.r == pr or foe.c == pc:
+                    dr, dc = chase(foe.r, foe.c, pr, pc)
+                    shells.fire(tick, foe.r, foe.c, dr, dc, SHELL)
                     break
-        me = (self.r, self.c)
-        for shell, cell in self.shells.advance(
-                lambda r, c: not (0 <= r < self.params.height and 0 <= c < self.params.width)
-                or self.still[r][c] in self.SOLID or (r, c) == me):
-            if cell == me:
-                return self._killed("A shell hit you.")
+        # the shells' advance written out: a cell a turn along a unit step (see ``_shots``)
+        p = self.params
+        h, w, still, solid, kept = p.height, p.width, self.still, self.SOLID, []
+        for shell in shells.shots:
+            hit = False
+            if shell.dr or shell.dc:
+                r, c = shell.r + shell.dr, shell.c + shell.dc
+                if r == pr and c == pc:
+                    shell.data -= 1
+                    shell.alive = False
+                    return self._killed("A shell hit you.")   # (the rest fly on next turn)
+                if not (0 <= r < h and 0 <= c < w) or still[r][c] in solid:
+                    hit = True
+                else:
+                    shell.r, shell.c = r, c
+            shell.data -= 1
+            if hit or shell.data <= 0:
+                shell.alive = False
+            else:
+                kept.append(shell)
+        shells.shots = kept
         return False
 
     # -- hooks ---------------------------------------------------------------------------------------
@@ -258,12 +337,60 @@ class ArenaTask(ArcadeTask):
             self.air.refill()
 
     # -- drawing -------------------------------------------------------------------------------------
+    def __init_subclass__(cls, **kwargs) -> None:
+        super().__init_subclass__(**kwargs)
+        # whether the game draws movers of its own: else ``_grid`` skips asking (most turns of
+        # most games, where two empty calls cost a tenth of the drawing)
+        cls._own_movers = cls._below is not ArenaTask._below or cls._above is not ArenaTask._above
+
+    def _below(self):
+        """Movers of the game's own drawn under the foes: (row, col, glyph) each."""
+        return ()
+
+    def _above(self):
+        """Movers of the game's own drawn over everything."""
+        return ()
+
+    def _you(self) -> str:
+        return ARROWS.get(self.face, SHIP) if self.arrows else SHIP
+
     def _sprites(self):
-        out = [(f.r, f.c, f.glyph) for f in self.foes]
+        out = [*self._below(), *((f.r, f.c, f.glyph) for f in self.foes)]
         out += [(s.r, s.c, SHOT) for s in self.gun.shots]
         out += [(s.r, s.c, SHELL) for s in self.shells.shots]
-        out.append((self.r, self.c, ARROWS.get(self.face, SHIP) if self.arrows else SHIP))
+        out.append((self.r, self.c, self._you()))
+        out += self._above()
         return out
+
+    def _grid(self) -> list[str]:
+        """``_sprites()`` drawn on ``_rows()`` straight from the bodies: no (row, col, glyph)
+        tuple per mover (that cost as much as the drawing) and no bounds test (every mover of an
+        arena stays inside the field)."""
+        rows = self._rows()
+        if self._own_movers:
+            for r, c, g in self._below():
+                line = rows[r]
+                rows[r] = line[:c] + g + line[c + 1:]
+        for f in self.foes:
+            r, c = f.r, f.c
+            line = rows[r]
+            rows[r] = line[:c] + f.glyph + line[c + 1:]
+        for s in self.gun.shots:
+            r, c = s.r, s.c
+            line = rows[r]
+            rows[r] = line[:c] + SHOT + line[c + 1:]
+        for s in self.shells.shots:
+            r, c = s.r, s.c
+            line = rows[r]
+            rows[r] = line[:c] + SHELL + line[c + 1:]
+        r, c = self.r, self.c
+        line = rows[r]
+        rows[r] = line[:c] + (ARROWS.get(self.face, SHIP) if self.arrows else SHIP) + line[c + 1:]
+        if self._own_movers:
+            for r, c, g in self._above():
+                line = rows[r]
+                rows[r] = line[:c] + g + line[c + 1:]
+        return rows
 
     def _extra_hud(self) -> str:
         return f"{self.air_name} {self.air.left}" if self.air is not None else ""

@@ -12,6 +12,7 @@ from .shooter import BOMB, FIRE, SHOT, Shooter, ShooterParams, march
 
 TURRET, LEADER, WING = "^", "A", "a"
 HEAT = 3                                  # heat a shot adds; a turn takes 1 off
+HEAT_TEXT: dict[tuple[int, int], str] = {}   # the HUD's heat note, made once per value
 
 
 @dataclass(frozen=True)
@@ -73,13 +74,15 @@ class Assault(Shooter):
                 self.hot = 0
                 if self.lose_life("Your turret overheated."):
                     return
-        self.steer(action)
-        self.hot = max(0, self.hot - 1)
+        if action:
+            self.steer(action)
+        if self.hot:
+            self.hot -= 1
         drift, down = self.tick % p.drift == 0, self.tick % p.descend == 0
         if drift or down:
             dx = march(self.pack.bodies, self.dx if drift else 0, 0, p.width - 1, down)
             self.dx = dx if drift else self.dx
-        if self.shoot_down("Attacker down!") is None:
+        if self.gun.shots and self.shoot_down("Attacker down!") is None:
             return
         if not self.pack.bodies:
             self._wave()
@@ -87,12 +90,20 @@ class Assault(Shooter):
             self.lives = 1
             self.lose_life("An attacker reached your row.")
             return
-        self.maybe_drop()
-        if self.rain():
+        if p.bomb_chance:
+            self.maybe_drop()
+        if self.bombs.shots and self.rain():
             self.lose_life("An enemy shot hit you.")
 
     def _extra_hud(self) -> str:
-        return f"Heat {self.hot}/{self.params.heat}" if self.params.heat else ""
+        heat = self.params.heat
+        if not heat:
+            return ""
+        key = (self.hot, heat)
+        text = HEAT_TEXT.get(key)
+        if text is None:
+            text = HEAT_TEXT[key] = f"Heat {self.hot}/{heat}"
+        return text
 
 
 register_arcade(Assault, "assault",

@@ -76,25 +76,39 @@ class Asterix(ArcadeTask):
         self.c = min(p.width - 1, max(0, self.c + dc))
         if self._meet() or self.done:
             return
-        boost = self.score.done // p.faster if p.faster else 0
-        for lane, t in enumerate(self.things):
+        step = 1 + (self.score.done // p.faster if p.faster else 0)
+        things, periods, tick, draw, w = self.things, self.periods, self.tick, self.draws.random, p.width
+        for lane, t in enumerate(things):
             if t is None:
-                if self.draws.random() < p.spawn:
-                    right = self.draws.random() < 0.5
-                    kind = LYRE if self.draws.random() < p.harm else FOOD
-                    self.things[lane] = Body(lane, 0 if right else p.width - 1, 0, 1 if right else -1, kind)
-            elif self.tick % self.periods[lane] == 0:
-                old, t.c = t.c, t.c + t.dc * (1 + boost)
-                if lane == self.r and min(old, t.c) <= self.c <= max(old, t.c):
+                if draw() < p.spawn:
+                    right = draw() < 0.5
+                    kind = LYRE if draw() < p.harm else FOOD
+                    things[lane] = Body(lane, 0 if right else w - 1, 0, 1 if right else -1, kind)
+            elif tick % periods[lane] == 0:
+                old = t.c
+                t.c = new = old + t.dc * step
+                if lane == self.r and (old <= self.c <= new or new <= self.c <= old):
                     t.c = self.c                       # a fast thing cannot skip over you
-                elif not 0 <= t.c < p.width:
-                    self.things[lane] = None
+                elif not 0 <= new < w:
+                    things[lane] = None
         self._meet()
 
     def _sprites(self):
         out = [(t.r, t.c, t.glyph) for t in self.things if t is not None]
         out.append((self.r, self.c, YOU))
         return out
+
+    def _grid(self) -> list[str]:
+        """``_sprites()`` drawn straight from the things (all inside the field)."""
+        rows = self.still[:]
+        for t in self.things:
+            if t is not None:
+                c, line = t.c, rows[t.r]
+                rows[t.r] = line[:c] + t.glyph + line[c + 1:]
+        r, c = self.r, self.c
+        line = rows[r]
+        rows[r] = line[:c] + YOU + line[c + 1:]
+        return rows
 
 
 register_arcade(Asterix, "asterix",

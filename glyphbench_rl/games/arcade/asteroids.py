@@ -64,7 +64,7 @@ class Asteroids(ArenaTask):
             self.add_foe(*self.spot(4), *HEADINGS[self.draws.below(8)])
 
     def _enter(self, r: int, c: int) -> bool:
-        if any(f.r == r and f.c == c for f in self.foes):
+        if self.foe_at(r, c) is not None:
             self.r, self.c = r, c
             self._killed("You flew into a rock.")
             return True

@@ -1,7 +1,8 @@
 """Atlantis: three fixed turrets (T) guard a city on the bottom row. Raiders (> and <) cross the
 sky one cell a turn, dropping a row lower at each edge; one that gets down to the city wrecks
 it (the Atari preset's city has several buildings, H, each a life). The left turret shoots up
-and to the right, the centre one straight up, the right one up and to the left."""
+and to the right, the centre one straight up, the right one up and to the left.
+Balance: Atari raiders drop 5 rows a pass (the few altitude lanes) on 4 buildings, not 1 row on 6."""
 
 from __future__ import annotations
 
@@ -30,6 +31,7 @@ class AtlantisParams(ShooterParams):
     wave: int = param(5, 1, 30)           # raiders in a wave
     gap: int = param(4, 1, 30)            # turns between raiders entering
     per_raider: bool = param(False)       # the goal counts raiders (else whole waves)
+    drop: int = param(1, 1, 10)           # rows a raider drops at each edge
 
     def check(self) -> None:
         require(self.lives <= self.width // 5, "lives", "be at most one building per 5 columns", self.lives)
@@ -40,7 +42,7 @@ class Atlantis(Shooter):
     rules = ("You command three turrets (T) in the city on the bottom row of a {width}x{height} "
              "field{city_text}. Raiders come in waves of {wave}, one every {gap} turns, entering at "
              "the top from alternate sides; each crosses a cell a turn (> east, < west) and drops "
-             "a row at the far edge. A raider that reaches the city row {hit_text}. Each turret "
+             "{drop_text} at the far edge. A raider that reaches the city row {hit_text}. Each turret "
              "shoots (*) {speed_text} a turn, one shot in flight per turret.")
     rewards = "+{unit} for each {counted}{death_text}."
     ends = "when you have {goal_text} or the city falls"
@@ -56,6 +58,7 @@ class Atlantis(Shooter):
                 "counted": "raider shot down" if p.per_raider else "wave shot down to the last raider",
                 "goal_text": f"shot down {p.goal} raiders" if p.per_raider else f"cleared {p.goal} waves",
                 "city_text": f", among {p.lives} buildings (H)" if p.lives > 1 else "",
+                "drop_text": "a row" if p.drop == 1 else f"{p.drop} rows (no lower than the city row)",
                 "hit_text": "wrecks the nearest building" if p.lives > 1 else "ends the game"}
 
     def _towers(self) -> tuple[int, int, int]:
@@ -64,7 +67,11 @@ class Atlantis(Shooter):
 
     def _homes(self) -> list[int]:
         p = self.params
-        return [] if p.lives == 1 else [(k + 1) * p.width // (p.lives + 1) + (k % 2) for k in range(p.lives)]
+        if p.lives == 1:
+            return []
+        spots = [(k + 1) * p.width // (p.lives + 1) + (k % 2) for k in range(p.lives)]
+        towers = self._towers()
+        return [c + 1 if c in towers else c for c in spots]       # a building beside a turret, not under it
 
     def _still(self) -> list[str]:
         p = self.params
@@ -90,7 +97,7 @@ class Atlantis(Shooter):
             if 0 <= c < p.width:
                 b.c = c
             else:
-                b.dc, b.r = -b.dc, b.r + 1
+                b.dc, b.r = -b.dc, min(p.height - 1, b.r + p.drop)
                 b.glyph = EAST if b.dc > 0 else WEST
         w, at = p.width, self.pack.at
         for gun in self.guns:
@@ -137,5 +144,5 @@ class Atlantis(Shooter):
 
 register_arcade(Atlantis, "atlantis",
                 mini=dict(max_turns=300),
-                atari=dict(width=30, height=16, lives=6, goal=30, unit=10.0, death=0.0, wave=8,
-                           gap=3, shot_speed=2, per_raider=True, max_turns=10000))
+                atari=dict(width=30, height=16, lives=4, goal=30, unit=10.0, death=0.0, wave=8,
+                           gap=3, shot_speed=2, per_raider=True, drop=5, max_turns=10000))

@@ -114,11 +114,10 @@ class BankHeist(MazeTask):
         if self.bank == (self.r, self.c):
             self._open_bank()
 
-    def _sprites(self):
-        out = [(self.bank[0], self.bank[1], BANK)]
-        if self.bomb is not None:
-            out.append((self.bomb[0], self.bomb[1], DYNAMITE))
-        return out + super()._sprites()
+    def _below(self):
+        if self.bomb is None:
+            return ((self.bank[0], self.bank[1], BANK),)
+        return ((self.bank[0], self.bank[1], BANK), (self.bomb[0], self.bomb[1], DYNAMITE))
 
     def _extra_hud(self) -> str:
         return f"Gas {self.tank.left}" if self.params.gas else ""

@@ -12,6 +12,7 @@ from .engine import EMPTY, register_arcade
 from .shooter import BOMB, CANNON, SHOT, Shooter, ShooterParams, shooter_actions
 
 SAUCER, BEAM = "o", "_"
+SECTOR_TEXT: dict[int, str] = {}         # the HUD's sector note, made once per sector
 
 
 @dataclass(frozen=True)
@@ -73,16 +74,19 @@ class BeamRider(Shooter):
 
     def _play(self, action: int) -> None:
         p, d, lanes = self.params, self.draws, self.lane_list
-        self.steer(action)
+        if action:
+            self.steer(action)
         fall = max(1, p.fall - self.sectors + 1)
-        for b in self.pack.bodies:
-            if self.tick % fall == 0:
-                b.r += 1
-            if p.hop and d.random() < p.hop:
-                i = lanes.index(b.c) + (1 if d.random() < 0.5 else -1)
-                if 0 <= i < len(lanes):
-                    b.c = lanes[i]
-        if self.shoot_down("Saucer hit!") is None:
+        falls, hop = self.tick % fall == 0, p.hop
+        if falls or hop:
+            for b in self.pack.bodies:
+                if falls:
+                    b.r += 1
+                if hop and d.random() < hop:
+                    i = lanes.index(b.c) + (1 if d.random() < 0.5 else -1)
+                    if 0 <= i < len(lanes):
+                        b.c = lanes[i]
+        if self.gun.shots and self.shoot_down("Saucer hit!") is None:
             return
         if p.sector and 1 + self.score.done // p.sector > self.sectors:
             self.sectors += 1
@@ -95,12 +99,18 @@ class BeamRider(Shooter):
             self.pack.kill(b)
         if self.tick % p.spawn == 0 and len(self.pack) < p.saucers:
             self.pack.add(0, lanes[d.below(len(lanes))], SAUCER)
-        self.maybe_drop()
-        if self.rain():
+        if p.bomb_chance:
+            self.maybe_drop()
+        if self.bombs.shots and self.rain():
             self.lose_life("An enemy shot hit you.")
 
     def _extra_hud(self) -> str:
-        return f"Sector {self.sectors}" if self.params.sector else ""
+        if not self.params.sector:
+            return ""
+        text = SECTOR_TEXT.get(self.sectors)
+        if text is None:
+            text = SECTOR_TEXT[self.sectors] = f"Sector {self.sectors}"
+        return text
 
 
 register_arcade(BeamRider, "beamrider",

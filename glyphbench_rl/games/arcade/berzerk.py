@@ -106,11 +106,8 @@ class Berzerk(ArenaTask):
         super()._respawn()
         self.otto, self.entered, self.face = None, self.tick, (0, 1)
 
-    def _sprites(self):
-        out = super()._sprites()
-        if self.otto is not None:
-            out.append((self.otto[0], self.otto[1], OTTO))
-        return out
+    def _above(self):
+        return () if self.otto is None else ((self.otto[0], self.otto[1], OTTO),)
 
 
 register_arcade(Berzerk, "berzerk",

@@ -32,14 +32,28 @@ def sweep(body: Body, hit: Hit, steps: int = 1) -> tuple[int, int] | None:
     """Move ``body`` by its velocity ``steps`` times, one cell at a time along the dominant axis
     (so a fast body cannot jump over a thin thing); stop on the first cell where ``hit`` is true
     and return it (the body stays on the last free cell), else None."""
-    n = max(abs(body.dr), abs(body.dc)) * steps
-    if n == 1:                                   # the usual case: one cell
-        r, c = body.r + body.dr, body.c + body.dc
+    dr, dc = body.dr, body.dc
+    if not dr or not dc:                         # the usual case: straight along an axis (or still)
+        if dc:
+            sr, sc, n = 0, (1 if dc > 0 else -1), (dc if dc > 0 else -dc)
+        else:
+            sr, sc, n = (1 if dr > 0 else -1), 0, (dr if dr > 0 else -dr)
+        r, c = body.r, body.c
+        for _ in range(n * steps):
+            r += sr
+            c += sc
+            if hit(r, c):
+                return r, c
+            body.r, body.c = r, c
+        return None
+    n = max(abs(dr), abs(dc)) * steps
+    if n == 1:                                   # one diagonal cell
+        r, c = body.r + dr, body.c + dc
         if hit(r, c):
             return r, c
         body.r, body.c = r, c
         return None
-    r0, c0, tr, tc = body.r, body.c, body.dr * steps, body.dc * steps
+    r0, c0, tr, tc = body.r, body.c, dr * steps, dc * steps
     for i in range(1, n + 1):
         r = r0 + (tr * i // n if tr >= 0 else -(-tr * i // n))
         c = c0 + (tc * i // n if tc >= 0 else -(-tc * i // n))
@@ -79,10 +93,10 @@ class Gun:
         """Move every shot; yield (shot, cell) for each that hit something (the shot is gone)
         and (shot, None) for each that ran out of reach. ``hit`` decides what stops a shot; the
         caller removes walls and the field's edges through it too."""
-        kept = []
+        kept, speed = [], self.speed
         for shot in self.shots:
-            cell = sweep(shot, hit, self.speed) if (shot.dr or shot.dc) else None
-            shot.data -= self.speed
+            cell = sweep(shot, hit, speed) if (shot.dr or shot.dc) else None
+            shot.data -= speed
             if cell is not None:
                 shot.alive = False
                 yield shot, cell
@@ -101,19 +115,19 @@ class Formation:
     who is alive is cached relative to the block's corner (rebuilt on ``kill``), so a move
     costs nothing; ``version`` counts moves and kills, for callers caching what they draw."""
     __slots__ = ("top", "left", "gap", "width", "sweep", "advance", "dx", "alive", "rows", "cols",
-                 "version", "_shape")
+                 "version", "_shape", "_drawn")
 
     def __init__(self, rows: int, cols: int, top: int, left: int, gap: int, width: int,
                  sweep: int, advance: int = 0) -> None:
         self.rows, self.cols, self.top, self.left, self.gap = rows, cols, top, left, gap
         self.width, self.sweep, self.advance, self.dx = width, sweep, advance, 1
         self.alive = {(i, j) for i in range(rows) for j in range(cols)}
-        self.version, self._shape = 0, None
+        self.version, self._shape, self._drawn = 0, None, None
 
     def kill(self, member: tuple[int, int]) -> None:
         self.alive.discard(member)
         self.version += 1
-        self._shape = None
+        self._shape = self._drawn = None
 
     def shape(self):
         """(pattern per member row, lowest member row per column, lowest and highest column,
@@ -148,9 +162,12 @@ class Formation:
 
     def lines(self, glyph: str, empty: str) -> dict[int, str]:
         """Field row -> the row's text with the members drawn on ``empty``."""
-        t, l, w = self.top, self.left, self.width
-        return {t + i: (empty * l + pat.replace(".", empty).replace("\0", glyph)).ljust(w, empty)[:w]
-                for i, pat in self.shape()[0].items()}
+        drawn = self._drawn   # (glyph, empty, each member row's pattern drawn), until a kill
+        if drawn is None or drawn[0] != glyph or drawn[1] != empty:
+            drawn = self._drawn = (glyph, empty, {i: pat.replace(".", empty).replace("\0", glyph)
+                                                  for i, pat in self.shape()[0].items()})
+        t, w, pad = self.top, self.width, empty * self.left
+        return {t + i: (pad + line).ljust(w, empty)[:w] for i, line in drawn[2].items()}
 
     def front(self) -> list[tuple[int, int]]:
         """The lowest live member's cell in each column, left to right (who drops bombs)."""

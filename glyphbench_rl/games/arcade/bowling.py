@@ -1,9 +1,11 @@
 """Bowling, a solo lane seen from above: ten pins in a triangle at the far end, you at the
-near end. Move along your row to aim, THROW, then hook the rolling ball a column left or right
-each turn as it rolls a row a turn toward the pins. The ball knocks down every pin it meets; a
-falling pin knocks each pin diagonally behind it with a probability. A frame ends when all
-pins are down or its rolls are used; the pins are then set again. Pattern A: a unit per pin,
-won at ``goal`` pins; the episode ends lost when the frames run out first."""
+near end. Move along your row to aim, THROW, then hook the ball as it rolls a row a turn toward
+the pins: once (the curve ball of Atari's game 1: from there it drifts a column a row that way),
+or, with ``curve`` off, a column left or right every turn. The ball knocks down every pin it
+meets; a falling pin knocks each pin diagonally behind it with a probability. A frame ends when
+all pins are down or its rolls are used; the pins are then set again. Pattern A: a unit per pin,
+won at ``goal`` pins; the episode ends lost when the frames run out first.
+Balance: one curve a roll over a longer run-up (a per-row steer let random jiggling stay on pins)."""
 
 from __future__ import annotations
 
@@ -15,7 +17,7 @@ from .duel import clamp
 from .engine import EMPTY, ArcadeParams, ArcadeTask, register_arcade
 
 PIN, BALL, YOU = "i", "o", "@"
-ACTIONS = ActionSet([("NOOP", "wait (the ball rolls straight)"), ("LEFT", "step left, or hook the rolling ball left"),
+ACTIONS = ActionSet([("NOOP", "wait (the ball keeps its course)"), ("LEFT", "step left, or hook the rolling ball left"),
                      ("RIGHT", "step right, or hook the rolling ball right"), ("THROW", "roll the ball")],
                     noop="NOOP")
 SHIFT = (0, -1, 1, 0)
@@ -25,12 +27,13 @@ THROW = 3
 @dataclass(frozen=True)
 class BowlingParams(ArcadeParams):
     width: int = param(12, 9, 60)
-    height: int = param(10, 7, 40)
+    height: int = param(11, 7, 40)
     goal: int = param(20, 1, 1000)
     unit: float = param(0.05, 0, 10)
     death: float = param(0.0, 0, 0)
     frames: int = param(2, 1, 20)
     rolls: int = param(4, 1, 9)           # rolls a frame at most
+    curve: bool = param(True)             # one hook a roll, then the ball drifts that way (else a hook a row)
     scatter: float = param(0.5, 0, 1)     # a falling pin knocks each pin diagonally behind it this often
 
     def check(self) -> None:
@@ -47,7 +50,7 @@ class Bowling(ArcadeTask):
     title = "Bowling"
     rules = ("A {width}x{height} lane seen from above; ten pins (i) stand in a triangle at the top, "
              "you (@) walk the bottom row. THROW rolls the ball (o) up one row a turn from your "
-             "column; while it rolls, LEFT or RIGHT hook it one column that way. It knocks down every "
+             "column; {hook_text} It knocks down every "
              "pin it meets, and a falling pin knocks each pin diagonally behind it with chance "
              "{scatter}. A frame ends when all pins are down or after {rolls} rolls; then the pins "
              "are set again. You bowl {frames} frame(s).")
@@ -58,9 +61,15 @@ class Bowling(ArcadeTask):
     pattern = "A"
     glyphs = {EMPTY: "lane", PIN: "pin", BALL: "ball", YOU: "you"}
 
+    def prompt_fields(self) -> dict:
+        hook = ("while it rolls straight, LEFT or RIGHT hooks it once: from then on it also moves "
+                "one column that way every row." if self.params.curve else
+                "while it rolls, LEFT or RIGHT hook it one column that way.")
+        return {**super().prompt_fields(), "hook_text": hook}
+
     def _setup(self, rng) -> None:
         self.start(rng)
-        self.col, self.ball = self.params.width // 2, None
+        self.col, self.ball, self.drift = self.params.width // 2, None, 0
         self.frame_no, self.roll = 1, 0
         self._set_pins()
 
@@ -74,15 +83,20 @@ class Bowling(ArcadeTask):
         p = self.params
         if self.ball is None:
             if action == THROW:
-                self.ball = [p.height - 2, self.col]
+                self.ball, self.drift = [p.height - 2, self.col], 0
                 self.roll += 1
                 self._knock(*self.ball)
             else:
                 self.col = clamp(self.col + SHIFT[action], 0, p.width - 1)
             return
         b = self.ball
+        shift = SHIFT[action]
+        if p.curve:                       # the first hook sets the drift for the rest of the roll
+            if not self.drift:
+                self.drift = shift
+            shift = self.drift
         b[0] -= 1
-        b[1] = clamp(b[1] + SHIFT[action], 0, p.width - 1)
+        b[1] = clamp(b[1] + shift, 0, p.width - 1)
         self._knock(b[0], b[1])
         if b[0] <= 0 and not self.done:
             self.ball = None
@@ -119,7 +133,10 @@ class Bowling(ArcadeTask):
         return out
 
     def _extra_hud(self) -> str:
-        return f"Frame {self.frame_no}/{self.params.frames} Roll {self.roll}/{self.params.rolls}"
+        hud = f"Frame {self.frame_no}/{self.params.frames} Roll {self.roll}/{self.params.rolls}"
+        if self.ball and self.drift:
+            hud += f" | Ball curving {'left' if self.drift < 0 else 'right'}"
+        return hud
 
 
 register_arcade(Bowling, "bowling",

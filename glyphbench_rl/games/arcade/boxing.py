@@ -19,6 +19,7 @@ ACTIONS = ActionSet([("NOOP", "stand your ground"), ("UP", "step one row up"), (
                      ("PUNCH", "punch the boxer beside you on your row")], noop="NOOP")
 MOVES = ((0, 0), (-1, 0), (1, 0), (0, -1), (0, 1), (0, 0))
 PUNCH = 5
+WAIT_TEXT: dict[int, str] = {}             # the HUD's punch countdown, by turns left
 
 
 @dataclass(frozen=True)
@@ -54,9 +55,11 @@ class Boxing(ArcadeTask):
         self.ready = {"you": 0, "cpu": 0}           # the tick each boxer may punch again
 
     def _move(self, who: list, other: list, dr: int, dc: int) -> None:
+        if not dr and not dc:                      # (a boxer is always in the ring)
+            return
         p = self.params
         r, c = clamp(who[0] + dr, 0, p.height - 1), clamp(who[1] + dc, 0, p.width - 1)
-        if [r, c] != other:
+        if r != other[0] or c != other[1]:
             who[0], who[1] = r, c
 
     def _punch(self, side: str, who: list, other: list) -> bool:
@@ -93,8 +96,13 @@ class Boxing(ArcadeTask):
         return ((self.cpu[0], self.cpu[1], CPU), (self.me[0], self.me[1], YOU))
 
     def _extra_hud(self) -> str:
-        wait = max(0, self.ready["you"] - self.tick)
-        return f"Punch in {wait}" if wait else "Punch ready"
+        wait = self.ready["you"] - self.tick
+        if wait <= 0:
+            return "Punch ready"
+        text = WAIT_TEXT.get(wait)
+        if text is None:
+            text = WAIT_TEXT[wait] = f"Punch in {wait}"
+        return text
 
 
 register_arcade(Boxing, "boxing",

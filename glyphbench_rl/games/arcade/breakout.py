@@ -10,7 +10,7 @@ from dataclasses import dataclass
 
 from ...core.actions import ActionSet
 from ...core.params import param, require
-from .duel import Ball, clamp, deflect, serve
+from .duel import Ball, clamp, deflect, serve, velocity_text
 from .engine import EMPTY, ArcadeParams, ArcadeTask, register_arcade
 
 BRICK, BALL, PADDLE = "#", "o", "T"
@@ -82,7 +82,8 @@ class Breakout(ArcadeTask):
 
     def _play(self, action: int) -> None:
         p, b = self.params, self.ball
-        self.pad = clamp(self.pad + MOVES[action], 0, p.width - p.paddle)
+        if MOVES[action]:
+            self.pad = clamp(self.pad + MOVES[action], 0, p.width - p.paddle)
         if self.held:
             self.waited += 1
             self._rest()
@@ -127,8 +128,7 @@ class Breakout(ArcadeTask):
         return ((self.ball.r, self.ball.c, BALL),)
 
     def _extra_hud(self) -> str:
-        b = self.ball
-        return "Ball held" if self.held else f"Ball v {b.dr:+d},{b.dc:+d}"
+        return "Ball held" if self.held else velocity_text(self.ball)
 
 
 register_arcade(Breakout, "breakout",

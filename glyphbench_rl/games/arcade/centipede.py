@@ -2,7 +2,8 @@
 it meets an edge or a mushroom (#); a shot segment leaves a mushroom and splits the centipede
 (the segment behind becomes a head). You move in a zone of bottom rows and shoot up. On the
 Atari preset a spider (X) zigzags through your zone, mushrooms score when shot down, and the
-centipede climbs back up from the bottom."""
+centipede climbs back up from the bottom.
+Balance: mini: free fire, 12 mushrooms, two centipedes to clear; Atari: mushrooms no longer score."""
 
 from __future__ import annotations
 
@@ -21,12 +22,12 @@ UP, DOWN = 4, 5
 class CentipedeParams(ShooterParams):
     width: int = param(16, 8, 60)
     height: int = param(10, 8, 40)
-    goal: int = param(8, 1, 300)
-    unit: float = param(0.125, 0, 100)
-    cooldown: int = param(5, 1, 20)
+    goal: int = param(16, 1, 300)
+    unit: float = param(0.0625, 0, 100)
+    cooldown: int = param(1, 1, 20)
     segments: int = param(8, 1, 20)
     crawl: int = param(2, 1, 10)          # turns per centipede step
-    mushrooms: int = param(4, 0, 80)      # mushrooms at the start, above your zone
+    mushrooms: int = param(12, 0, 80)     # mushrooms at the start, above your zone
     zone: int = param(2, 1, 10)           # bottom rows you move in
     land: bool = param(True)              # a segment reaching the bottom row ends the game
     spider: int = param(0, 0, 200)        # turns between spiders (0: none)
@@ -43,9 +44,10 @@ class Centipede(Shooter):
              "A centipede of {segments} segments (head O, body o) enters at the top left and moves a "
              "cell every {crawl_text}; meeting an edge or a mushroom (#) it moves a row down and "
              "turns. {gun_text} A shot segment becomes a mushroom, and the one behind it becomes a "
-             "head. A shot mushroom is gone. A segment touching you costs a life.{land_text}"
+             "head; when every segment is shot a new centipede enters. A shot mushroom is gone. A "
+             "segment touching you costs a life.{land_text}"
              "{spider_text}")
-    rewards = "+{unit} for each segment{shroom_text} shot."
+    rewards = "+{unit} for each {counted} shot."
     ends = "when you have shot {goal} {things} or the game is lost"
     ACTIONS = shooter_actions(("UP", "move one row up (within your zone)"),
                               ("DOWN", "move one row down"))
@@ -61,9 +63,9 @@ class Centipede(Shooter):
                 " At the bottom the centipede turns back up, to the top of your zone.",
                 "spider_text": (f" Every {p.spider} turns a spider (X) zigzags through your zone "
                                 "(a life if it touches you).") if p.spider else "",
-                "shroom_text": ", mushroom or spider" if p.shrooms_count else "",
+                "counted": " or ".join(["segment"] + ["mushroom"] * p.shrooms_count + ["spider"] * bool(p.spider)),
                 "crawl_text": per(p.crawl, "turn").removeprefix("a "),
-                "things": "things" if p.shrooms_count else "segments"}
+                "things": "things" if p.shrooms_count or p.spider else "segments"}
 
     def _still(self) -> list[str]:
         rows = super()._still()
@@ -174,5 +176,5 @@ class Centipede(Shooter):
 register_arcade(Centipede, "centipede",
                 mini=dict(max_turns=300),
                 atari=dict(width=20, height=20, lives=3, goal=30, unit=10.0, segments=10, crawl=1, zone=4,
-                           mushrooms=25, land=False, spider=40, shrooms_count=True, cooldown=2,
+                           mushrooms=25, land=False, spider=40, shrooms_count=False, cooldown=2,
                            max_turns=10000))

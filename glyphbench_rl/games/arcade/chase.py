@@ -33,6 +33,7 @@ COMPASS = [("NOOP", "stay where you are"), ("LEFT", "move one cell left"),
 ACTIONS = ActionSet(COMPASS, noop="NOOP")
 STEPS = ((0, 0), (0, -1), (0, 1), (-1, 0), (1, 0))
 DIRS = STEPS[1:]
+_MAZES: dict[tuple[str, ...], tuple[dict, dict]] = {}   # wall layout -> (exits, ghost ways)
 
 
 @dataclass(frozen=True)
@@ -81,6 +82,7 @@ class MazeTask(ArcadeTask):
     ACTIONS = ACTIONS
     pattern = "D"
     scared_glyph, player_glyph = "g", "C"
+    _own_things = False        # set per game class: it draws things of its own (``_below``)
 
     def open(self, r: int, c: int) -> bool:
         return 0 <= r < len(self.still) and 0 <= c < len(self.still[r]) and self.still[r][c] != WALL
@@ -92,8 +94,17 @@ class MazeTask(ArcadeTask):
         """Place the player and the ghosts (made by ``ghost``)."""
         self.home, self.ghosts, self.scared_until = start, ghosts, 0
         self.r, self.c = start
-        self.exits = {(r, c): tuple(d for d in DIRS if self.open(r + d[0], c + d[1]))
-                      for r, c in self.floor_cells()}     # the walls never move
+        # the walls never move: a cell's exits, and the ways a ghost may take from a cell on a
+        # heading (found as needed), hold for every episode on the same walls
+        floor = str.maketrans({g: "." for g in self.vocab() if len(g) == 1 and g != WALL})
+        walls = tuple(row.translate(floor) for row in self.still)
+        maze = _MAZES.get(walls)
+        if maze is None:
+            if len(_MAZES) >= 64:
+                _MAZES.clear()
+            maze = _MAZES[walls] = ({(r, c): tuple(d for d in DIRS if self.open(r + d[0], c + d[1]))
+                                     for r, c in self.floor_cells()}, {})
+        self.exits, self._ways = maze
 
     def _respawn(self) -> None:
         self.r, self.c = self.home
@@ -114,10 +125,10 @@ class MazeTask(ArcadeTask):
         ghost.r, ghost.c, ghost.dr, ghost.dc = ghost.data[2]
 
     def _play(self, action: int) -> None:
-        dr, dc = STEPS[action]
-        if (dr or dc) and (dr, dc) in self.exits[self.r, self.c]:
-            self.r += dr
-            self.c += dc
+        step = STEPS[action]
+        if action and step in self.exits[self.r, self.c]:
+            self.r += step[0]
+            self.c += step[1]
             self._visit(self.r, self.c)
             if self.done or self._touch():
                 return
@@ -126,8 +137,7 @@ class MazeTask(ArcadeTask):
             return
         p = self.params
         if self.tick > p.release and self.tick % p.pace == 0:
-            for g in self.ghosts:
-                self._steer(g)
+            self._steer()
             self._touch()
 
     def _tick_world(self) -> None:
@@ -152,36 +162,73 @@ class MazeTask(ArcadeTask):
             return SCARED
         return SCATTER if self.tick % self.params.cycle < self.params.scatter else CHASE
 
-    def _steer(self, g: Body) -> None:
-        mode = self.mode(g)
-        if mode == PATROL:
-            path = g.data[1]
-            i = (path.index((g.r, g.c)) + 1) % len(path) if (g.r, g.c) in path else 0
-            g.r, g.c = path[i]
-            return
-        back = (-g.dr, -g.dc)
-        ways = [d for d in self.exits[g.r, g.c] if d != back]
-        if not ways:
-            ways = [(-g.dr, -g.dc)]
-        if len(ways) == 1:
-            pick = ways[0]
-        elif mode in (SCARED, WANDER) or (mode == CHASE and self.draws.random() >= self.params.chance):
-            pick = ways[self.draws.below(len(ways))]
-        else:
+    def _steer(self) -> None:
+        """Every ghost takes a step, in order, by its ``mode``."""
+        p, tick, memo, exits, draws = self.params, self.tick, self._ways, self.exits, self.draws
+        clock = SCARED if tick < self.scared_until else SCATTER if tick % p.cycle < p.scatter else CHASE
+        for g in self.ghosts:
+            mode = g.data[0]
             if mode == CHASE:
-                tr, tc = self.r, self.c
+                mode = clock
+            elif mode == PATROL:
+                path = g.data[1]
+                i = (path.index((g.r, g.c)) + 1) % len(path) if (g.r, g.c) in path else 0
+                g.r, g.c = path[i]
+                continue
+            key = (g.r, g.c, g.dr, g.dc)
+            ways = memo.get(key)
+            if ways is None:   # every exit but the way back (that only at a dead end), remembered
+                back = (-g.dr, -g.dc)
+                ways = memo[key] = tuple(d for d in exits[g.r, g.c] if d != back) or (back,)
+            if len(ways) == 1:
+                pick = ways[0]
+            elif mode == SCARED or mode == WANDER or (mode == CHASE and draws.random() >= p.chance):
+                pick = ways[draws.below(len(ways))]
             else:
-                r0, c0 = g.data[2][:2]
-                tr = 0 if r0 < len(self.still) // 2 else len(self.still)
-                tc = 0 if c0 < len(self.still[0]) // 2 else len(self.still[0])
-            pick = min(ways, key=lambda d: (g.r + d[0] - tr) ** 2 + (g.c + d[1] - tc) ** 2)
-        g.dr, g.dc = pick
-        g.r += pick[0]
-        g.c += pick[1]
+                if mode == CHASE:
+                    tr, tc = self.r, self.c
+                else:
+                    r0, c0 = g.data[2][:2]
+                    tr = 0 if r0 < len(self.still) // 2 else len(self.still)
+                    tc = 0 if c0 < len(self.still[0]) // 2 else len(self.still[0])
+                pick, near = None, 0
+                for d in ways:          # the first way nearest the target
+                    dr, dc = g.r + d[0] - tr, g.c + d[1] - tc
+                    if pick is None or dr * dr + dc * dc < near:
+                        pick, near = d, dr * dr + dc * dc
+            g.dr, g.dc = pick
+            g.r += pick[0]
+            g.c += pick[1]
+
+    def __init_subclass__(cls, **kwargs) -> None:
+        super().__init_subclass__(**kwargs)
+        cls._own_things = cls._below is not MazeTask._below   # else ``_grid`` skips asking
+
+    def _below(self):
+        """Things of the game's own drawn under the ghosts: (row, col, glyph) each."""
+        return ()
 
     def _sprites(self):
         scared = self.tick < self.scared_until
-        out = [(g.r, g.c, self.scared_glyph if scared and g.data[0] == CHASE else g.glyph)
-               for g in self.ghosts]
+        out = [*self._below(), *((g.r, g.c, self.scared_glyph if scared and g.data[0] == CHASE else g.glyph)
+                                 for g in self.ghosts)]
         out.append((self.r, self.c, self.player_glyph))
         return out
+
+    def _grid(self) -> list[str]:
+        """``_sprites()`` drawn on ``_rows()`` straight from the bodies (no tuple per mover, no
+        bounds test: everything walks the maze)."""
+        rows = self._rows()
+        if self._own_things:
+            for r, c, ch in self._below():
+                line = rows[r]
+                rows[r] = line[:c] + ch + line[c + 1:]
+        scared = self.tick < self.scared_until
+        for g in self.ghosts:
+            r, c = g.r, g.c
+            line = rows[r]
+            rows[r] = line[:c] + (self.scared_glyph if scared and g.data[0] == CHASE else g.glyph) + line[c + 1:]
+        r, c = self.r, self.c
+        line = rows[r]
+        rows[r] = line[:c] + self.player_glyph + line[c + 1:]
+        return rows

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 from ...core.params import param, require
 from .bodies import Body, chase
 from .engine import EMPTY, ArcadeParams, ArcadeTask, register_arcade
-from .scroller import FLY_ACTIONS, FLY_SHOT, GROUND, LEFT_ME, RIGHT_ME, Flyer
+from .scroller import FLY_ACTIONS, FLY_SHOT, GROUND, LEFT_ME, RIGHT_ME, Flyer, fly_shots
 
 ENEMY, TRUCK = "X", "T"
 
@@ -64,10 +64,14 @@ class ChopperCommand(Flyer, ArcadeTask):
         self.trucks = [gap // 2 + k * gap for k in range(p.trucks)]
         self.enemies: list[Body] = []
         self.level, self.left_in_wave, self.to_launch = 0, p.wave, p.wave
+        self._ground_key = self._ground = None
 
     def _shot_hits(self, r: int, c: int) -> bool:
         c %= self.params.world
-        return any(e.r == r and e.c == c for e in self.enemies)
+        for e in self.enemies:
+            if e.c == c and e.r == r:
+                return True
+        return False
 
     def _play(self, action: int) -> None:
         p = self.params
@@ -91,32 +95,39 @@ class ChopperCommand(Flyer, ArcadeTask):
         self._touch()
 
     def _dive(self, e: Body) -> None:
-        """An enemy steps toward the nearest truck (the world wraps)."""
+        """An enemy steps toward the nearest truck (the world wraps; the first of equals)."""
         p = self.params
         if not self.trucks:
             return
-        target = min(self.trucks, key=lambda t: min((t - e.c) % p.world, (e.c - t) % p.world))
-        dx = (target - e.c) % p.world
-        dx = dx - p.world if dx > p.world // 2 else dx
+        w, c = p.world, e.c
+        target, near = 0, w
+        for t in self.trucks:
+            d = (t - c) % w
+            d = w - d if d + d > w else d
+            if d < near:
+                target, near = t, d
+        dx = (target - c) % w
+        dx = dx - w if dx > w // 2 else dx
         dr, dc = chase(e.r, 0, p.height - 1, dx)
-        e.r, e.c = e.r + dr, (e.c + dc) % p.world
+        e.r, e.c = e.r + dr, (c + dc) % w
         if e.r == p.height - 1 and e.c in self.trucks:
             self.trucks.remove(e.c)
             e.r = 0
             self.say("A truck was destroyed!")
 
     def _shots(self) -> bool:
-        for shot, cell in self.gun.advance(self._shot_hits):
-            if cell is not None:
-                c = cell[1] % self.params.world
-                self._drop(cell[0], c)
-                self.score.gain()
-                self.say("Enemy down!")
-                self.left_in_wave -= 1
-                if not self.left_in_wave and not self.done:
-                    self.level += 1
-                    self.left_in_wave = self.to_launch = self.params.wave + self.level
+        if self.gun.shots:
+            fly_shots(self.gun, self._shot_hits, self._shot_down)
         return self.done
+
+    def _shot_down(self, r: int, c: int) -> None:
+        self._drop(r, c % self.params.world)
+        self.score.gain()
+        self.say("Enemy down!")
+        self.left_in_wave -= 1
+        if not self.left_in_wave and not self.done:
+            self.level += 1
+            self.left_in_wave = self.to_launch = self.params.wave + self.level
 
     def _drop(self, r: int, c: int) -> None:
         """One enemy at (r, c) is gone (two may share a cell)."""
@@ -126,19 +137,31 @@ class ChopperCommand(Flyer, ArcadeTask):
                 return
 
     def _touch(self) -> bool:
-        if any(e.r == self.r and e.c == self.x for e in self.enemies):
-            self._drop(self.r, self.x)
-            self.to_launch += 1
-            return self.lose_life("An enemy hit you!")
+        r, x = self.r, self.x
+        for e in self.enemies:
+            if e.c == x and e.r == r:
+                self._drop(r, x)
+                self.to_launch += 1
+                return self.lose_life("An enemy hit you!")
         return False
 
-    def _sprites(self):
-        cam = self.camera
-        cam.follow(self.x)
-        low = self.params.height - 1
-        out = [(low, cam.screen(t), TRUCK) for t in self.trucks]
-        out += [(e.r, cam.screen(e.c), ENEMY) for e in self.enemies]
-        return self.fly_sprites(out)
+    def _grid(self) -> list[str]:
+        rows, left, w, view = self.fly_view()
+        key = (left, *self.trucks)
+        if key != self._ground_key:            # the trucks seldom move: their row is kept
+            ground = rows[-1]
+            for t in self.trucks:
+                c = (t - left) % w
+                if c < view:
+                    ground = ground[:c] + TRUCK + ground[c + 1:]
+            self._ground_key, self._ground = key, ground
+        rows[-1] = self._ground
+        for e in self.enemies:                 # (enemies fly between the top and the ground)
+            c = (e.c - left) % w
+            if c < view:
+                line = rows[e.r]
+                rows[e.r] = line[:c] + ENEMY + line[c + 1:]
+        return self.fly_draw(rows)
 
 
 register_arcade(ChopperCommand, "choppercommand",

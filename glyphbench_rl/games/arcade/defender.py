@@ -11,7 +11,7 @@ from dataclasses import dataclass
 from ...core.params import param, require
 from .bodies import Body, chase
 from .engine import EMPTY, ArcadeParams, ArcadeTask, register_arcade
-from .scroller import FLY_ACTIONS, FLY_SHOT, FLY_UP, GROUND, LEFT_ME, RIGHT_ME, Flyer
+from .scroller import FLY_ACTIONS, FLY_SHOT, FLY_UP, GROUND, LEFT_ME, RIGHT_ME, Flyer, fly_shots
 
 LANDER, HUMAN = "L", "h"
 STAND, GRABBED, FALL, RIDE = range(4)
@@ -70,32 +70,40 @@ class Defender(Flyer, ArcadeTask):
 
     def _hit(self, r: int, c: int) -> bool:
         c %= self.params.world
-        return any(lander.r == r and lander.c == c for lander in self.landers)
+        for lander in self.landers:
+            if lander.c == c and lander.r == r:
+                return True
+        return False
+
+    def _shot_down(self, r: int, c: int) -> None:
+        self._shoot(r, c % self.params.world)
 
     def _play(self, action: int) -> None:
         p = self.params
         if action == FLY_UP and self.r == 0 and self._rescue():
             return
         self.fly(action, self.stand)
-        for _, cell in self.gun.advance(self._hit):
-            if cell is not None:
-                self._shoot(cell[0], cell[1] % p.world)
+        if self.gun.shots:
+            fly_shots(self.gun, self._hit, self._shot_down)
+        r, x = self.r, self.x
         for man in self.people:
             if man.data == FALL:
                 man.r += 1
                 if man.r >= self.stand:
                     man.r, man.data = self.stand, STAND
-            if man.data != RIDE and man.data != GRABBED and (man.r, man.c) == (self.r, self.x):
+            if man.c == x and man.r == r and man.data != RIDE and man.data != GRABBED:
                 man.data = RIDE
                 self.say("Human picked up!")
         if self.tick % p.descend == 0 and self._landers_move():
             return
         if len(self.landers) < p.landers:
-            x = (self.x + 3 + self.draws.below(p.world - 5)) % p.world   # not on top of you
-            self.landers.append(Body(0, x, glyph=LANDER))
-        if any((lander.r, lander.c) == (self.r, self.x) for lander in self.landers):
-            self._shoot(self.r, self.x)
-            self.lose_life("A lander hit you!")
+            c = (x + 3 + self.draws.below(p.world - 5)) % p.world   # not on top of you
+            self.landers.append(Body(0, c, glyph=LANDER))
+        for lander in self.landers:
+            if lander.c == x and lander.r == r:
+                self._shoot(r, x)
+                self.lose_life("A lander hit you!")
+                return
 
     def _rescue(self) -> bool:
         for man in self.people:
@@ -118,6 +126,7 @@ class Defender(Flyer, ArcadeTask):
 
     def _landers_move(self) -> bool:
         p = self.params
+        w = p.world
         for lander in self.landers:
             man = lander.data
             if man is not None:
@@ -128,14 +137,19 @@ class Defender(Flyer, ArcadeTask):
                     lander.data = None
                     self.say("A human was abducted!")
                 continue
-            free = [m for m in self.people if m.data == STAND]
-            if not free:
+            target, near, c = None, w, lander.c      # the nearest standing human, first of equals
+            for m in self.people:
+                if m.data == STAND:
+                    d = (m.c - c) % w
+                    d = w - d if d + d > w else d
+                    if d < near:
+                        target, near = m, d
+            if target is None:
                 continue
-            target = min(free, key=lambda m: min((m.c - lander.c) % p.world, (lander.c - m.c) % p.world))
-            dx = (target.c - lander.c) % p.world
+            dx = (target.c - c) % w
             dr, dc = chase(lander.r, 0, target.r - 1, dx - p.world if dx > p.world // 2 else dx)
             lander.r, lander.c = lander.r + dr, (lander.c + dc) % p.world
-            if (lander.r + 1, lander.c) == (target.r, target.c):
+            if lander.c == target.c and lander.r + 1 == target.r:
                 lander.data, target.data = target, GRABBED
         self.landers = [lander for lander in self.landers if lander.r >= 0]
         return self._doomed()
@@ -149,15 +163,26 @@ class Defender(Flyer, ArcadeTask):
             return True
         return False
 
-    def _sprites(self):
-        cam = self.camera
-        cam.follow(self.x)
-        out = [(m.r, cam.screen(m.c), HUMAN) for m in self.people if m.data != RIDE]
-        out += [(lander.r, cam.screen(lander.c), LANDER) for lander in self.landers]
-        return self.fly_sprites(out)
+    def _grid(self) -> list[str]:
+        rows, left, w, view = self.fly_view()
+        for m in self.people:                  # (humans and landers keep to the rows)
+            if m.data != RIDE:
+                c = (m.c - left) % w
+                if c < view:
+                    line = rows[m.r]
+                    rows[m.r] = line[:c] + HUMAN + line[c + 1:]
+        for lander in self.landers:
+            c = (lander.c - left) % w
+            if c < view:
+                line = rows[lander.r]
+                rows[lander.r] = line[:c] + LANDER + line[c + 1:]
+        return self.fly_draw(rows)
 
     def _extra_hud(self) -> str:
-        return "Carrying a human" if any(m.data == RIDE for m in self.people) else ""
+        for m in self.people:
+            if m.data == RIDE:
+                return "Carrying a human"
+        return ""
 
 
 register_arcade(Defender, "defender",

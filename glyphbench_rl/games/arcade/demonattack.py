@@ -11,6 +11,7 @@ from .engine import EMPTY, register_arcade
 from .shooter import BOMB, CANNON, SHOT, Shooter, ShooterParams, bounce
 
 DEMON, DIVER = "W", "w"
+WAVE_TEXT: dict[int, str] = {}           # the HUD's wave note, made once per wave
 
 
 @dataclass(frozen=True)
@@ -63,17 +64,21 @@ class DemonAttack(Shooter):
 
     def _play(self, action: int) -> None:
         p, d = self.params, self.draws
-        self.steer(action)
-        flap = self.tick % p.flap == 0
+        if action:
+            self.steer(action)
+        flap, col, turn, right = self.tick % p.flap == 0, self.col, p.turn, p.width - 1
+        # only a diver (or a demon where the band reaches your row) gets to your row or past it
+        divers = p.band >= self.row
         for b in self.pack.bodies:
             if b.glyph == DIVER:
+                divers = True
                 b.r += 1
-                b.c += (self.col > b.c) - (self.col < b.c)
+                b.c += (col > b.c) - (col < b.c)
             elif flap:
-                if d.random() < p.turn:
+                if d.random() < turn:
                     b.dc = -b.dc
-                bounce(b, 0, p.width - 1)
-        hits = self.shoot_down("Demon hit!")
+                bounce(b, 0, right)
+        hits = self.shoot_down("Demon hit!") if self.gun.shots else []
         if hits is None:
             return
         for foe, (r, c) in hits:
@@ -81,22 +86,30 @@ class DemonAttack(Shooter):
                 for dc in (-1, 1):
                     if 0 <= c + dc < p.width:
                         self.pack.add(r, c + dc, DIVER)
-        for b in [b for b in self.pack.bodies if b.r > self.row]:
-            self.pack.kill(b)
-        if self.touches():
-            self.pack.kill(self.pack.at(self.row, self.col))
-            if self.lose_life("A diving demon hit you."):
-                return
-        self._fill()
+        if divers:
+            for b in [b for b in self.pack.bodies if b.r > self.row]:
+                self.pack.kill(b)
+            if self.touches():
+                self.pack.kill(self.pack.at(self.row, self.col))
+                if self.lose_life("A diving demon hit you."):
+                    return
+        if self.sent < p.wave:
+            self._fill()
         if not self.pack.bodies:
             self.waves, self.sent = self.waves + 1, 0
             self._fill()
-        self.maybe_drop()
-        if self.rain():
+        if p.bomb_chance:
+            self.maybe_drop()
+        if self.bombs.shots and self.rain():
             self.lose_life("A bomb hit you.")
 
     def _extra_hud(self) -> str:
-        return f"Wave {self.waves}" if self.native else ""
+        if not self.native:
+            return ""
+        text = WAVE_TEXT.get(self.waves)
+        if text is None:
+            text = WAVE_TEXT[self.waves] = f"Wave {self.waves}"
+        return text
 
 
 register_arcade(DemonAttack, "demonattack",

@@ -82,9 +82,11 @@ class DoubleDunk(ArcadeTask):
         self.me, self.cpu = (off, dfn) if self.has.mine() else (dfn, off)
 
     def _step(self, who: list, other: list, dr: int, dc: int) -> None:
+        if not dr and not dc:                      # (a player is always on the court)
+            return
         p = self.params
         r, c = clamp(who[0] + dr, 1, p.height - 1), clamp(who[1] + dc, 0, p.width - 1)
-        if [r, c] != other:
+        if r != other[0] or c != other[1]:
             who[0], who[1] = r, c
 
     def _shoot(self, side: str, who: list, other: list) -> None:
@@ -112,7 +114,7 @@ class DoubleDunk(ArcadeTask):
     def _play(self, action: int) -> None:
         p, me, cpu = self.params, self.me, self.cpu
         if action == SHOOT:
-            if self.has.mine():
+            if self.has.holder == "you":
                 self._shoot("you", me, cpu)
                 return
             if self._swipe("you"):
@@ -121,7 +123,7 @@ class DoubleDunk(ArcadeTask):
             self._step(me, cpu, *MOVES[action])
         if self.draws.random() >= p.chance:
             return
-        if self.has.mine():
+        if self.has.holder == "you":
             if not self._swipe("cpu"):
                 guard = (me[0] - 1, me[1]) if me[0] > 1 else (me[0], me[1] + (1 if cpu[1] > me[1] else -1))
                 self._step(cpu, me, *pursue(cpu[0], cpu[1], *guard, 1.0, self.draws))
@@ -134,7 +136,7 @@ class DoubleDunk(ArcadeTask):
             self._step(cpu, me, dr, dc)
 
     def _sprites(self):
-        carrier = self.me if self.has.mine() else self.cpu
+        carrier = self.me if self.has.holder == "you" else self.cpu
         return ((carrier[0] - 1, carrier[1], BALL), (self.cpu[0], self.cpu[1], CPU), (self.me[0], self.me[1], YOU))
 
 

@@ -79,6 +79,19 @@ def pursue(r: int, c: int, tr: int, tc: int, chance: float, draws) -> tuple[int,
     return 0, (1 if dc > 0 else -1)
 
 
+_VELOCITY: dict[tuple[int, int], str] = {}
+
+
+def velocity_text(ball: Body) -> str:
+    """``Ball v +1,-1``: the HUD's note of a ball's velocity, formatted once per velocity (a
+    signed format costs more than the rest of a HUD)."""
+    key = (ball.dr, ball.dc)
+    text = _VELOCITY.get(key)
+    if text is None:
+        text = _VELOCITY[key] = f"Ball v {ball.dr:+d},{ball.dc:+d}"
+    return text
+
+
 def clamp(v: int, lo: int, hi: int) -> int:
     return lo if v < lo else hi if v > hi else v
 

@@ -1,7 +1,9 @@
 """Enduro: an endurance race on a road of lanes that scrolls down at your own speed. Slower cars
 ride with the road; change lanes to overtake them (a car that drops behind you counts). A
 collision stops your car (speed 0); on the MiniAtari preset it also costs one of a few lives
-(pattern A: credit per overtake, no penalty)."""
+(pattern A: credit per overtake, no penalty). As on the Atari, the day is a clock: at nightfall
+the race is over, lost unless the cars are passed.
+Balance: the day clock (without one a random driver, never out of time, passed every car)."""
 
 from __future__ import annotations
 
@@ -23,14 +25,15 @@ LEFT, RIGHT, ACCEL, BRAKE = 1, 2, 3, 4
 class EnduroParams(ArcadeParams):
     height: int = param(9, 6, 40)
     lives: int = param(2, 1, 9)
-    goal: int = param(5, 1, 1000)          # cars to overtake
-    unit: float = param(0.2, 0, 100)
+    goal: int = param(10, 1, 1000)         # cars to overtake
+    unit: float = param(0.1, 0, 100)
     death: float = param(0.0, 0, 0)
     lanes: int = param(3, 2, 8)
     top: int = param(3, 1, 6)              # top speed: the road moves a row every top+1-speed turns
     spacing: int = param(3, 2, 12)         # rows between cars
     pair: float = param(0.0, 0, 1)         # chance a second car shares a row
     wreck: int = param(1, 0, 1)            # 1: a collision costs a life; 0: only your speed
+    day: int = param(60, 0, 100000)        # turns until nightfall ends the race (0: no clock)
 
 
 class Enduro(ArcadeTask):
@@ -52,7 +55,8 @@ class Enduro(ArcadeTask):
         wreck = f" and costs a life ({p.lives} in all)" if p.wreck else ""
         return {**super().prompt_fields(), "lane_cols": ", ".join(str(c) for c in self._cols()),
                 "top1": p.top + 1, "wreck_text": wreck,
-                "ends_text": " or have no lives left" if p.wreck else ""}
+                "ends_text": (", or you have no lives left" if p.wreck else "")
+                + (f", or night falls after {p.day} turns (lost unless the cars are passed)" if p.day else "")}
 
     def _cols(self) -> list[int]:
         return [2 + 3 * k for k in range(self.params.lanes)]
@@ -83,6 +87,13 @@ class Enduro(ArcadeTask):
         return line
 
     def _play(self, action: int) -> None:
+        self._drive(action)
+        day = self.params.day
+        if day and self.tick >= day and not self.done:
+            self.say("Night falls: the race is over.")
+            self.finish(won=False)
+
+    def _drive(self, action: int) -> None:
         p = self.params
         if action == ACCEL:
             self.speed = min(p.top, self.speed + 1)
@@ -123,10 +134,13 @@ class Enduro(ArcadeTask):
         return ((self.car_r, self.cols[self.lane], PLAYER),)
 
     def _extra_hud(self) -> str:
-        return f"Speed {self.speed}"
+        hud = f"Speed {self.speed}"
+        if self.params.day:
+            hud += f" | Nightfall in {self.params.day - self.tick}"
+        return hud
 
 
 register_arcade(Enduro, "enduro",
                 mini=dict(max_turns=300),
                 atari=dict(height=20, lives=1, goal=200, unit=1.0, top=4, spacing=3, pair=0.3,
-                           wreck=0, max_turns=10000))
+                           wreck=0, day=2000, max_turns=10000))

@@ -52,6 +52,7 @@ from ..common.lanes import Draws
 
 EMPTY = "."
 EPS = 1e-9
+DRAWN = 2048   # rows with a mover drawn in that a task remembers (see ArcadeTask._draw)
 
 
 @dataclass(frozen=True)
@@ -65,15 +66,18 @@ class ArcadeParams:
 
 
 class Tally:
-    """Patterns A and D: a monotone credited counter capped at ``goal``."""
-    __slots__ = ("task", "goal", "unit", "done", "points")
+    """Patterns A and D: a monotone credited counter capped at ``goal``. ``shown`` is the HUD
+    text the task last drew for it, None once the score changed (so it is formatted only then)."""
+    __slots__ = ("task", "goal", "unit", "done", "points", "shown")
 
     def __init__(self, task: "ArcadeTask", goal: int, unit: float) -> None:
         self.task, self.goal, self.unit, self.done, self.points = task, goal, unit, 0, 0.0
+        self.shown: str | None = None
 
     def gain(self, k: int = 1) -> None:
         k = min(k, self.goal - self.done)
         if k > 0:
+            self.shown = None
             self.done += k
             self.points += k * self.unit
             self.task.reward(k * self.unit)
@@ -96,6 +100,7 @@ class Milestones(Tally):
 
     def reach(self, key, share: float) -> None:
         if key not in self.keys and self.done < self.goal:
+            self.shown = None
             self.keys.add(key)
             pay = share * self.goal * self.unit
             self.points += pay
@@ -107,12 +112,14 @@ class Milestones(Tally):
 
 class Duel:
     """Pattern C: +unit per own point, -unit per opponent point; first to ``goal`` ends it."""
-    __slots__ = ("task", "goal", "unit", "mine", "theirs")
+    __slots__ = ("task", "goal", "unit", "mine", "theirs", "shown")
 
     def __init__(self, task: "ArcadeTask", goal: int, unit: float) -> None:
         self.task, self.goal, self.unit, self.mine, self.theirs = task, goal, unit, 0, 0
+        self.shown: str | None = None   # as Tally's
 
     def point(self, mine: bool) -> None:
+        self.shown = None
         if mine:
             self.mine += 1
             self.task.reward(self.unit)
@@ -153,11 +160,15 @@ class ArcadeTask(GlyphTask):
         self.native = self.tier != "standard"
         self.score = RULES[self.pattern](self, p.goal, p.unit)
         self.lives = p.lives
+        self._head_lives = -1             # the lives the remembered HUD head shows
+        self._tail = None                 # the _extra_hud text the remembered HUD ends with
         self.draws = Draws(self.stream("arcade"))
         self.tick = 0
         self.still_version = 0            # bumped by set_still, for games caching rows over it
         self._layers: dict = {}
         self._layers_of = 0               # the still_version the remembered layers were drawn on
+        if "_drawn" not in self.__dict__:   # kept across episodes: the same rows come back
+            self._drawn, self._grids, self._drawn_from = {}, 0, 0
         self.still = self._still()
 
     def _still(self) -> list[str]:
@@ -220,21 +231,51 @@ class ArcadeTask(GlyphTask):
     def _grid(self) -> list[str]:
         rows = self._rows()
         h = len(rows)
-        for r, c, g in self._sprites():   # a few movers: slicing beats a row-to-list round trip
+        self._grids += 1
+        drawn = self._drawn
+        for r, c, g in self._sprites():   # a few movers: one cell each into its row
             if 0 <= r < h:
                 line = rows[r]
                 if 0 <= c < len(line):
-                    rows[r] = line[:c] + g + line[c + 1:]
+                    if drawn is None:
+                        rows[r] = line[:c] + g + line[c + 1:]
+                    else:
+                        key = (line, c, g)
+                        rows[r] = drawn.get(key) or self._draw(key)
         return rows
 
+    def _draw(self, key: tuple[str, int, str]) -> str:
+        """The row ``line`` with glyph ``g`` in column ``c`` (``key``), remembered: a mover over
+        a still background makes the same few rows again and again, and finding one costs less
+        than making it. A task that makes new rows at more than one a grid (a sliding or filling
+        background) stops remembering them."""
+        line, c, g = key
+        row = line[:c] + g + line[c + 1:]
+        drawn = self._drawn
+        if drawn is not None:
+            if len(drawn) >= DRAWN:
+                if self._grids - self._drawn_from < DRAWN:
+                    self._drawn = None
+                    return row
+                drawn.clear()
+                self._drawn_from = self._grids
+            drawn[key] = row
+        return row
+
     def _hud(self) -> str:
-        parts = [self.score.hud(self.native)]
-        if self.params.lives > 1:
-            parts.append(f"Lives {self.lives}")
+        score = self.score
+        if score.shown is None or self.lives != self._head_lives:   # the head changes rarely
+            score.shown = score.hud(self.native)
+            self._head_lives = self.lives
+            self._head = (f"{score.shown} | Lives {self.lives}" if self.params.lives > 1
+                          else score.shown)
+            self._tail = None
         extra = self._extra_hud()
-        if extra:
-            parts.append(extra)
-        return " | ".join(parts)
+        if not extra:
+            return self._head
+        if extra is not self._tail:   # (games that keep their extra text hand back the same object)
+            self._tail, self._hud_text = extra, f"{self._head} | {extra}"
+        return self._hud_text
 
 
 def register_arcade(game: type, name: str, *, mini: dict, atari: dict) -> None:

@@ -75,27 +75,35 @@ class FishingDerby(ArcadeTask):
         if not 0 <= sh[1] < p.width:
             sh[2] = -sh[2]
             sh[1] += 2 * sh[2]
-        mine, theirs, w = self.caught["you"], self.caught["cpu"], p.width
+        mine, theirs, w, tick = self.caught["you"], self.caught["cpu"], p.width, self.tick
         for f in self.fish:
-            if self.tick % f[3] == 0 and f is not mine and f is not theirs:
+            if tick % f[3] == 0 and f is not mine and f is not theirs:
                 f[1] = (f[1] + f[2]) % w
-        if self.caught["you"]:
+        if mine:
             self._rise("you", me, 2 if action == REEL else 1)
         else:
             dr, dc = MOVES[action]
-            me[0], me[1] = clamp(me[0] + dr, 2, p.height - 1), clamp(me[1] + dc, 0, self.half - 1)
+            if dr or dc:
+                me[0], me[1] = clamp(me[0] + dr, 2, p.height - 1), clamp(me[1] + dc, 0, self.half - 1)
         if self.done:
             return
         if self.caught["cpu"]:
             self._rise("cpu", cpu, 2 if self.draws.random() < p.reel else 1)
         else:
-            near = min((f for f in self.fish if f is not mine), key=lambda f: abs(f[0] - cpu[0]) + abs(f[1] - cpu[1]))
+            near, best, r, c = None, 0, cpu[0], cpu[1]
+            for f in self.fish:   # the nearest fish not on your hook (the first on a tie)
+                if f is not mine:
+                    d = abs(f[0] - r) + abs(f[1] - c)
+                    if near is None or d < best:
+                        near, best = f, d
             dr, dc = pursue(cpu[0], cpu[1], near[0], clamp(near[1], self.half, p.width - 1), p.chance, self.draws)
             cpu[0], cpu[1] = cpu[0] + dr, cpu[1] + dc
+        caught, lane = self.caught, self.lane
         for side, hook in (("you", me), ("cpu", cpu)):
-            f = self.lane.get(hook[0])
-            if f and self.caught[side] is None and f[0] == hook[0] and f[1] == hook[1] and not self._hooked(f):
-                self.caught[side] = f
+            f = lane.get(hook[0])
+            if (f and f[1] == hook[1] and f[0] == hook[0] and caught[side] is None
+                    and f is not caught["you"] and f is not caught["cpu"]):
+                caught[side] = f
 
     def _hooked(self, f: list) -> bool:
         return f is self.caught["you"] or f is self.caught["cpu"]
@@ -124,11 +132,16 @@ class FishingDerby(ArcadeTask):
         self.caught[side] = None
 
     def _rows(self) -> list[str]:
-        rows, w = self.still[:], self.params.width
+        rows, lines = self.still[:], self._lines
+        mine, theirs = self.caught["you"], self.caught["cpu"]
         for f in self.fish:                          # a free fish is alone on its lane's row
-            if not self._hooked(f):
-                rows[f[0]] = EMPTY * f[1] + FISH + EMPTY * (w - 1 - f[1])
+            if f is not mine and f is not theirs:
+                rows[f[0]] = lines[f[1]]
         return rows
+
+    def _init(self) -> None:
+        w = self.params.width
+        self._lines = [EMPTY * c + FISH + EMPTY * (w - 1 - c) for c in range(w)]   # a lane's row by its fish's column
 
     def _sprites(self):
         out = [(self.shark[0], self.shark[1], SHARK), (self.cpu[0], self.cpu[1], CPU), (self.me[0], self.me[1], YOU)]

@@ -69,10 +69,19 @@ class Freeway(ArcadeTask):
             period = int(rng.integers(1, p.slowest + 1))
             self.lanes[self.home - p.spacing * (k + 1)] = Lane("".join(cells), direction, period,
                                                                int(rng.integers(period)))
+        self.cycles = {r: self._cycle(lane) for r, lane in self.lanes.items()}
+
+    @staticmethod
+    def _cycle(lane: Lane) -> tuple[str, ...]:
+        """The lane's rows over one full cycle (``period`` x width ticks): the row at tick t is
+        ``cycle[t % len(cycle)]`` (``lane.row(t)``), so a turn draws every lane by indexing."""
+        n, per, ph = len(lane.pattern), lane.period, lane.phase
+        turns = [lane.row(k * per - ph % per) for k in range(1, n + 1)]   # once per distinct shift
+        return tuple(turns[((t + ph) // per - ph // per - 1) % n] for t in range(per * n))
 
     def _car(self, r: int, turn: int) -> bool:
-        lane = self.lanes.get(r)
-        return lane is not None and lane.row(turn)[self.col] != EMPTY
+        cycle = self.cycles.get(r)
+        return cycle is not None and cycle[turn % len(cycle)][self.col] != EMPTY
 
     def _play(self, action: int) -> None:
         p = self.params
@@ -87,9 +96,9 @@ class Freeway(ArcadeTask):
             self.say("Hit by a car!")
 
     def _rows(self) -> list[str]:
-        rows = self.still[:]
-        for r, lane in self.lanes.items():
-            rows[r] = lane.row(self.tick)
+        rows, tick = self.still[:], self.tick
+        for r, cycle in self.cycles.items():
+            rows[r] = cycle[tick % len(cycle)]
         return rows
 
     def _sprites(self):

@@ -107,13 +107,20 @@ class Frostbite(ArcadeTask):
             self.lose_life("You froze!")
 
     def _rows(self) -> list[str]:
-        rows = self.still[:]
-        for r, line in self.drift.rows(self.tick).items():
-            rows[r] = line.replace(WHITE, BLUE) if r in self.blue else line
+        rows, tick, blue = self.still[:], self.tick, self.blue
+        for r, cycle in self.drift.cycles.items():
+            row = cycle[tick % len(cycle)]
+            rows[r] = row.replace(WHITE, BLUE) if r in blue else row
         return rows
 
     def _sprites(self):
         return ((self.r, self.c, YOU),)
+
+    def _grid(self) -> list[str]:
+        rows = self._rows()             # (you are always on the field)
+        line = rows[self.r]
+        rows[self.r] = line[:self.c] + YOU + line[self.c + 1:]
+        return rows
 
     def _extra_hud(self) -> str:
         return f"Cold {self.clock.left}" if self.params.cold else ""

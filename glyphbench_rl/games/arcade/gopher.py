@@ -76,6 +76,7 @@ class Gopher(Shooter):
 
     def _setup(self, rng) -> None:
         self.arm(rng, row=0)
+        self._plain = self._carrots_hud = None
         self.gopher = Body(self.params.height - 1, 0)
         self._aim()
 
@@ -126,7 +127,10 @@ class Gopher(Shooter):
         pass
 
     def _hud(self) -> str:
-        return super()._hud().replace("Lives", "Carrots")
+        hud = super()._hud()
+        if hud is not self._plain:   # (the engine hands back the same text while it holds)
+            self._plain, self._carrots_hud = hud, hud.replace("Lives", "Carrots")
+        return self._carrots_hud
 
     def _sprites(self):
         return [(self.gopher.r, self.gopher.c, GOPHER), (self.row, self.col, FARMER)]

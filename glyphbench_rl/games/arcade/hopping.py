@@ -23,22 +23,30 @@ HOPS = ((0, 0), (-1, -1), (-1, 0), (1, 0), (1, 1))   # (row, index) change of a 
 
 class Drift:
     """Drifting rows: ``lanes`` maps a grid row to its ``Lane``; a cell is solid where the lane
-    shows something other than ``water``."""
-    __slots__ = ("lanes", "water")
+    shows something other than ``water``. A lane's row repeats every ``period x length`` ticks:
+    ``cycles`` holds, per grid row, its row at each tick of that cycle (made once, with the
+    lanes), so a turn looks its rows up instead of working out each shift."""
+    __slots__ = ("lanes", "water", "cycles")
 
     def __init__(self, lanes: dict[int, Lane], water: str) -> None:
         self.lanes, self.water = lanes, water
+        self.cycles = {r: [lane.row(t) for t in range(lane.period * len(lane.pattern))]
+                       for r, lane in lanes.items()}
+
+    def line(self, r: int, tick: int) -> str:
+        """The row of the lane on grid row ``r`` at the end of ``tick``."""
+        cycle = self.cycles[r]
+        return cycle[tick % len(cycle)]
 
     def solid(self, r: int, c: int, tick: int) -> bool:
-        lane = self.lanes.get(r)
-        return lane is not None and lane.row(tick)[c % len(lane.pattern)] != self.water
+        return r in self.lanes and self.line(r, tick)[c % len(self.lanes[r].pattern)] != self.water
 
     def carry(self, r: int, tick: int) -> int:
         lane = self.lanes.get(r)
         return 0 if lane is None else lane.moves_at(tick)
 
     def rows(self, tick: int) -> dict[int, str]:
-        return {r: lane.row(tick) for r, lane in self.lanes.items()}
+        return {r: self.line(r, tick) for r in self.lanes}
 
 
 class Pyramid:
@@ -62,15 +70,18 @@ class Pyramid:
 class Ladders:
     """Floors on ``floors`` (grid rows, bottom first) and ladders: ``ladders[j]`` the columns of
     the ladders from floor j up to floor j + 1; ladder cells are the rows between the two."""
-    __slots__ = ("floors", "ladders", "cells")
+    __slots__ = ("floors", "ladders", "cells", "levels")
 
     def __init__(self, floors: list[int], ladders: list[list[int]]) -> None:
         self.floors, self.ladders = floors, ladders
         self.cells = {(r, c) for j, cols in enumerate(ladders) for c in cols
                       for r in range(floors[j + 1], floors[j] + 1)}
+        self.levels: dict[int, int] = {}            # grid row -> its floor (the first listed)
+        for j, r in enumerate(floors):
+            self.levels.setdefault(r, j)
 
     def climb(self, r: int, c: int, dr: int) -> bool:
         return (r, c) in self.cells and (r + dr, c) in self.cells
 
     def floor_of(self, r: int) -> int | None:
-        return self.floors.index(r) if r in self.floors else None
+        return self.levels.get(r)

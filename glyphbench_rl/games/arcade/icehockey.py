@@ -75,11 +75,13 @@ class IceHockey(ArcadeTask):
         self.has.give(None)
 
     def _skate(self, who: list, other: list, dr: int, dc: int) -> None:
+        if not dr and not dc:                              # (a skater is always on the ice)
+            return
         p = self.params
         r, c = clamp(who[0] + dr, 1, p.height - 2), clamp(who[1] + dc, 0, p.width - 1)
-        if [r, c] == other and who is self.cpu and dr:     # blocked head-on: it steps around
+        if r == other[0] and c == other[1] and who is self.cpu and dr:   # blocked head-on: it steps around
             r, c = who[0], clamp(who[1] + (1 if who[1] < p.width // 2 else -1), 0, p.width - 1)
-        if [r, c] != other:
+        if r != other[0] or c != other[1]:
             who[0], who[1] = r, c
 
     def _shoot(self, who: list, toward: int) -> None:
@@ -90,31 +92,31 @@ class IceHockey(ArcadeTask):
         self.has.give(None)
 
     def _play(self, action: int) -> None:
-        p, pk, me, cpu = self.params, self.puck, self.me, self.cpu
+        p, pk, me, cpu, has = self.params, self.puck, self.me, self.cpu, self.has
         beside = abs(me[0] - cpu[0]) + abs(me[1] - cpu[1]) == 1
         if action == SHOOT:
-            if self.has.mine():
+            if has.holder == "you":
                 self._shoot(me, -1)
-            elif self.has.holder == "cpu" and beside:
-                self.has.give("you")
+            elif has.holder == "cpu" and beside:
+                has.give("you")
                 self.say("You poke the puck away.")
         else:
             self._skate(me, cpu, *MOVES[action])
-        if self.has.holder == "cpu":
+        if has.holder == "cpu":
             if cpu[0] >= p.height - 1 - p.reach and self.draws.random() < p.chance:
                 self._shoot(cpu, 1)
             else:
                 self._skate(cpu, me, *pursue(cpu[0], cpu[1], p.height - 2, self.left + p.mouth // 2, p.chance, self.draws))
         else:
-            target = (me[0], me[1]) if self.has.mine() else (pk.r, pk.c)
+            target = (me[0], me[1]) if has.holder == "you" else (pk.r, pk.c)
             self._skate(cpu, me, *pursue(cpu[0], cpu[1], *target, p.chance, self.draws))
-            if self.has.mine() and abs(me[0] - cpu[0]) + abs(me[1] - cpu[1]) == 1 and self.draws.random() < p.poke:
-                self.has.give("cpu")
+            if has.holder == "you" and abs(me[0] - cpu[0]) + abs(me[1] - cpu[1]) == 1 and self.draws.random() < p.poke:
+                has.give("cpu")
                 self.say("The opponent pokes the puck away.")
-        if self.has.holder is None:
+        if has.holder is None:
             self._glide()
-        if self.has.holder:                      # a carried puck sits just ahead of its carrier
-            who, ahead = (me, -1) if self.has.mine() else (cpu, 1)
+        if has.holder:                      # a carried puck sits just ahead of its carrier
+            who, ahead = (me, -1) if has.holder == "you" else (cpu, 1)
             pk.r, pk.c, pk.dr, pk.dc = who[0] + ahead, who[1], 0, 0
 
     def _glide(self) -> None:

@@ -101,7 +101,7 @@ class Kangaroo(ArcadeTask):
 
     def _hit(self) -> bool:
         here = (self.r, self.c)
-        if here in self.nuts or any((m[0], m[1]) == here for m in self.monkeys):
+        if here in self.nuts or (self.monkeys and any((m[0], m[1]) == here for m in self.monkeys)):
             self.nuts = [n for n in self.nuts if n != here]
             return self.lose_life("Ouch!")
         return False
@@ -157,6 +157,26 @@ class Kangaroo(ArcadeTask):
         out += [(r, c, NUT) for r, c in self.nuts]
         out.append((self.r, self.c, YOU))
         return out
+
+    def _grid(self) -> list[str]:
+        """``_sprites()`` drawn straight from the positions (all inside the building)."""
+        rows = self.still[:]
+        for r, c in self.fruit:
+            line = rows[r]
+            rows[r] = line[:c] + FRUIT + line[c + 1:]
+        if not self.params.floors_pay:
+            r = self.ladders.floors[-1]
+            rows[r] = rows[r][:-1] + JOEY
+        for r, c, _ in self.monkeys:
+            line = rows[r]
+            rows[r] = line[:c] + MONKEY + line[c + 1:]
+        for r, c in self.nuts:
+            line = rows[r]
+            rows[r] = line[:c] + NUT + line[c + 1:]
+        r, c = self.r, self.c
+        line = rows[r]
+        rows[r] = line[:c] + YOU + line[c + 1:]
+        return rows
 
 
 register_arcade(Kangaroo, "kangaroo",

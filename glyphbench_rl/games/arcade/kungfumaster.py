@@ -75,24 +75,26 @@ class KungFuMaster(ArcadeTask):
         self.camera = Camera(p.world, p.width, wrap=False)
         self.enemies: list[Body] = []
         self.knives: list[Body] = []
+        self._floor_texts()
 
     def _play(self, action: int) -> None:
         p = self.params
         if action in (LEFT, RIGHT, FACE_LEFT, FACE_RIGHT):
             self.face = -1 if action in (LEFT, FACE_LEFT) else 1
-        if action in (LEFT, RIGHT) and not any(e.c == self.x + self.face for e in self.enemies):
+        if action in (LEFT, RIGHT) and not self._blocked(self.x + self.face):
             self.x = min(p.world - 1, max(0, self.x + self.face))
             if self.x == 0 and p.world > p.width:
                 self.floor += 1
                 self.x, self.enemies, self.knives = p.world - 3, [], []
                 self.say(f"Floor {self.floor}!")
+                self._floor_texts()
         elif action in (PUNCH, KICK):
             self._strike(1 if action == PUNCH else 2)
             if self.done:
                 return
         elif action == DUCK:
             self.ducked = self.tick + 1
-        if self._knives() or self._walk():
+        if (self.knives and self._knives()) or self._walk():
             return
         if self.tick % p.spawn == 0:
             self.side = -self.side
@@ -100,6 +102,12 @@ class KungFuMaster(ArcadeTask):
             if c != self.x:
                 kind = THROWER if p.throwers and self.draws.random() < p.throwers else GRIPPER
                 self.enemies.append(Body(self.row, c, glyph=kind, data=0))
+
+    def _blocked(self, c: int) -> bool:
+        for e in self.enemies:
+            if e.c == c:
+                return True
+        return False
 
     def _strike(self, reach: int) -> None:
         for d in range(1, reach + 1):
@@ -126,15 +134,16 @@ class KungFuMaster(ArcadeTask):
         p = self.params
         if self.tick % p.walk:
             return False
+        x = self.x
         for e in self.enemies:
-            gap = self.x - e.c
-            if e.glyph == THROWER and abs(gap) <= 3:
+            gap = x - e.c
+            if -3 <= gap <= 3 and e.glyph == THROWER:
                 if self.tick - e.data >= p.throw:
                     e.data = self.tick
                     self.knives.append(Body(self.row - 1, e.c, dc=1 if gap > 0 else -1))
                 continue
             e.c += 1 if gap > 0 else -1
-            if e.c == self.x:
+            if e.c == x:
                 self.enemies.remove(e)
                 return self.lose_life("An enemy grabbed you!") or True
         return False
@@ -143,20 +152,34 @@ class KungFuMaster(ArcadeTask):
         self.enemies = [e for e in self.enemies if abs(e.c - self.x) > 3]
         self.knives = []
 
-    def _sprites(self):
+    def _grid(self) -> list[str]:
         cam = self.camera
         cam.follow(self.x)
-        out = [(e.r, cam.screen(e.c), e.glyph) for e in self.enemies]
-        out += [(k.r, cam.screen(k.c), KNIFE) for k in self.knives]
-        me = cam.screen(self.x)
+        left, w, rows = cam.left, self.params.world, self.still[:]
+        view = len(rows[0])
+        for e in self.enemies:                 # (enemies walk your row, knives fly above it)
+            c = (e.c - left) % w
+            if c < view:
+                line = rows[e.r]
+                rows[e.r] = line[:c] + e.glyph + line[c + 1:]
+        for k in self.knives:
+            c = (k.c - left) % w
+            if c < view:
+                line = rows[k.r]
+                rows[k.r] = line[:c] + KNIFE + line[c + 1:]
+        c, r = (self.x - left) % w, self.row     # you are always in view
         if self.tick > self.ducked:
-            out.append((self.row - 1, me, HEAD))
-        out.append((self.row, me, FIGHTER))
-        return out
+            rows[r - 1] = rows[r - 1][:c] + HEAD + rows[r - 1][c + 1:]
+        rows[r] = rows[r][:c] + FIGHTER + rows[r][c + 1:]
+        return rows
+
+    def _floor_texts(self) -> None:
+        """The HUD's note for each way you may face, made when the floor changes."""
+        floor = f" | Floor {self.floor}" if self.params.world > self.params.width else ""
+        self.hud_notes = {-1: "facing left" + floor, 1: "facing right" + floor}
 
     def _extra_hud(self) -> str:
-        face = "facing left" if self.face < 0 else "facing right"
-        return f"{face} | Floor {self.floor}" if self.params.world > self.params.width else face
+        return self.hud_notes[self.face]
 
 
 register_arcade(KungFuMaster, "kungfumaster",

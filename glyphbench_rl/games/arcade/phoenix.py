@@ -12,6 +12,8 @@ from .shooter import BOMB, CANNON, SHOT, Shooter, ShooterParams, march, shooter_
 
 BIRD, DIVER, SHIELDED = "V", "v", "@"
 SHIELD = 4
+ON_TEXT = tuple(f"Shield {k}" for k in range(11))        # the HUD's shield notes, made once
+WAIT_TEXT = tuple(f"Shield in {k}" for k in range(101))
 
 
 @dataclass(frozen=True)
@@ -68,9 +70,9 @@ class Phoenix(Shooter):
         self.dx = 1
 
     def _play(self, action: int) -> None:
-        p, d = self.params, self.draws
-        if action == SHIELD and p.shield and self.tick >= self.next_guard:
-            self.guard, self.next_guard = p.shield, self.tick + p.recharge
+        p, d, tick = self.params, self.draws, self.tick
+        if action == SHIELD and p.shield and tick >= self.next_guard:
+            self.guard, self.next_guard = p.shield, tick + p.recharge
         if self.guard:
             self.guard -= 1
             self.cannon = SHIELDED
@@ -78,43 +80,59 @@ class Phoenix(Shooter):
                 action = 0
         else:
             self.cannon = CANNON
-        self.steer(action)
-        flock = [b for b in self.pack.bodies if b.glyph == BIRD]
-        drift, down = self.tick % p.drift == 0, self.tick % p.descend == 0
+        if action:
+            self.steer(action)
+        bodies = self.pack.bodies
+        flock = [b for b in bodies if b.glyph == BIRD]
+        drift, down = tick % p.drift == 0, tick % p.descend == 0
         if drift or down:
             dx = march(flock, self.dx if drift else 0, 0, p.width - 1, down)
             self.dx = dx if drift else self.dx
+        divers = len(bodies) - len(flock)
         if flock and d.random() < p.dive:
             flock[d.below(len(flock))].glyph = DIVER
-        for b in self.pack.bodies:
-            if b.glyph == DIVER:
-                b.r += 1
-                if b.r % 2 == 0:
-                    b.c += (self.col > b.c) - (self.col < b.c)
-        if self.shoot_down("Bird down!") is None:
+            divers += 1
+        if divers:   # a row down, a column toward you every other row
+            col = self.col
+            for b in bodies:
+                if b.glyph == DIVER:
+                    b.r += 1
+                    if b.r % 2 == 0:
+                        b.c += (col > b.c) - (col < b.c)
+        if self.gun.shots and self.shoot_down("Bird down!") is None:
             return
-        if not self.pack.bodies:
+        if not bodies:
             self._flock()
-        for b in self.pack.bodies:
-            if b.r >= self.row and (b.r, b.c) != (self.row, self.col):
-                if b.glyph == BIRD:
+        row, col, touching = self.row, self.col, None
+        for b in bodies:
+            if b.r >= row:
+                if b.r == row and b.c == col:   # on you: the first such is the one that hits you
+                    if touching is None:
+                        touching = b
+                elif b.glyph == BIRD:
                     self.lives = 1
                     self.lose_life("The flock reached your row.")
                     return
-                b.r, b.glyph = 1, BIRD
-        if self.touches():
-            self.pack.kill(self.pack.at(self.row, self.col))
+                else:                          # a diver that missed climbs back to the top
+                    b.r, b.glyph = 1, BIRD
+        if touching is not None:
+            self.pack.kill(touching)
             if not self.guard and self.lose_life("A bird hit you."):
                 return
-        self.maybe_drop()
-        if self.rain() and not self.guard:
+        if p.bomb_chance:
+            self.maybe_drop()
+        if self.bombs.shots and self.rain() and not self.guard:
             self.lose_life("A bomb hit you.")
 
     def _extra_hud(self) -> str:
         if not self.params.shield:
             return ""
-        return f"Shield {self.guard}" if self.guard else (
-            "Shield ready" if self.tick >= self.next_guard else f"Shield in {self.next_guard - self.tick}")
+        if self.guard:
+            return ON_TEXT[self.guard] if self.guard < len(ON_TEXT) else f"Shield {self.guard}"
+        wait = self.next_guard - self.tick
+        if wait <= 0:
+            return "Shield ready"
+        return WAIT_TEXT[wait] if wait < len(WAIT_TEXT) else f"Shield in {wait}"
 
 
 register_arcade(Phoenix, "phoenix",

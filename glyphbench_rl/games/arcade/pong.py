@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from ...core.actions import ActionSet
 from ...core.params import param
 from .bodies import Body, track
+from .duel import velocity_text
 from .engine import EMPTY, ArcadeParams, ArcadeTask, register_arcade
 
 WALL, BALL, YOU, CPU = "=", "o", "]", "["
@@ -81,17 +82,18 @@ class Pong(ArcadeTask):
 
     def _play(self, action: int) -> None:
         p, b = self.params, self.ball
-        self.me = min(max(1, self.me + MOVES[action]), p.height - 1 - p.paddle)
-        self.cpu = min(max(1, self.cpu + track(self.cpu + p.paddle // 2, b.r, p.chance, self.draws)),
-                       p.height - 1 - p.paddle)
+        low = p.height - 1 - p.paddle
+        self.me = min(max(1, self.me + MOVES[action]), low)
+        self.cpu = min(max(1, self.cpu + track(self.cpu + p.paddle // 2, b.r, p.chance, self.draws)), low)
         speed = 1 + (self.hits // p.speedup if p.speedup else 0)
         speed = min(speed, p.top_speed)
+        bottom, right = p.height - 1, p.width - 2
         for _ in range(speed):
-            if b.r + b.dr in (0, p.height - 1):
+            if b.r + b.dr == 0 or b.r + b.dr == bottom:
                 b.dr = -b.dr
             col = b.c + b.dc
-            if col == p.width - 2 or col == 1:
-                top = self.me if col == p.width - 2 else self.cpu
+            if col == right or col == 1:
+                top = self.me if col == right else self.cpu
                 bounce = self._paddle_hit(top, b.r + b.dr)
                 if bounce is not None:
                     b.dc, b.dr = -b.dc, bounce
@@ -123,8 +125,7 @@ class Pong(ArcadeTask):
         return ((self.ball.r, self.ball.c, BALL),)
 
     def _extra_hud(self) -> str:
-        b = self.ball
-        return f"Ball v {b.dr:+d},{b.dc:+d}"
+        return velocity_text(self.ball)
 
 
 register_arcade(Pong, "pong",

@@ -102,6 +102,19 @@ class Qbert(ArcadeTask):
         out.append((*self.pyramid.cell(self.cube), YOU))
         return out
 
+    def _grid(self) -> list[str]:
+        """``_sprites()`` drawn straight from the cubes (balls and you are always on one)."""
+        rows, top, apex = self.still[:], self.pyramid.top, self.pyramid.apex
+        for k, i in self.balls:
+            r, c = top + k, apex - k + 2 * i
+            line = rows[r]
+            rows[r] = line[:c] + BALL + line[c + 1:]
+        k, i = self.cube
+        r, c = top + k, apex - k + 2 * i
+        line = rows[r]
+        rows[r] = line[:c] + YOU + line[c + 1:]
+        return rows
+
 
 register_arcade(Qbert, "qbert",
                 mini=dict(max_turns=300),

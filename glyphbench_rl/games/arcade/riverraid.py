@@ -11,7 +11,7 @@ from ...core.actions import ActionSet
 from ...core.params import param
 from .bodies import Countdown, Gun
 from .engine import EMPTY, ArcadeParams, ArcadeTask, register_arcade
-from .scroller import Channel, Pacer, Strip, banks_fit, put_one
+from .scroller import Channel, Pacer, Strip, banks_fit, fly_shots, put_one
 
 JET, SHIP, HELI, FUEL, BANK, BRIDGE, SHOT = "A", "S", "H", "F", "#", "=", "|"
 ENEMIES = (SHIP, HELI)
@@ -93,7 +93,12 @@ class RiverRaid(ArcadeTask):
         return put_one(line, c, SHIP if self.draws.random() < 0.5 else HELI)
 
     def _shot_hits(self, r: int, c: int) -> bool:
-        return r < 0 or self.strip.get(r, c) not in (EMPTY, BRIDGE)
+        """What stops a shot flying up its column (always on the map's columns)."""
+        return r < 0 or self.strip.rows[r][c] not in (EMPTY, BRIDGE)
+
+    def _shot_at(self, r: int, c: int) -> None:
+        if r >= 0:
+            self._strike(r, c)
 
     def _strike(self, r: int, c: int) -> None:
         """A shot reached (r, c): an enemy there counts; a depot is just gone."""
@@ -106,17 +111,17 @@ class RiverRaid(ArcadeTask):
 
     def _play(self, action: int) -> None:
         p = self.params
-        self.col = min(p.width - 1, max(0, self.col + MOVES[action]))
+        c = self.col + MOVES[action]
+        self.col = 0 if c < 0 else min(c, p.width - 1)
         if action == FIRE:
             self.gun.fire(self.tick, self.jet_r - 1, self.col, -1, 0, SHOT)
-        for shot, cell in self.gun.advance(self._shot_hits):
-            if cell is not None and cell[0] >= 0:
-                self._strike(*cell)
+        if self.gun.shots:
+            fly_shots(self.gun, self._shot_hits, self._shot_at)
         if self.done or self._crashed():
             return
         if self.pacer.due(self.tick):
             gone = self.strip.scroll(self._line())
-            passed = sum(gone.count(e) for e in ENEMIES)
+            passed = gone.count(SHIP) + gone.count(HELI)
             if passed:
                 self.score.gain(passed)
             for shot in self.gun.shots:
@@ -129,7 +134,9 @@ class RiverRaid(ArcadeTask):
             self.lose_life("Out of fuel!")
 
     def _crashed(self) -> bool:
-        here = self.strip.get(self.jet_r, self.col)
+        here = self.strip.rows[self.jet_r][self.col]
+        if here == EMPTY:
+            return False
         if here == FUEL:
             self.fuel.refill()
         elif here == BRIDGE:
@@ -155,13 +162,14 @@ class RiverRaid(ArcadeTask):
         self.gun.shots = []
         self.fuel.refill()
 
-    def _rows(self) -> list[str]:
-        return self.strip.rows[:]
-
-    def _sprites(self):
-        out = [(s.r, s.c, SHOT) for s in self.gun.shots]
-        out.append((self.jet_r, self.col, JET))
-        return out
+    def _grid(self) -> list[str]:
+        rows = self.strip.rows[:]
+        for s in self.gun.shots:               # (shots fly up inside the map)
+            line = rows[s.r]
+            rows[s.r] = line[:s.c] + SHOT + line[s.c + 1:]
+        line = rows[self.jet_r]
+        rows[self.jet_r] = line[:self.col] + JET + line[self.col + 1:]
+        return rows
 
     def _extra_hud(self) -> str:
         return f"Fuel {self.fuel.left}" if self.params.fuel else ""

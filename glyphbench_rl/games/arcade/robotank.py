@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 from ...core.params import param
 from .arena import EMPTY, SHELL, SHOT, ArenaParams, ArenaTask, you_glyphs
-from .engine import register_arcade
+from .engine import ArcadeTask, register_arcade
 
 ROBOT = "R"
 SYSTEMS = ("video", "cannon", "radar", "treads")
@@ -57,14 +57,14 @@ class Robotank(ArenaTask):
     def _setup(self, rng) -> None:
         p = self.params
         self.start_arena(rng, p.height // 2, p.width // 2)
+        self._systems = (-1, "")
         self.stock()
 
     def broken(self, system: str) -> bool:
-        k = SYSTEMS.index(system)
-        return self.params.lives > 1 and self.params.lives - self.lives > k
+        return self.params.lives > 1 and self.params.lives - self.lives > SYSTEMS.index(system)
 
     def _play(self, action: int) -> None:
-        if self.broken("treads") and self.tick % 2 and self.MOVES[action] is not None:
+        if self.lives < self.params.lives and self.broken("treads") and self.tick % 2 and self.MOVES[action] is not None:
             action = 0
         super()._play(action)
 
@@ -90,8 +90,18 @@ class Robotank(ArenaTask):
             out = [s for s in out if s[2] != ROBOT or abs(s[0] - self.r) + abs(s[1] - self.c) <= 6]
         return out
 
+    def _grid(self) -> list[str]:
+        if self.broken("video"):            # (any hit taken) some movers are hidden: draw the list
+            return ArcadeTask._grid(self)
+        return super()._grid()
+
     def _extra_hud(self) -> str:
-        return "Systems " + ",".join(s for s in SYSTEMS[:self.params.lives] if not self.broken(s)) if self.params.lives > 1 else ""
+        if self.params.lives == 1:
+            return ""
+        if self._systems[0] != self.lives:  # (the text changes with the lives only)
+            self._systems = (self.lives, "Systems " + ",".join(
+                s for s in SYSTEMS[:self.params.lives] if not self.broken(s)))
+        return self._systems[1]
 
 
 register_arcade(Robotank, "robotank",

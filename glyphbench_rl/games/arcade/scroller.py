@@ -27,7 +27,8 @@ class Strip:
     """The window on a scrolling world: ``rows`` of equal width. ``scroll(line)`` moves the world
     one cell: "down" inserts ``line`` (a row) at the top and drops the bottom row, "up" appends
     it at the bottom and drops the top row, "left" appends ``line`` (one char per row, a string)
-    at the right edge and drops the left column. It returns what left the window."""
+    at the right edge and drops the left column. It returns what left the window; ``push(line)``
+    is the same move for a caller that does not need that."""
     __slots__ = ("rows", "axis", "shifts")
 
     def __init__(self, rows: list[str], axis: str = "down") -> None:
@@ -44,9 +45,17 @@ class Strip:
         if self.axis == "up":
             rows.append(line)
             return rows.pop(0)
-        gone = "".join(row[0] for row in rows)
+        gone = "".join([row[0] for row in rows])      # (a list joins faster than a generator)
         self.rows = [row[1:] + ch for row, ch in zip(rows, line)]
         return gone
+
+    def push(self, line: str) -> None:
+        """``scroll`` for a caller that does not need what left (sideways, that is a cost)."""
+        if self.axis == "left":
+            self.shifts += 1
+            self.rows = [row[1:] + ch for row, ch in zip(self.rows, line)]
+        else:
+            self.scroll(line)
 
     def preroll(self, n: int, make) -> None:
         """Scroll ``n`` fresh lines in before play starts (what leaves is not counted)."""
@@ -70,13 +79,14 @@ class Channel:
     spans columns ``left..right``; ``next(draws)`` lets each bank wander by at most one column
     (with probability ``wander``) while the span stays within [narrow, wide] cells and a
     one-cell bank remains on each side."""
-    __slots__ = ("width", "narrow", "wide", "wander", "left", "right")
+    __slots__ = ("width", "narrow", "wide", "wander", "left", "right", "texts")
 
     def __init__(self, width: int, narrow: int, wide: int, wander: float = 0.3) -> None:
         self.width, self.narrow, self.wide, self.wander = width, narrow, min(wide, width - 2), wander
         span = self.wide
         self.left = (width - span) // 2
         self.right = self.left + span - 1
+        self.texts: dict = {}             # (bank, water, left, right) -> the line's text
 
     def next(self, draws) -> tuple[int, int]:
         if self.narrow < self.wide and draws.random() < self.wander:
@@ -98,8 +108,14 @@ class Channel:
         return left, right, self.line(bank)
 
     def line(self, bank: str, water: str = EMPTY) -> str:
-        """This line as text: banks outside the span, water inside."""
-        return bank * self.left + water * (self.right - self.left + 1) + bank * (self.width - 1 - self.right)
+        """This line as text: banks outside the span, water inside (made once per span)."""
+        key = (bank, water, self.left, self.right)
+        text = self.texts.get(key)
+        if text is None:
+            left, right = self.left, self.right
+            text = self.texts[key] = (bank * left + water * (right - left + 1)
+                                      + bank * (self.width - 1 - right))
+        return text
 
 
 class Pacer:
@@ -120,6 +136,46 @@ class Pacer:
 def put_one(line: str, c: int, ch: str) -> str:
     """``line`` with ``ch`` at column ``c``."""
     return line[:c] + ch + line[c + 1:]
+
+
+def fly_shots(gun: Gun, hit, strike) -> None:
+    """``gun.advance(hit)`` for shots that move, at most one cell a step on each axis (every
+    shot here), without a generator: each shot steps cell by cell, ``speed`` cells, and stops
+    at the first cell where ``hit(r, c)`` is true; ``strike(r, c)`` then hears of it at once (as
+    a caller looping over ``advance`` would) and returns True to stop the volley (the episode
+    ended: like a caller leaving the loop, the gun keeps its shots as they stand)."""
+    kept, speed = [], gun.speed
+    for shot in gun.shots:
+        dr, dc, r, c = shot.dr, shot.dc, shot.r, shot.c
+        struck = False
+        for _ in range(speed):
+            r += dr
+            c += dc
+            if hit(r, c):
+                struck = True
+                break
+            shot.r, shot.c = r, c
+        shot.data -= speed
+        if struck:
+            shot.alive = False
+            if strike(r, c):
+                return
+        elif shot.data <= 0:
+            shot.alive = False
+        else:
+            kept.append(shot)
+    gun.shots = kept
+
+
+def stamp(rows: list[str], things, glyph: str) -> None:
+    """Draw ``glyph`` on ``rows`` at each thing's (``.r``, ``.c``), skipping cells off the rows
+    (cheaper than a (row, col, glyph) per mover through ``_sprites``)."""
+    h, w = len(rows), len(rows[0])
+    for t in things:
+        r, c = t.r, t.c
+        if 0 <= c < w and 0 <= r < h:
+            line = rows[r]
+            rows[r] = line[:c] + glyph + line[c + 1:]
 
 
 class Camera:
@@ -154,8 +210,9 @@ class Flyer:
     """Mixin for an ``ArcadeTask`` whose ship flies over a ground row on a wrapping world the
     view follows (Chopper Command, Defender): its Params have ``world`` and ``reach``; it faces
     the way it last moved and FIRE (``FLY_ACTIONS``) shoots that way. ``fly_start(r)`` in
-    ``_setup``; ``fly(action, lowest)`` moves and fires; ``fly_sprites(out)`` adds the shots and
-    the ship to ``out``, drawn through ``self.camera``."""
+    ``_setup``; ``fly(action, lowest)`` moves and fires; in ``_grid``, ``fly_view()`` moves the
+    camera and gives the rows to draw on, ``fly_draw(rows)`` draws the shots and the ship (a world
+    column x is at view column ``(x - left) % world``, as ``Camera.screen`` has it)."""
 
     def fly_fields(self) -> dict:
         p = self.params
@@ -176,16 +233,34 @@ class Flyer:
         dr, dc = FLY_MOVES[action]
         if dc:
             self.face = dc
-        self.r = min(lowest, max(0, self.r + dr))
+        r = self.r + dr
+        self.r = 0 if r < 0 else min(r, lowest)
         self.x = (self.x + dc) % self.params.world
         if action == FLY_FIRE:
             self.gun.fire(self.tick, self.r, self.x, 0, self.face, FLY_SHOT)
 
-    def fly_sprites(self, out: list) -> list:
-        cam, w = self.camera, self.params.world
-        out += [(s.r, cam.screen(s.c % w), FLY_SHOT) for s in self.gun.shots if s.c != self.x]
-        out.append((self.r, cam.screen(self.x), RIGHT_ME if self.face > 0 else LEFT_ME))
-        return out
+    def fly_view(self) -> tuple[list[str], int, int, int]:
+        """The camera follows you; then the still rows to draw on (a copy), the view's first
+        world column, the world's width and the view's width."""
+        cam = self.camera
+        cam.follow(self.x)
+        return self.still[:], cam.left, self.params.world, cam.view
+
+    def fly_draw(self, rows: list[str]) -> list[str]:
+        """Draw the shots (bar one still on your cell) and the ship on ``rows``, through
+        ``self.camera`` (moved to follow you by the caller); all fly inside the rows."""
+        left, w, x, view = self.camera.left, self.params.world, self.x, len(rows[0])
+        for s in self.gun.shots:
+            if s.c != x:
+                c = (s.c - left) % w
+                if c < view:
+                    line = rows[s.r]
+                    rows[s.r] = line[:c] + FLY_SHOT + line[c + 1:]
+        c = (x - left) % w
+        if c < view:
+            line = rows[self.r]
+            rows[self.r] = line[:c] + (RIGHT_ME if self.face > 0 else LEFT_ME) + line[c + 1:]
+        return rows
 
 
 def banks_fit(p) -> None:

@@ -82,13 +82,15 @@ class Seaquest(ArenaTask):
                 d.c += d.dc
                 if not 0 <= d.c < p.width:
                     d.dc, d.c = -d.dc, d.c - 2 * d.dc
+        r, c, picked = self.r, self.c, False
         for d in self.swimmers:
-            if (d.r, d.c) == (self.r, self.c):
-                d.alive = False
+            if d.r == r and d.c == c:
+                d.alive, picked = False, True
                 self.carried += 1
                 self.say("Diver rescued.")
                 self.score.gain()
-        self.swimmers = [d for d in self.swimmers if d.alive]
+        if picked:
+            self.swimmers = [d for d in self.swimmers if d.alive]
 
     def _restock(self) -> None:
         p = self.params
@@ -104,11 +106,11 @@ class Seaquest(ArenaTask):
             self.score.gain()
         self.add_foe(foe.r, 0 if foe.dc > 0 else self.params.width - 1, 0, foe.dc)
 
-    def _sprites(self):
-        return [(d.r, d.c, DIVER) for d in self.swimmers] + super()._sprites()
+    def _below(self):
+        return [(d.r, d.c, DIVER) for d in self.swimmers]
 
     def _extra_hud(self) -> str:
-        return f"{super()._extra_hud()} | Divers {self.carried}/{self.params.divers}"
+        return f"{self.air_name} {self.air.left} | Divers {self.carried}/{self.params.divers}"
 
 
 register_arcade(Seaquest, "seaquest",

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 from ...core.actions import ActionSet
 from ...core.params import param
-from .bodies import Body, Gun
+from .bodies import Body, Gun, sweep
 from .engine import ArcadeParams, ArcadeTask
 
 NOOP, LEFT, RIGHT, FIRE = 0, 1, 2, 3
@@ -65,7 +65,7 @@ class Pack:
 
     def at(self, r: int, c: int) -> Body | None:
         for b in self.bodies:
-            if b.r == r and b.c == c:
+            if b.c == c and b.r == r:   # (columns first: a formation shares its rows)
                 return b
         return None
 
@@ -74,7 +74,14 @@ class Pack:
         self.bodies.remove(body)
 
     def lowest(self) -> int:
-        return max((b.r for b in self.bodies), default=-1)
+        bodies = self.bodies
+        if not bodies:
+            return -1
+        low = bodies[0].r
+        for b in bodies:   # (a loop: a generator costs more than the few bodies)
+            if b.r > low:
+                low = b.r
+        return low
 
     def __len__(self) -> int:
         return len(self.bodies)
@@ -135,6 +142,9 @@ class Shooter(ArcadeTask):
         self.gun = Gun(cooldown=p.cooldown, speed=p.shot_speed, reach=p.height, limit=p.shots)
         self.bombs = Gun(cooldown=0, speed=1, reach=p.height, limit=p.bombs)
         self.pack = Pack()
+        self._me = Body(0, 0)              # the cannon, as _grid draws it
+        # _blocks, or None where the game keeps the default (nothing blocks: no call per cell)
+        self._blocking = None if type(self)._blocks is Shooter._blocks else self._blocks
 
     def _lanes(self) -> list[int] | None:
         return list(self.lanes) if self.lanes else None
@@ -156,17 +166,66 @@ class Shooter(ArcadeTask):
     def volley(self, at=None) -> list[tuple[Body, tuple[int, int]]]:
         """Move your shots; (enemy, cell) for each that hit one of ``at(r, c)`` (the pack's by
         default; a shot leaving the field or hitting ``_blocks`` is gone)."""
-        if not self.gun.shots:
+        gun = self.gun
+        if not gun.shots:
             return []
-        at = at or self.pack.at
-        hits = []
-        for shot, cell in self.gun.advance(lambda r, c: r < 0 or self._blocks(r, c) or at(r, c) is not None):
-            if cell is not None and cell[0] >= 0:
-                foe = at(*cell)
-                if foe is not None:
-                    hits.append((foe, cell))
-                else:
-                    self._struck(*cell)
+        blocks = self._blocking
+        speed = gun.speed
+        hits, kept = [], []
+        foe = None
+        if at is None:   # the pack holds still while shots fly: index it by cell once
+            lanes: set[int] | None = set()   # the columns straight shots fly up (None: any)
+            for shot in gun.shots:
+                if shot.dc:
+                    lanes = None
+                    break
+                lanes.add(shot.c)
+            cells: dict[tuple[int, int], Body] = {}
+            for b in reversed(self.pack.bodies):   # (reversed: the first body on a cell wins, as in at)
+                if lanes is None or b.c in lanes:
+                    cells[b.r, b.c] = b
+            find = cells.get
+
+            def stops(r: int, c: int) -> bool:   # remembers the enemy it found for the hit below
+                nonlocal foe
+                if r < 0:
+                    return True
+                foe = find((r, c))
+                return foe is not None or (blocks is not None and blocks(r, c))
+        else:
+            def stops(r: int, c: int) -> bool:   # as above, asking ``at``
+                nonlocal foe
+                if r < 0:
+                    return True
+                foe = at(r, c)
+                return foe is not None or (blocks is not None and blocks(r, c))
+
+        # Gun.advance's loop, inlined with sweep's for the usual shot (straight up): each shot
+        # moves and its hit is dealt with before the next one moves, as there
+        for shot in gun.shots:
+            if shot.dr == -1 and not shot.dc:
+                cell, r, c = None, shot.r, shot.c
+                for _ in range(speed):
+                    r -= 1
+                    if stops(r, c):
+                        cell = r, c
+                        break
+                    shot.r = r
+            else:
+                cell = sweep(shot, stops, speed) if (shot.dr or shot.dc) else None
+            shot.data -= speed
+            if cell is not None:
+                shot.alive = False
+                if cell[0] >= 0:
+                    if foe is not None:
+                        hits.append((foe, cell))
+                    else:
+                        self._struck(*cell)
+            elif shot.data <= 0:
+                shot.alive = False
+            else:
+                kept.append(shot)
+        gun.shots = kept
         return hits
 
     def shoot_down(self, say: str, at=None) -> list | None:
@@ -201,17 +260,41 @@ class Shooter(ArcadeTask):
 
     def rain(self) -> bool:
         """Bombs fall a cell; True when one reached the cannon (the bomb is gone)."""
-        if not self.bombs.shots:
+        bombs = self.bombs
+        if not bombs.shots:
             return False
         hit = False
         row, col, h = self.row, self.col, self.params.height
-        for bomb, cell in self.bombs.advance(lambda r, c: r >= h or (r == row and c == col) or self._blocks(r, c)):
-            if cell is None or cell[0] >= h:
-                continue
-            if cell == (row, col):
-                hit = True
+        blocks = self._blocking
+
+        def stops(r: int, c: int) -> bool:   # past the bottom, on you or on a blocking cell
+            return r >= h or (r == row and c == col) or (blocks is not None and blocks(r, c))
+
+        # Gun.advance's loop, inlined with sweep's for the usual bomb (a cell down a turn): each
+        # bomb's stop is dealt with before the next one falls, as there
+        speed, kept = bombs.speed, []
+        for bomb in bombs.shots:
+            if speed == 1 and bomb.dr == 1 and not bomb.dc:
+                r, c = bomb.r + 1, bomb.c
+                if stops(r, c):
+                    cell = r, c
+                else:
+                    bomb.r, cell = r, None
             else:
-                self._struck(*cell)
+                cell = sweep(bomb, stops, speed) if (bomb.dr or bomb.dc) else None
+            bomb.data -= speed
+            if cell is not None:
+                bomb.alive = False
+                if cell[0] < h:
+                    if cell[0] == row and cell[1] == col:
+                        hit = True
+                    else:
+                        self._struck(*cell)
+            elif bomb.data <= 0:
+                bomb.alive = False
+            else:
+                kept.append(bomb)
+        bombs.shots = kept
         return hit
 
     def touches(self) -> bool:
@@ -227,3 +310,29 @@ class Shooter(ArcadeTask):
         out += [(b.r, b.c, BOMB) for b in self.bombs.shots]
         out.append((self.row, self.col, self.cannon))
         return out
+
+    def _grid(self) -> list[str]:
+        """``_sprites`` drawn straight from the bodies (no list of tuples), in the same order;
+        a game that draws other sprites goes through ``ArcadeTask._grid``."""
+        if type(self)._sprites is not Shooter._sprites:
+            return super()._grid()
+        rows = self._rows()
+        h = len(rows)
+        self._grids += 1
+        drawn, draw = self._drawn, self._draw
+        me = self._me
+        me.r, me.c, me.glyph = self.row, self.col, self.cannon
+        for group, glyph in ((self.pack.bodies, None), (self.gun.shots, SHOT), (self.bombs.shots, BOMB),
+                             ((me,), None)):
+            for b in group:
+                r, c = b.r, b.c
+                if 0 <= r < h:
+                    line = rows[r]
+                    if 0 <= c < len(line):
+                        g = glyph or b.glyph
+                        if drawn is None:
+                            rows[r] = line[:c] + g + line[c + 1:]
+                        else:
+                            key = (line, c, g)
+                            rows[r] = drawn.get(key) or draw(key)
+        return rows

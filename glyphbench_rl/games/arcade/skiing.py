@@ -65,12 +65,13 @@ class Skiing(ArcadeTask):
         self.col, self.made, self.judged, self.since = p.width // 2, 0, 0, p.spacing - 2
         self.left = (p.width - p.gap - 2) // 2
         self.pacer, self.down_until = Pacer(1), 0
+        self.blank, self.note = EMPTY * p.width, f"Gates left {p.goal}"
         self.strip.preroll(p.height - p.row - 1, self._line)
 
     def _line(self) -> str:
         p = self.params
         self.since += 1
-        line = EMPTY * p.width
+        line = self.blank
         if self.made < p.goal and self.since >= p.spacing:
             self.since = 0
             self.made += 1
@@ -86,7 +87,8 @@ class Skiing(ArcadeTask):
         p = self.params
         if self.tick < self.down_until:
             return
-        self.col = min(p.width - 1, max(0, self.col + MOVES[action]))
+        c = self.col + MOVES[action]
+        self.col = 0 if c < 0 else min(c, p.width - 1)
         self.strip.scroll(self._line())
         row = self.strip.rows[p.row]
         here = row[self.col]
@@ -97,6 +99,7 @@ class Skiing(ArcadeTask):
         if left < 0:
             return
         self.judged += 1
+        self.note = f"Gates left {p.goal - self.judged}"
         if left < self.col <= left + p.gap:
             self.score.gain()
             self.say("Through the gate!")
@@ -106,14 +109,13 @@ class Skiing(ArcadeTask):
         if self.judged >= p.goal and not self.done:
             self.finish(won=False)
 
-    def _rows(self) -> list[str]:
-        return self.strip.rows[:]
-
-    def _sprites(self):
-        return ((self.params.row, self.col, SKIER),)
+    def _grid(self) -> list[str]:
+        rows, r, c = self.strip.rows[:], self.params.row, self.col
+        rows[r] = rows[r][:c] + SKIER + rows[r][c + 1:]
+        return rows
 
     def _extra_hud(self) -> str:
-        return f"Gates left {self.params.goal - self.judged}"
+        return self.note
 
 
 register_arcade(Skiing, "skiing",

@@ -91,31 +91,56 @@ class SpaceInvaders(ArcadeTask):
         self.waves += 1
         self.wave = Formation(p.rows, p.cols, 1, 1, 2, p.width, p.sweep, p.advance)
 
-    def _blocked(self, r: int, c: int) -> bool:
-        return not 0 <= r < self.params.height or self.still[r][c] == SHIELD
-
     def _play(self, action: int) -> None:
         p = self.params
-        self.col = min(p.width - 1, max(0, self.col + MOVES[action]))
-        if action == FIRE:
+        if MOVES[action]:
+            self.col = min(p.width - 1, max(0, self.col + MOVES[action]))
+        elif action == FIRE:
             self.gun.fire(self.tick, p.height - 1, self.col, -1, 0, SHOT)
         self.wave.tick(self.tick)
-        if self.wave.bottom() >= p.height - 1:
+        h = p.height
+        if self.wave.bottom() >= h - 1:
             self.lives = 1
             self.lose_life("The invaders landed.")
             return
-        wave = self.wave
-        for shot, cell in self.gun.advance(lambda r, c: self._blocked(r, c) or wave.member_at(r, c) is not None):
-            if cell is not None:
-                self._strike(cell)
+        wave, still = self.wave, self.still   # (shields change in place: still stays this list)
+
+        def blocked(r: int, c: int) -> bool:   # off the field or on a shield: stops shots and bombs
+            return not 0 <= r < h or still[r][c] == SHIELD
+
+        if self.gun.shots:
+            for shot, cell in self.gun.advance(lambda r, c: blocked(r, c) or wave.member_at(r, c) is not None):
+                if cell is not None:
+                    self._strike(cell)
         if p.bomb_every and self.wave.alive and self.bombs.ready_at(self.tick):
             front = self.wave.front()
             self.bombs.fire(self.tick, *front[self.draws.below(len(front))], 1, 0, BOMB)
-        for bomb, cell in self.bombs.advance(lambda r, c: self._blocked(r, c) or (r, c) == (p.height - 1, self.col)):
-            if cell is not None and cell[0] < p.height and self.still[cell[0]][cell[1]] == SHIELD:
-                self.set_still(*cell, EMPTY)
-            elif cell == (p.height - 1, self.col) and self.lose_life("A bomb hit you."):
-                return
+        bombs = self.bombs
+        if not bombs.shots:
+            return
+        # bombs.advance for bombs falling a cell a turn, inlined: a bomb stops on a shield, past
+        # the field or on you (each seen to before the next one falls), else falls and, out of
+        # reach, is gone; a last life lost leaves the bombs as they were, as there
+        kept = []
+        for bomb in bombs.shots:
+            r, c = bomb.r + 1, bomb.c
+            bomb.data -= 1
+            if not r < h:
+                bomb.alive = False
+            elif still[r][c] == SHIELD:
+                bomb.alive = False
+                self.set_still(r, c, EMPTY)
+            elif r == h - 1 and c == self.col:
+                bomb.alive = False
+                if self.lose_life("A bomb hit you."):
+                    return
+            else:
+                bomb.r = r
+                if bomb.data <= 0:
+                    bomb.alive = False
+                else:
+                    kept.append(bomb)
+        bombs.shots = kept
 
     def _strike(self, cell: tuple[int, int]) -> None:
         """Your shot stopped at ``cell``: an invader dies, or a shield loses the cell."""

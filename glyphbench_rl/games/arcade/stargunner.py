@@ -11,7 +11,7 @@ from ...core.actions import ActionSet
 from ...core.params import param, require
 from .bodies import Body, Gun
 from .engine import EMPTY, ArcadeParams, ArcadeTask, register_arcade
-from .scroller import Pacer, Strip
+from .scroller import Pacer, Strip, put_one, stamp
 
 SHIP, ENEMY, SHOT, BOLT, STAR = ">", "E", "-", "~", "*"
 ACTIONS = ActionSet([("NOOP", "hold position"), ("UP", "move one row up"), ("DOWN", "move one row down"),
@@ -70,9 +70,10 @@ class Stargunner(ArcadeTask):
         self.gun = Gun(cooldown=1, speed=2, reach=p.width, limit=2)
         self.bolts: list[Body] = []
         self.spawner, self.star_cols = Pacer(p.spawn), []
+        self.moves, self.layer_at, self.layer = 0, -1, []    # moves: stars or enemies changed
         if p.stars:
             for _ in range(p.width):
-                self.strip.scroll(self._stars())
+                self.strip.push(self._stars())
 
     def _stars(self) -> str:
         """The next backdrop column: one of a few made at the start (cheap per turn)."""
@@ -82,68 +83,110 @@ class Stargunner(ArcadeTask):
                                       for _ in range(p.height)) for _ in range(8)]
         return self.star_cols[self.draws.below(8)]
 
-    def _shot_hits(self, r: int, c: int) -> bool:
-        return c >= self.params.width or any(e.r == r and e.c == c for e in self.enemies)
-
     def _play(self, action: int) -> None:
         p = self.params
         dr, dc = MOVES[action]
-        self.r = min(p.height - 1, max(0, self.r + dr))
-        self.col = min(p.zone, max(0, self.col + dc))
+        r, c = self.r + dr, self.col + dc
+        self.r = 0 if r < 0 else min(r, p.height - 1)
+        self.col = 0 if c < 0 else min(c, p.zone)
         if action == FIRE:
             self.gun.fire(self.tick, self.r, self.col + 1, 0, 1, SHOT)
         if self._struck():
             return
         if p.stars and self.tick % 2 == 0:
-            self.strip.scroll(self._stars())
+            self.strip.push(self._stars())
+            self.moves += 1
         if self.tick % p.pace == 0:
+            self.moves += 1
+            rand, weave, fire, low = self.draws.random, p.weave, p.fire, p.height - 1
             for e in self.enemies:
                 e.c -= 1
-                if p.weave and self.draws.random() < p.weave:
-                    e.r = min(p.height - 1, max(0, e.r + (1 if self.draws.random() < 0.5 else -1)))
-                if p.fire and self.draws.random() < p.fire:
+                if weave and rand() < weave:
+                    r = e.r + (1 if rand() < 0.5 else -1)
+                    e.r = 0 if r < 0 else min(r, low)
+                if fire and rand() < fire:
                     self.bolts.append(Body(e.r, e.c - 1, glyph=BOLT))
-        kept = []
-        for b in self.bolts:
-            b.c -= 1
-            if b.c >= 0:
-                kept.append(b)
-        self.bolts = kept
+        if self.bolts:
+            kept = []
+            for b in self.bolts:
+                b.c -= 1
+                if b.c >= 0:
+                    kept.append(b)
+            self.bolts = kept
         if self.spawner.due(self.tick):
             self.enemies.append(Body(self.draws.below(p.height), p.width - 1, glyph=ENEMY))
+            self.moves += 1
         if self._struck():
             return
-        if any(e.c <= self.col for e in self.enemies):
-            self.lose_life("An enemy got past you!")
+        col = self.col
+        for e in self.enemies:
+            if e.c <= col:
+                self.lose_life("An enemy got past you!")
+                return
 
     def _struck(self) -> bool:
         """Shots against enemies (they move first), then anything touching the ship."""
-        for shot, cell in self.gun.advance(self._shot_hits):
-            if cell is not None and cell[1] < self.params.width:
-                self.enemies = [e for e in self.enemies if (e.r, e.c) != cell]
-                self.score.gain()
-                self.say("Enemy down!")
-                if self.done:
-                    return True
-        me = (self.r, self.col)
-        if any((e.r, e.c) == me for e in self.enemies) or any((b.r, b.c) == me for b in self.bolts):
-            self.lose_life("You were hit!")
+        if self.gun.shots and self._fly():
             return True
+        r, c = self.r, self.col
+        for e in self.enemies:
+            if e.c == c and e.r == r:
+                break
+        else:
+            for b in self.bolts:
+                if b.c == c and b.r == r:
+                    break
+            else:
+                return False
+        self.lose_life("You were hit!")
+        return True
+
+    def _fly(self) -> bool:
+        """Your shots fly right two cells, cell by cell (``fly_shots`` with the hit test
+        written into the loop); True when one won the game (the shots are left as they are)."""
+        width, kept = self.params.width, []
+        spots = {(e.r, e.c) for e in self.enemies}     # where a shot stops
+        for shot in self.gun.shots:
+            r, c = shot.r, shot.c
+            stop = 0                                    # (shots fly right of column 0)
+            for at in (c + 1, c + 2):
+                if at >= width or (r, at) in spots:
+                    stop = at
+                    break
+                shot.c = at
+            shot.data -= 2
+            if stop:
+                shot.alive = False
+                if stop < width:
+                    self.enemies = [e for e in self.enemies if e.r != r or e.c != stop]
+                    self.moves += 1
+                    spots.discard((r, stop))
+                    self.score.gain()
+                    self.say("Enemy down!")
+                    if self.done:
+                        return True
+            elif shot.data <= 0:
+                shot.alive = False
+            else:
+                kept.append(shot)
+        self.gun.shots = kept
         return False
 
     def _respawn(self) -> None:
         self.enemies = [e for e in self.enemies if e.c > self.params.width // 2]
+        self.moves += 1
         self.bolts, self.gun.shots = [], []
 
-    def _rows(self) -> list[str]:
-        return self.strip.rows[:]
-
-    def _sprites(self):
-        out = [(e.r, e.c, ENEMY) for e in self.enemies]
-        out += [(b.r, b.c, BOLT) for b in self.bolts]
-        out += [(s.r, s.c, SHOT) for s in self.gun.shots]
-        out.append((self.r, self.col, SHIP))
-        return out
+    def _grid(self) -> list[str]:
+        if self.layer_at != self.moves:       # stars and enemies: redrawn only when they moved
+            self.layer = self.strip.rows[:]
+            stamp(self.layer, self.enemies, ENEMY)
+            self.layer_at = self.moves
+        rows = self.layer[:]
+        stamp(rows, self.bolts, BOLT)
+        stamp(rows, self.gun.shots, SHOT)
+        rows[self.r] = put_one(rows[self.r], self.col, SHIP)
+        return rows
 
 
 register_arcade(Stargunner, "stargunner",

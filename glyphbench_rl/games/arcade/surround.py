@@ -16,6 +16,8 @@ TRAIL, YOU, CPU = "#", "Y", "X"
 ACTIONS = ActionSet([("NOOP", "keep your heading"), ("UP", "head up"), ("RIGHT", "head right"),
                      ("LEFT", "head left"), ("DOWN", "head down")], noop="NOOP")
 HEADINGS = (None, (-1, 0), (0, 1), (0, -1), (1, 0))
+TURNS = HEADINGS[1:]                       # up, right, left, down: 3 - k reverses k
+TURN_INDEX = {h: k for k, h in enumerate(TURNS)}
 
 
 @dataclass(frozen=True)
@@ -57,40 +59,43 @@ class Surround(ArcadeTask):
     def _free(self, r: int, c: int) -> bool:
         return -1 <= r <= self.params.height and -1 <= c <= self.params.width and not self.occ[(r + 1) * self.span + c + 1]
 
-    def run(self, r: int, c: int, dr: int, dc: int) -> int:
-        """Open cells straight ahead of (r, c) along (dr, dc)."""
-        occ, step = self.occ, dr * self.span + dc
-        i = (r + 1) * self.span + c + 1 + step
-        n = 0
-        while not occ[i]:
-            i, n = i + step, n + 1
-        return n
-
     def _steer(self) -> None:
         cpu = self.cpu
         if self.draws.random() >= self.params.chance:
             return
         r, c, hr, hc = cpu
-        best, most = (hr, hc), self.run(r, c, hr, hc)
-        for h in HEADINGS[1:]:
-            if h[0] != -hr or h[1] != -hc:
-                n = self.run(r, c, h[0], h[1])
-                if n > most:
-                    best, most = h, n
-        cpu[2], cpu[3] = best
+        occ, span = self.occ, self.span
+        at = (r + 1) * span + c + 1
+        # the open cells straight ahead each way, in TURNS order: a C search for the first
+        # occupied cell (a 1; the border ends every run)
+        runs = (occ[at - span::-span].find(1), occ.find(1, at + 1) - at - 1,
+                at - 1 - occ.rfind(1, 0, at), occ[at + span::span].find(1))
+        k = TURN_INDEX[hr, hc]
+        best, most, back = k, runs[k], 3 - k
+        for j in range(4):
+            if j != back and runs[j] > most:
+                best, most = j, runs[j]
+        cpu[2], cpu[3] = TURNS[best]
 
     def _play(self, action: int) -> None:
         me, cpu = self.me, self.cpu
         head = HEADINGS[action]
-        if head and head != (-me[2], -me[3]):
+        if head and (head[0] != -me[2] or head[1] != -me[3]):
             me[2], me[3] = head
         self._steer()
-        for who in (me, cpu):
-            self.occ[(who[0] + 1) * self.span + who[1] + 1] = 1
-            self.set_still(who[0], who[1], TRAIL)
-        nm, nc = (me[0] + me[2], me[1] + me[3]), (cpu[0] + cpu[2], cpu[1] + cpu[3])
-        me[0], me[1], cpu[0], cpu[1] = *nm, *nc
-        lost, beat = not self._free(*nm) or nm == nc, not self._free(*nc) or nm == nc
+        occ, span, still = self.occ, self.span, self.still
+        for who in (me, cpu):   # each head leaves a trail (set_still's work, for both at once)
+            r, c = who[0], who[1]
+            occ[(r + 1) * span + c + 1] = 1
+            line = still[r]
+            still[r] = line[:c] + TRAIL + line[c + 1:]
+        self.still_version += 2
+        mr, mc, cr, cc = me[0] + me[2], me[1] + me[3], cpu[0] + cpu[2], cpu[1] + cpu[3]
+        me[0], me[1], cpu[0], cpu[1] = mr, mc, cr, cc
+        meet = mr == cr and mc == cc
+        # (``_free`` without its bounds: a head moves at most a cell past the field, onto the border)
+        lost = meet or occ[(mr + 1) * span + mc + 1] != 0
+        beat = meet or occ[(cr + 1) * span + cc + 1] != 0
         if lost and beat:
             self.say("Both crash: a draw.")
             self.finish(won=False)

@@ -59,6 +59,7 @@ class Tennis(ArcadeTask):
         self.match = Match(self.params.points, self.params.lead)
         self.server = "you" if rng.random() < 0.5 else "cpu"
         self.ball = Ball(0, 0)
+        self.game_text = None
         self._point()
 
     def _point(self) -> None:
@@ -75,8 +76,10 @@ class Tennis(ArcadeTask):
         p, b, me, cpu = self.params, self.ball, self.me, self.cpu
         net = p.height // 2
         dr, dc = MOVES[action]
-        me[0] = clamp(me[0] + dr, net + 1, p.height - 1)
-        me[1] = clamp(me[1] + dc, 0, p.width - 1)
+        if dr:
+            me[0] = clamp(me[0] + dr, net + 1, p.height - 1)
+        if dc:
+            me[1] = clamp(me[1] + dc, 0, p.width - 1)
         dr, dc = pursue(0, cpu[1], 0, b.c, p.chance, self.draws)
         cpu[1] += dc
         if self._returned(me, 1) or self._returned(cpu, -1):
@@ -97,6 +100,7 @@ class Tennis(ArcadeTask):
         return True
 
     def _score(self, mine: bool) -> None:
+        self.game_text = None
         self.say("Your point." if mine else "The opponent's point.")
         game = self.match.point(mine)
         if game is not None:
@@ -110,7 +114,9 @@ class Tennis(ArcadeTask):
         return ((self.cpu[0], self.cpu[1], CPU), (self.me[0], self.me[1], YOU), (self.ball.r, self.ball.c, BALL))
 
     def _extra_hud(self) -> str:
-        return f"Game {self.match.call()} | Serve {self.server}"
+        if self.game_text is None:   # (the game's score and the server change only on a point)
+            self.game_text = f"Game {self.match.call()} | Serve {self.server}"
+        return self.game_text
 
 
 register_arcade(Tennis, "tennis",

@@ -88,17 +88,25 @@ class UpNDown(ArcadeTask):
     def _play(self, action: int) -> None:
         p = self.params
         dr, dc = MOVES[action]
-        self.r = min(p.height - 1, max(p.height // 2, self.r + dr))
-        self.col = min(p.width - 1, max(0, self.col + dc))
+        r, c = self.r + dr, self.col + dc
+        self.r = min(p.height - 1, max(p.height // 2, r))
+        self.col = 0 if c < 0 else min(c, p.width - 1)
         if action == JUMP and self.tick > self.landing:
             self.landing = self.tick + p.air
         scroll = self.pacer.due(self.tick)
         if scroll:
             self.strip.scroll(self._line())
         drive = self.tick % p.car_every == 0
-        for car in self.cars:
-            car.data, car.r = car.r, car.r + scroll + drive
-        self.cars = [car for car in self.cars if car.r < p.height]
+        step, gone, h = scroll + drive, False, p.height
+        if step:
+            for car in self.cars:
+                car.data, car.r = car.r, car.r + step
+                gone = gone or car.r >= h
+        else:
+            for car in self.cars:
+                car.data = car.r
+        if gone:
+            self.cars = [car for car in self.cars if car.r < p.height]
         if self.tick % p.spawn == 0:
             left, right = self.channel.left, self.channel.right
             self.cars.append(Body(0, left + self.draws.below(right - left + 1), glyph=CAR, data=0))
@@ -106,7 +114,7 @@ class UpNDown(ArcadeTask):
 
     def _meet(self) -> None:
         p = self.params
-        here = self.strip.get(self.r, self.col)
+        here = self.strip.rows[self.r][self.col]
         if here == FLAG:
             self.strip.put(self.r, self.col, EMPTY)
             self.score.gain()
@@ -135,13 +143,14 @@ class UpNDown(ArcadeTask):
         self.col = (row.find(EMPTY) + row.rfind(EMPTY)) // 2 if EMPTY in row else self.col
         self.landing = 0
 
-    def _rows(self) -> list[str]:
-        return self.strip.rows[:]
-
-    def _sprites(self):
-        out = [(car.r, car.c, CAR) for car in self.cars]
-        out.append((self.r, self.col, AIR if self.tick < self.landing else BUGGY))
-        return out
+    def _grid(self) -> list[str]:
+        rows = self.strip.rows[:]
+        for car in self.cars:                  # (cars drive on the road, inside the view)
+            line = rows[car.r]
+            rows[car.r] = line[:car.c] + CAR + line[car.c + 1:]
+        r, c = self.r, self.col
+        rows[r] = rows[r][:c] + (AIR if self.tick < self.landing else BUGGY) + rows[r][c + 1:]
+        return rows
 
 
 register_arcade(UpNDown, "upndown",

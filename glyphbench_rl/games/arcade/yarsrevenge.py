@@ -119,11 +119,8 @@ class YarsRevenge(ArenaTask):
         super()._respawn()
         self.swirl, self.face = None, (0, 1)
 
-    def _sprites(self):
-        out = super()._sprites()
-        if self.swirl is not None:
-            out.insert(0, (self.swirl.r, self.swirl.c, SWIRL))
-        return out
+    def _below(self):
+        return () if self.swirl is None else ((self.swirl.r, self.swirl.c, SWIRL),)
 
 
 register_arcade(YarsRevenge, "yarsrevenge",

@@ -90,13 +90,45 @@ class Zaxxon(ArcadeTask):
         return put_one(line, self.draws.below(p.height), what)
 
     def _shot_hits(self, r: int, c: int) -> bool:
+        """What stops your shot at (r, c): the right edge, a turret shot (both are gone) or
+        anything on the strip (your shots stay on the field's rows and right of column 0)."""
         if c >= self.params.width:
             return True
-        if (r, c) in self.bullets:
-            self.flak.shots = [b for b in self.flak.shots if (b.r, b.c) != (r, c)]
-            self.bullets.discard((r, c))
+        bullets = self.bullets
+        if bullets and (r, c) in bullets:
+            self.flak.shots = [b for b in self.flak.shots if b.r != r or b.c != c]
+            bullets.discard((r, c))
             return True
-        return self.strip.get(r, c) not in (EMPTY, "")
+        return self.strip.rows[r][c] != EMPTY
+
+    def _fly(self) -> None:
+        """Your shots fly right two cells, cell by cell (``fly_shots`` with ``_shot_hits``
+        written into the loop: this runs most turns)."""
+        width, rows, bullets, kept = self.params.width, self.strip.rows, self.bullets, []
+        for shot in self.gun.shots:
+            r, c = shot.r, shot.c
+            stop = 0                                # (shots fly right of column 1)
+            for at in (c + 1, c + 2):
+                if at >= width:
+                    stop = at
+                elif bullets and (r, at) in bullets:
+                    self.flak.shots = [b for b in self.flak.shots if b.r != r or b.c != at]
+                    bullets.discard((r, at))
+                    stop = at
+                elif rows[r][at] != EMPTY:
+                    stop = at
+                if stop:
+                    break
+                shot.c = at
+            shot.data -= 2
+            if stop:
+                shot.alive = False
+                self._strike(r, stop)
+            elif shot.data <= 0:
+                shot.alive = False
+            else:
+                kept.append(shot)
+        self.gun.shots = kept
 
     def _strike(self, r: int, c: int) -> None:
         what = self.strip.get(r, c)
@@ -110,40 +142,40 @@ class Zaxxon(ArcadeTask):
 
     def _flak_moves(self) -> bool:
         """Turret shots fly a cell left (gone at the edge or a wall); True if one meets you."""
-        kept, rows, me = [], self.strip.rows, (self.r, self.col)
+        kept, rows, r0, c0 = [], self.strip.rows, self.r, self.col
         for b in self.flak.shots:
-            b.c -= 1
-            if b.c < 0 or rows[b.r][b.c] == WALL:
+            c = b.c = b.c - 1
+            if c < 0 or rows[b.r][c] == WALL:
                 continue
-            if (b.r, b.c) == me:
+            if c == c0 and b.r == r0:
                 return True
             kept.append(b)
         self.flak.shots = kept
         return False
 
     def _play(self, action: int) -> None:
-        p = self.params
-        self.r = min(p.height - 1, max(0, self.r + MOVES[action]))
+        p, gun = self.params, self.gun
+        r = self.r + MOVES[action]
+        self.r = r = 0 if r < 0 else min(r, p.height - 1)
         if action == FIRE:
-            self.gun.fire(self.tick, self.r, self.col + 1, 0, 1, SHOT)
+            gun.fire(self.tick, r, self.col + 1, 0, 1, SHOT)
         if self._crashed():
             return
-        if self.gun.shots:
-            self.bullets = {(b.r, b.c) for b in self.flak.shots}
-            for shot, cell in self.gun.advance(self._shot_hits):
-                if cell is not None:
-                    self._strike(*cell)
+        if gun.shots:
+            flak = self.flak.shots
+            self.bullets = {(b.r, b.c) for b in flak} if flak else None
+            self._fly()
             if self.done:
                 return
         if self.pacer.due(self.tick):
-            self.strip.scroll(self._column())
-            for shot in self.gun.shots:
+            self.strip.push(self._column())
+            for shot in gun.shots:
                 if self._shot_hits(shot.r, shot.c):
                     self._strike(shot.r, shot.c)
                     shot.data = 0
             if self._crashed():
                 return
-        if self._flak_moves():
+        if self.flak.shots and self._flak_moves():
             self.lose_life("A turret shot hit you!")
             return
         if self.volley.due(self.tick):           # new shots start moving next turn
@@ -157,30 +189,40 @@ class Zaxxon(ArcadeTask):
             self.lose_life("Out of fuel!")
 
     def _crashed(self) -> bool:
-        if self.strip.rows[self.r][self.col] != EMPTY:
+        r, c = self.r, self.col
+        if self.strip.rows[r][c] != EMPTY:
             self.lose_life("You crashed!")
             return True
-        if any(b.r == self.r and b.c == self.col for b in self.flak.shots):
-            self.lose_life("A turret shot hit you!")
-            return True
+        for b in self.flak.shots:
+            if b.c == c and b.r == r:
+                self.lose_life("A turret shot hit you!")
+                return True
         return False
 
     def _respawn(self) -> None:
         self.flak.shots, self.gun.shots = [], []
-        for c in range(self.col + 4):                  # a clear stretch to come back into
-            for r in range(self.params.height):
-                if self.strip.get(r, c) in (TURRET, FUEL, WALL):
-                    self.strip.put(r, c, EMPTY)
+        rows, k = self.strip.rows, self.col + 4       # a clear stretch to come back into
+        for r, row in enumerate(rows):
+            rows[r] = row[:k].replace(TURRET, EMPTY).replace(FUEL, EMPTY).replace(WALL, EMPTY) + row[k:]
         self.fuel.refill()
 
-    def _rows(self) -> list[str]:
-        return self.strip.rows[:]
-
-    def _sprites(self):
-        out = [(s.r, s.c, BULLET) for s in self.flak.shots]
-        out += [(s.r, s.c, SHOT) for s in self.gun.shots]
-        out.append((self.r, self.col, SHIP))
-        return out
+    def _grid(self) -> list[str]:
+        """The strip with the shots and the ship drawn in (all inside the field, bar a turret
+        shot that just left it on the turn it hit you)."""
+        rows = self.strip.rows[:]
+        for b in self.flak.shots:
+            r, c = b.r, b.c
+            if c >= 0:
+                line = rows[r]
+                rows[r] = line[:c] + BULLET + line[c + 1:]
+        for s in self.gun.shots:
+            r, c = s.r, s.c
+            line = rows[r]
+            rows[r] = line[:c] + SHOT + line[c + 1:]
+        r, c = self.r, self.col
+        line = rows[r]
+        rows[r] = line[:c] + SHIP + line[c + 1:]
+        return rows
 
     def _extra_hud(self) -> str:
         return f"Fuel {self.fuel.left}" if self.params.fuel else ""

@@ -317,31 +317,39 @@ def test_surround_reversal_ignored_trails_block_and_head_on_is_a_draw():
 
 
 # -- bowling ---------------------------------------------------------------------------------------
-def path_table(env):
-    """best[r][c]: the most standing pins a ball on row ``r`` at column ``c`` can still meet on
-    the rows above, hooking a column a row (a dynamic programme from the top row down)."""
-    w = env.params.width
-    best = [[0] * (w + 2) for _ in range(env.params.height)]
-    for r in range(1, env.params.height):
-        for c in range(w):
-            best[r][c] = max(((r - 1, c + d) in env.pins) + best[r - 1][c + d]
-                             for d in (-1, 0, 1) if 0 <= c + d < w)
-    return best
+def ahead(env, r, c, drift, memo):
+    """The most standing pins a ball on row ``r`` at column ``c`` can still meet on the rows
+    above: drifting ``drift`` columns a row once curved, else rolling straight or taking its
+    hook (with ``curve`` off, a hook is free on every row)."""
+    key = (r, c, drift)
+    if r <= 0:
+        return 0
+    if key not in memo:
+        w = env.params.width
+        moves = (drift,) if drift else (0, -1, 1)
+        memo[key] = max(((r - 1, min(w - 1, max(0, c + d))) in env.pins)
+                        + ahead(env, r - 1, min(w - 1, max(0, c + d)), d if env.params.curve else 0, memo)
+                        for d in moves)
+    return memo[key]
 
 
 def bowler(env):
-    """Stand under the column that starts the richest hooking path, throw, then hook along it."""
-    p = env.params
-    best = path_table(env)
+    """Stand under the column that starts the richest path, throw, then hook where it pays."""
+    p, memo = env.params, {}
     if env.ball is None:
         start = p.height - 2
-        aim = max(range(p.width), key=lambda c: (best[start][c] + ((start, c) in env.pins), -abs(c - env.col)))
+        aim = max(range(p.width), key=lambda c: (ahead(env, start, c, 0, memo) + ((start, c) in env.pins),
+                                                 -abs(c - env.col)))
         if aim != env.col:
             return 1 if aim < env.col else 2
         return 3
     r, c = env.ball
+    if env.drift:
+        return 0
     moves = [a for a in (0, 1, 2) if 0 <= c + (0, -1, 1)[a] < p.width]
-    return max(moves, key=lambda a: ((r - 1, c + (0, -1, 1)[a]) in env.pins) + best[r - 1][c + (0, -1, 1)[a]])
+    d = (0, -1, 1)
+    return max(moves, key=lambda a: ((r - 1, c + d[a]) in env.pins)
+               + ahead(env, r - 1, c + d[a], d[a] if p.curve else 0, memo))
 
 
 def test_bowling_ball_knocks_what_it_meets_and_frames_reset_the_rack():
@@ -358,6 +366,20 @@ def test_bowling_ball_knocks_what_it_meets_and_frames_reset_the_rack():
         while env.ball is not None:
             env.step(0)
     assert env.frame_no == 2 and len(env.pins) == 10 and env.roll == 0
+
+
+def test_bowling_curve_ball_takes_one_hook_then_drifts():
+    env = make("glyphbench/miniatari-bowling-v0")
+    env.reset(seed=0)
+    env.pins.clear()                                  # an empty lane: nothing stops the ball
+    env.step(3)
+    env.step(0)
+    col = env.ball[1]
+    assert env.drift == 0 and col == env.col          # rolling straight
+    env.step(2)                                       # the hook: right, for the rest of the roll
+    env.step(1)                                       # a second hook does nothing
+    env.step(0)
+    assert env.drift == 1 and env.ball[1] == col + 3 and "curving right" in env.frame.hud
 
 
 # -- double dunk -----------------------------------------------------------------------------------

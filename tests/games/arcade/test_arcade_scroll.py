@@ -290,6 +290,14 @@ def test_enduro_speed_sets_the_scroll_and_a_crash_stops_the_car():
     assert env.speed == 3 and env.strip.shifts - before == 4   # top speed: a row a turn
 
 
+def test_enduro_nightfall_ends_the_race_lost():
+    env, info = play("glyphbench/miniatari-enduro-v0", lambda e: 0, 0)     # parked: passes nobody
+    assert info["won"] is False and env.tick == env.params.day and env.episode_return == 0
+    assert "Nightfall in 0" in env.frame.hud
+    env, info = play("glyphbench/atari-enduro-v0", lambda e: 0, 0)
+    assert info["won"] is False and env.tick == env.params.day < env.max_turns
+
+
 def test_enduro_atari_collisions_only_cost_speed():
     env, info = play("glyphbench/atari-enduro-v0", enduro_racer, 5, turns=1500)
     assert env.score.points > 20 and not env.done or info["won"]

@@ -314,6 +314,19 @@ def test_atlantis_turrets_fire_diagonally_and_straight():
         (env.params.height - 1 - s, towers[2] - s)]
 
 
+def test_atlantis_atari_raiders_drop_several_rows_a_pass_and_buildings_stand_clear_of_turrets():
+    env = make("glyphbench/atari-atlantis-v0")
+    env.reset(seed=0)
+    city = env.frame.grid[-1]
+    assert city.count("H") == env.params.lives and city.count("T") == 3
+    env.pack.bodies.clear()
+    env.sent = env.params.wave
+    env.pack.add(0, env.params.width - 1, ">", dc=1)
+    env.step(NOOP)
+    raider = env.pack.bodies[0]
+    assert (raider.r, raider.c, raider.glyph) == (env.params.drop, env.params.width - 1, "<")
+
+
 @pytest.mark.parametrize("seed", SEEDS)
 def test_atlantis_mini_win_by_repelling_every_wave(seed):
     env, info = play("glyphbench/miniatari-atlantis-v0", lookahead(idle, 10), seed)
