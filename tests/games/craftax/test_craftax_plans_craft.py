@@ -142,7 +142,7 @@ def find_diamond(p):
 
 
 def find_water(p):
-    p.drink(9)
+    p.drink_water(9)
 
 
 def survive_hunger(p):
@@ -151,7 +151,7 @@ def survive_hunger(p):
 
 
 def survive_thirst(p):
-    p.drink(6)
+    p.drink_water(6)
     p.survive(200)
 
 
@@ -161,7 +161,7 @@ def firstday(p):
     p.place_n(A.PLACE_STONE, B.STONE, 1)
     p.gather(B.COAL, lambda: inv(p).coal >= 1, limit=60)
     p.gather(B.IRON, lambda: inv(p).iron >= 1, limit=60)
-    p.drink(9)
+    p.drink_water(9)
     p.fight("cow", 1, limit=60)
     p.gather(B.GRASS, lambda: inv(p).sapling >= 1, limit=100, dig=False)
     p.place_n(A.PLACE_PLANT, B.PLANT, 1)
@@ -187,7 +187,7 @@ def tend(p) -> None:
     if p.state.player_health <= 5 and inv(p).stone >= 4:
         p.recover(8)
     if p.state.player_drink <= 4:
-        p.drink(9)
+        p.drink_water(9)
     if p.state.player_food <= 4:
         p.eat(9)
 
