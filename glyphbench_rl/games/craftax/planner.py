@@ -2,8 +2,13 @@
 turn on a ``CraftaxTask`` through its public ``step``, re-planned every turn (mobs move).
 
 It shows each task winnable in the tests and serves as a competent scripted baseline. Paths are
-breadth-first searches over the cells the player can walk (``rules.walkable``); every goal gives
-up after a budget of turns and reports whether it got there.
+breadth-first searches over the cells the player can enter (``rules.player_can_enter``); every
+goal gives up after a budget of turns and reports whether it got there.
+
+Three melee goals, for three kinds of task: ``fight`` (walk up and hit; crafting tasks),
+``hunt`` (with potions, ranged shots when in line, exploring for monsters; the floors) and
+``skirmish`` (reads cooldowns: ambushes melee mobs, keeps off archers' lines, rests away from
+them; the fight tasks). At range: ``shoot`` (arrows, keeping away) and ``cast`` (spells).
 """
 
 from __future__ import annotations
@@ -113,14 +118,7 @@ class Planner:
 
     def mobs(self, name: str | None = None) -> list[tuple[int, int]]:
         """Positions of live mobs on the player's level (called ``name``, or monsters)."""
-        s, level, out = self.state, self.state.player_level, []
-        for k, kind in enumerate(KINDS):
-            mobs = getattr(s, kind)
-            for i in np.flatnonzero(mobs.mask[level]):
-                mob = MOB_NAMES[k][int(mobs.type_id[level, i])]
-                if (name is None and k > 0) or mob == name:
-                    out.append(tuple(int(v) for v in mobs.position[level, i]))
-        return out
+        return [m.cell for m in live_mobs(self.state) if _matches(m, name)]
 
     def _path(self, goals: set, onto: bool) -> list[tuple[int, int]] | None:
         """Cells from the player to a goal cell (``onto``) or to a cell beside one, by walking."""
@@ -188,16 +186,11 @@ class Planner:
 
     def _mob_at(self, cell):
         """(class, type id) of the live mob at ``cell`` of the player's level, or None."""
-        s, level = self.state, self.state.player_level
-        for k, kind in enumerate(KINDS):
-            mobs = getattr(s, kind)
-            for i in np.flatnonzero(mobs.mask[level]):
-                if tuple(int(v) for v in mobs.position[level, i]) == tuple(cell):
-                    return k, int(mobs.type_id[level, i])
-        return None
+        return next(((m.kind, _type_id(m)) for m in live_mobs(self.state) if m.cell == tuple(cell)), None)
 
     def in_line(self, target, reach: int = 8) -> bool:
-        """``target`` is in the player's row or column within ``reach``, nothing solid between."""
+        """``target`` is in the player's row or column within ``reach``, nothing solid and no
+        mob between (the player's line of fire; ``_clear_line`` lets mobs through)."""
         (r, c), (tr, tc) = self.pos, target
         if (r != tr and c != tc) or abs(r - tr) + abs(c - tc) > reach:
             return False
@@ -369,11 +362,7 @@ class Planner:
                 else:
                     self.act(Action.DO)
                 continue
-            target = next(t for t in targets if _beside(self.pos, t))
-            if rules.facing(self.state) != target:
-                self.face(target)
-            else:
-                self.act(Action.DO)
+            self.strike(next(t for t in targets if _beside(self.pos, t)))
         return until()
 
     def place_n(self, action: int, block: int, count: int, limit: int = 200) -> int:
@@ -429,10 +418,8 @@ class Planner:
             if not beside:
                 if not self.go(_nearest(cows, self.pos, 1), limit=1):
                     self.act(Action.NOOP)
-            elif rules.facing(self.state) != beside[0]:
-                self.face(beside[0])
             else:
-                self.act(Action.DO)
+                self.strike(beside[0])
         return self.state.player_food >= upto
 
     def drink_water(self, upto: int) -> bool:
@@ -512,7 +499,7 @@ class Planner:
         while self.state.player_drink < until and not self.done and self.budget > 0 \
                 and not any(_beside(self.pos, t) for t in self.mobs()):
             t = beside[0]
-            self.act(Action.DO if rules.facing(self.state) == t else MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
+            self.strike(t)
             took = True
         return took
 
@@ -643,7 +630,7 @@ class Planner:
                 mobs = live_mobs(s)
                 beside = [m for m in mobs if m.kind > 0 and _dist(m.cell, self.pos) == 1]
                 if len(beside) == 1 and beside[0].cooldown > 1:
-                    self.strike(beside[0])
+                    self.strike(beside[0].cell)
                     continue
             elif self.guard():
                 continue
@@ -722,7 +709,7 @@ class Planner:
             beside = [t for t in self.mobs() if _beside(self.pos, t)]
             if beside and (path is None or path[0] in beside):
                 t = beside[0]
-                self.act(Action.DO if rules.facing(self.state) == t else MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
+                self.strike(t)
             elif path:
                 self._step_along(path)
             else:
@@ -811,11 +798,7 @@ class Planner:
                 return self.go(_nearest(close, pos, 1), limit=1) or True
         if not beside or self.done:
             return False
-        target = beside[0]
-        if rules.facing(self.state) != target:
-            self.face(target)
-        else:
-            self.act(Action.DO)
+        self.strike(beside[0])
         return True
 
     def fight(self, name: str | None = None, count: int = 1, limit: int = 600) -> int:
@@ -884,10 +867,11 @@ class Planner:
         finally:
             self.kills_wanted = False
 
-    def strike(self, mob: Mob) -> bool:
-        """Face an adjacent mob and hit it (one turn either way)."""
-        if rules.facing(self.state) != mob.cell:
-            return self.face(mob.cell)
+    def strike(self, cell) -> bool:
+        """One turn toward DO on the ``cell`` beside the player (a mob, a block, water): turn
+        to face it, or DO when facing it."""
+        if rules.facing(self.state) != cell:
+            return self.face(cell)
         return self.act(Action.DO)
 
     def skirmish(self, name=None, count: int = 1, limit: int = 600, rest_below: float = 0.0,
@@ -977,7 +961,7 @@ class Planner:
         back = self._ready_beside(self.pos, mobs)
         if (not back or back == [first]) and not resting and \
                 sum(self._strength(m) for m in back) < health:
-            return self.strike(first)
+            return self.strike(first.cell)
         return self.evade(mobs)
 
     def _strength(self, mob: Mob) -> float:
@@ -1082,7 +1066,7 @@ class Planner:
                 continue
             beside = [m for m in targets if _dist(m.cell, self.pos) == 1]
             if beside:
-                self.strike(beside[0])
+                self.strike(beside[0].cell)
                 continue
             if self.state.inventory.arrows <= 0:
                 break
@@ -1143,10 +1127,7 @@ class Planner:
                 continue
             if self.state.mob_map[level][ladder]:
                 if _beside(self.pos, ladder):
-                    if rules.facing(self.state) != ladder:
-                        self.face(ladder)
-                    else:
-                        self.act(Action.DO)
+                    self.strike(ladder)
                 elif not self.go([ladder], limit=1):
                     self.act(Action.NOOP)
                 continue
@@ -1183,7 +1164,7 @@ class Planner:
             path = self._path({ladder}, onto=True)
             if beside and (not path or path[0] in beside):
                 t = beside[0]                  # a monster in the way (or at our back): fight it
-                self.act(Action.DO if rules.facing(self.state) == t else MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
+                self.strike(t)
             elif path:
                 self._step_along(path)
             else:
@@ -1251,11 +1232,12 @@ class Planner:
         return self.state.boss_progress >= NUM_LEVELS - 1
 
     # -- losing policies ---------------------------------------------------------------------------
-    def surrender(self, limit: int = 500) -> bool:
-        """A losing policy: walk up to the nearest monster (exploring until one comes) and stand
-        there doing nothing until the player dies. True once dead."""
+    def surrender(self, limit: int = 500, explore: bool = True) -> bool:
+        """A losing policy: walk up to the nearest monster and stand there doing nothing until
+        the player dies; with none in reach, explore until one comes (``explore``) or wait for
+        them. True once dead."""
         for _ in range(limit):
-            if self.done:
+            if self.done or self.budget <= 0:
                 break
             targets = self.mobs()
             if any(_beside(self.pos, t) for t in targets):
@@ -1264,22 +1246,10 @@ class Planner:
             path = self._path(set(targets), onto=False) if targets else None
             if path:
                 self._step_along(path)
-            else:
+            elif explore:
                 self.kills_wanted = True
                 self.explore(6)
                 self.kills_wanted = False
-        return self.state.player_health <= 0
-
-    def perish(self, limit: int = 512) -> bool:
-        """A losing policy: go and stand beside the nearest monster, doing nothing; True once
-        the player is dead."""
-        for _ in range(limit):
-            if self.done or self.budget <= 0:
-                break
-            monsters = self.mobs()
-            if monsters and not any(_beside(self.pos, m) for m in monsters):
-                if not self.go(_nearest(monsters, self.pos, 3), limit=1):
-                    self.act(Action.NOOP)
             else:
                 self.act(Action.NOOP)
         return self.state.player_health <= 0
