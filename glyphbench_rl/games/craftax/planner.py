@@ -1,4 +1,4 @@
-"""A scripted Craftax player: goals (collect, craft, place, fight, descend ...) played turn by
+"""A scripted Craftax player: goals (gather, craft, place, fight, descend ...) played turn by
 turn on a ``CraftaxTask`` through its public ``step``, re-planned every turn (mobs move).
 
 It shows each task winnable in the tests and serves as a competent scripted baseline. Paths are
@@ -249,21 +249,6 @@ class Planner:
         return dist
 
     # -- gathering, crafting, building --------------------------------------------------------------
-    def collect(self, block: int, until, limit: int = 600) -> bool:
-        """Mine or chop the nearest ``block`` until ``until()`` holds."""
-        for _ in range(limit):
-            if until():
-                return True
-            targets = self.cells(block)
-            if not targets or not self.go(_nearest(targets, self.pos, 12)):
-                return until()
-            target = next(t for t in targets if _beside(self.pos, t))
-            if not self.face(target):
-                continue
-            if not self.act(Action.DO):
-                return until()
-        return until()
-
     def near(self, block: int) -> bool:
         r, c = self.pos
         level = self.state.player_level
@@ -334,8 +319,10 @@ class Planner:
         return None
 
     def gather(self, block: int, until, limit: int = 600, dig: bool = True) -> bool:
-        """Like ``collect``, one turn at a time: fight off monsters that come beside the player,
-        and (``dig``) mine a way through blocks to a ``block`` no walk reaches."""
+        """Mine (or chop, or drink at, or eat) the nearest ``block`` until ``until()`` holds,
+        one turn at a time: fight off monsters that come beside the player, heal walled in at
+        ``self.heal_at`` health, and (``dig``) mine a way through blocks to a ``block`` no walk
+        reaches."""
         for _ in range(limit):
             if until():
                 return True
@@ -1100,17 +1087,11 @@ class Planner:
         return self.kills(name) - start
 
     # -- floors: ladders, chests, tables, torches, the boss ----------------------------------------
-    def descend(self, limit: int = 400) -> bool:
-        level = self.state.player_level
-        ladder = tuple(int(v) for v in self.state.down_ladders[level])
-        if self.state.item_map[level][ladder] != ItemType.LADDER_DOWN:
-            return False
-        return self.go([ladder], onto=True, limit=limit) and self.act(Action.DESCEND) or \
-            self.state.player_level > level
-
     def take_ladder(self, limit: int = 400) -> bool:
-        """``descend``, one turn at a time: monsters beside the player are fought off, and a mob
-        standing on the ladder is attacked from beside it; True once on the next level."""
+        """Walk onto the level's ladder down and DESCEND, one turn at a time: monsters beside the
+        player are fought off, and a mob standing on the ladder is attacked from beside it; a
+        shut ladder is tried again after a kill. True once on the next level. (``descend_floor``
+        opens the ladder first, by hunting.)"""
         level = self.state.player_level
         ladder = tuple(int(v) for v in self.state.down_ladders[level])
         for _ in range(limit):

@@ -48,39 +48,39 @@ def furnace(p) -> None:
 
 # -- win paths ---------------------------------------------------------------------------------------
 def choptrees(p):
-    p.collect(B.TREE, lambda: p.task.tally.got["wood"] >= 10)
+    p.gather(B.TREE, lambda: p.task.tally.got["wood"] >= 10, dig=False)
 
 
 def minestone(p):
-    p.collect(B.STONE, lambda: p.task.tally.got["stone"] >= 10)
+    p.gather(B.STONE, lambda: p.task.tally.got["stone"] >= 10, dig=False)
 
 
 def gatherresources(p):
-    p.collect(B.TREE, lambda: inv(p).wood >= 8)
+    p.gather(B.TREE, lambda: inv(p).wood >= 8, dig=False)
     p.table()
     p.craft(A.MAKE_WOOD_PICKAXE)
-    p.collect(B.TREE, lambda: inv(p).wood >= 5)
-    p.collect(B.STONE, lambda: inv(p).stone >= 5)
+    p.gather(B.TREE, lambda: inv(p).wood >= 5, dig=False)
+    p.gather(B.STONE, lambda: inv(p).stone >= 5, dig=False)
 
 
 def craftpickaxe(p):
-    p.collect(B.TREE, lambda: inv(p).wood >= 3)
+    p.gather(B.TREE, lambda: inv(p).wood >= 3, dig=False)
     p.table()
     p.craft(A.MAKE_WOOD_PICKAXE)
 
 
 def craftsword(p):
-    p.collect(B.TREE, lambda: inv(p).wood >= 5)
+    p.gather(B.TREE, lambda: inv(p).wood >= 5, dig=False)
     p.table()
     p.craft(A.MAKE_WOOD_PICKAXE)
-    p.collect(B.STONE, lambda: inv(p).stone >= 1)
+    p.gather(B.STONE, lambda: inv(p).stone >= 1, dig=False)
     p.craft(A.MAKE_STONE_SWORD)
 
 
 def craftchain(p):
     tools(p, 6, 3)
-    p.collect(B.COAL, lambda: inv(p).coal >= 1)
-    p.collect(B.IRON, lambda: inv(p).iron >= 1)
+    p.gather(B.COAL, lambda: inv(p).coal >= 1, dig=False)
+    p.gather(B.IRON, lambda: inv(p).iron >= 1, dig=False)
     furnace(p)
     p.craft(A.MAKE_IRON_SWORD)
 
