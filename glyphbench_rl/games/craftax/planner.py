@@ -5,10 +5,10 @@ It shows each task winnable in the tests and serves as a competent scripted base
 breadth-first searches over the cells the player can enter (``rules.player_can_enter``); every
 goal gives up after a budget of turns and reports whether it got there.
 
-Three melee goals, for three kinds of task: ``fight`` (walk up and hit; crafting tasks),
-``hunt`` (with potions, ranged shots when in line, exploring for monsters; the floors) and
-``skirmish`` (reads cooldowns: ambushes melee mobs, keeps off archers' lines, rests away from
-them; the fight tasks). At range: ``shoot`` (arrows, keeping away) and ``cast`` (spells).
+Two melee goals: ``hunt`` (walk up and hit, drinking and resting between blows, shooting a mob
+in line, exploring for more) and ``skirmish`` (reads the mobs' cooldowns: ambushes melee mobs,
+keeps off archers' lines, rests away from monsters; for fights against several at once). At
+range: ``shoot`` (arrows, keeping away) and ``cast`` (spells).
 """
 
 from __future__ import annotations
@@ -788,30 +788,6 @@ class Planner:
         self.strike(beside[0])
         return True
 
-    def fight(self, name: str | None = None, count: int = 1, limit: int = 600) -> int:
-        """Kill ``count`` mobs called ``name`` (monsters when None) with DO; how many died."""
-        killed = 0
-        for _ in range(limit):
-            if killed >= count or self.done:
-                break
-            targets = self.mobs(name)
-            if not targets:
-                if not self.act(Action.NOOP):
-                    break
-                continue
-            before = len(targets)
-            nearest = _nearest(targets, self.pos, 1)
-            if not self.go(nearest, limit=1):
-                if not self.act(Action.NOOP):
-                    break
-                continue
-            beside = [t for t in self.mobs(name) if _beside(self.pos, t)]
-            if beside and self.face(beside[0]) and rules.facing(self.state) == beside[0]:
-                self.act(Action.DO)
-            if len(self.mobs(name)) < before:
-                killed += before - len(self.mobs(name))
-        return killed
-
     def hunt(self, name: str | None = None, count: int = 1, limit: int = 400,
              heal_below: float = 4.0, explore: bool = True, ranged: bool = True) -> bool:
         """Kill ``count`` more mobs called ``name`` (monsters when None) in melee: walk beside
@@ -1104,7 +1080,8 @@ class Planner:
             if self.pos == ladder:
                 self.act(Action.DESCEND)
                 if self.state.player_level == level:
-                    self.fight(None, 1, limit=30)     # the ladder is shut: a kill may open it
+                    # the ladder is shut: a kill may open it
+                    self.hunt(None, 1, limit=30, explore=False, ranged=False)
                 continue
             if self.state.mob_map[level][ladder]:
                 if _beside(self.pos, ladder):

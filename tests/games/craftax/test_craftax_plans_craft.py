@@ -162,10 +162,10 @@ def firstday(p):
     p.gather(B.COAL, lambda: inv(p).coal >= 1, limit=60)
     p.gather(B.IRON, lambda: inv(p).iron >= 1, limit=60)
     p.drink_water(9)
-    p.fight("cow", 1, limit=60)
+    p.hunt("cow", 1, limit=60, explore=False, ranged=False)
     p.gather(B.GRASS, lambda: inv(p).sapling >= 1, limit=100, dig=False)
     p.place_n(A.PLACE_PLANT, B.PLANT, 1)
-    p.fight("zombie", 1, limit=40)
+    p.hunt("zombie", 1, limit=40, explore=False, ranged=False)
     if p.wall_in():     # sleep walled in until rested (wake_up)
         p.act(A.SLEEP)
         while p.state.is_sleeping and not p.done:
@@ -208,7 +208,8 @@ def armed_tools(p, wood: int, stone: int) -> None:
 
 def open_gate_and_descend(p) -> None:
     tend(p)
-    p.fight(None, max(0, 8 - int(p.state.monsters_killed[0])))   # kills still needed
+    need = max(0, 8 - int(p.state.monsters_killed[0]))       # kills still needed
+    p.hunt(None, need, limit=600, explore=False, ranged=False)
     tend(p)
     p.take_ladder()
 
