@@ -22,7 +22,7 @@ from . import mobs as mobrules
 from . import rules
 from .bestiary import MOB_NAMES, MOB_TYPE_DAMAGE_MAPPING, MOB_TYPE_DEFENCE_MAPPING
 from .tables import (DRINK_BLOCKS, IS_SOLID, MINING_BY_BLOCK, MONSTERS_KILLED_TO_CLEAR_LEVEL, NUM_LEVELS,
-                     PLAYER_ARROW, SLEEPING_MELEE_FACTOR, SPELLS, Action, BlockType, ItemType)
+                     PLAYER_ARROW, SLEEPING_MELEE_FACTOR, SPELLS, Action, BlockType)
 from .task import POTION_EFFECTS
 
 MOVES = {(0, -1): Action.LEFT, (0, 1): Action.RIGHT, (-1, 0): Action.UP, (1, 0): Action.DOWN}
@@ -1063,36 +1063,6 @@ class Planner:
         return self.kills(name) - start
 
     # -- floors: ladders, chests, tables, torches, the boss ----------------------------------------
-    def take_ladder(self, limit: int = 400) -> bool:
-        """Walk onto the level's ladder down and DESCEND, one turn at a time: monsters beside the
-        player are fought off, and a mob standing on the ladder is attacked from beside it; a
-        shut ladder is tried again after a kill. True once on the next level. (``descend_floor``
-        opens the ladder first, by hunting.)"""
-        level = self.state.player_level
-        ladder = tuple(int(v) for v in self.state.down_ladders[level])
-        for _ in range(limit):
-            if self.state.player_level > level:
-                return True
-            if self.done or self.state.item_map[level][ladder] != ItemType.LADDER_DOWN:
-                return False
-            if self.guard():
-                continue
-            if self.pos == ladder:
-                self.act(Action.DESCEND)
-                if self.state.player_level == level:
-                    # the ladder is shut: a kill may open it
-                    self.hunt(None, 1, limit=30, explore=False, ranged=False)
-                continue
-            if self.state.mob_map[level][ladder]:
-                if _beside(self.pos, ladder):
-                    self.strike(ladder)
-                elif not self.go([ladder], limit=1):
-                    self.act(Action.NOOP)
-                continue
-            if not self.go([ladder], onto=True, limit=1):
-                self.act(Action.NOOP)
-        return self.state.player_level > level
-
     def clear_gate(self, limit: int = 400, **kw) -> bool:
         """Kill monsters until the level's ladder opens (Craftax: 8 kills on the level)."""
         for _ in range(limit):
@@ -1105,15 +1075,20 @@ class Planner:
         return False
 
     def descend_floor(self, limit: int = 480, **kw) -> bool:
-        """Open the level's ladder (kill monsters until its gate opens), walk onto it, DESCEND."""
+        """Open the level's ladder (kill monsters until its gate opens: ``clear_gate``, which
+        takes ``hunt``'s keywords), then ``take_ladder``."""
+        return self.clear_gate(limit=limit, **kw) and self.take_ladder(limit, kw.get("heal_below", 4.0))
+
+    def take_ladder(self, limit: int = 400, heal_below: float = 4.0) -> bool:
+        """Walk onto the level's ladder down and DESCEND (again, while it is shut), one turn at
+        a time: ``upkeep`` first; a monster in the way (or at the player's back) is fought.
+        True once on the next level."""
         level = self.state.player_level
-        if not self.clear_gate(limit=limit, **kw):
-            return False
         ladder = tuple(int(v) for v in self.state.down_ladders[level])
         for _ in range(limit):
             if self.state.player_level > level or self.done or self.budget <= 0:
                 break
-            if self.upkeep(kw.get("heal_below", 4.0)):
+            if self.upkeep(heal_below):
                 continue
             if self.pos == ladder:
                 self.act(Action.DESCEND)
@@ -1121,8 +1096,7 @@ class Planner:
             beside = [t for t in self.mobs() if _beside(self.pos, t)]
             path = self._path({ladder}, onto=True)
             if beside and (not path or path[0] in beside):
-                t = beside[0]                  # a monster in the way (or at our back): fight it
-                self.strike(t)
+                self.strike(beside[0])
             elif path:
                 self._step_along(path)
             else:
