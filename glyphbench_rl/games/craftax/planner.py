@@ -409,10 +409,15 @@ class Planner:
                 self.strike(beside[0])
         return self.state.player_food >= upto
 
-    def drink_water(self, upto: int) -> bool:
-        """Drink at the nearest water until drink reaches ``upto`` (``gather``: monsters beside
-        are fought off on the way). ``quench`` is the one-turn form used between fight turns."""
-        return self.gather(BlockType.WATER, lambda: self.state.player_drink >= upto, dig=False)
+    def drink_water(self, upto: int, limit: int = 300) -> bool:
+        """Drink at the nearest water or fountain until drink reaches ``upto``: monsters beside
+        the player are fought off (``guard``), else a turn of ``quench``."""
+        for _ in range(limit):
+            if self.state.player_drink >= upto:
+                return True
+            if self.done or (not self.guard() and not self.quench(reach=1_000, until=upto)):
+                break
+        return self.state.player_drink >= upto
 
     # -- upkeep: potions, water, rest, shelter ------------------------------------------------------
     def drink_potion(self, effect: str) -> bool:
