@@ -67,6 +67,11 @@ def _dist(a, b) -> int:
     return abs(a[0] - b[0]) + abs(a[1] - b[1])
 
 
+def _toward(a, b) -> tuple[int, int]:
+    """The unit step from ``a`` toward ``b`` (on one row or column: the direction to face)."""
+    return (b[0] > a[0]) - (b[0] < a[0]), (b[1] > a[1]) - (b[1] < a[1])
+
+
 def _beside(a, b) -> bool:
     return abs(a[0] - b[0]) + abs(a[1] - b[1]) == 1
 
@@ -818,7 +823,7 @@ class Planner:
                 if beside:
                     t = beside[0]
                     if rules.facing(self.state) != t:
-                        self.act(MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
+                        self.face(t)
                         continue
                     shot = self._projectile(t) if ranged else None
                     better = shot is not None and self.damage_to(t, shot) > 2 * self.damage_to(t)
@@ -892,7 +897,7 @@ class Planner:
             return False
         inline = (me[0] == t[0] or me[1] == t[1]) and self._clear_line(me, t)
         if inline and d >= 2:
-            step = ((t[0] > me[0]) - (t[0] < me[0]), (t[1] > me[1]) - (t[1] < me[1]))
+            step = _toward(me, t)
             ahead = (me[0] + step[0], me[1] + step[1])
             waited = self._waited
             chase = d == 2 and target.cooldown > 1        # it stepped back while it cannot strike
@@ -974,11 +979,21 @@ class Planner:
             action = self._projectile(t)
             if action is None:
                 continue
-            dr, dc = (t[0] > self.pos[0]) - (t[0] < self.pos[0]), (t[1] > self.pos[1]) - (t[1] < self.pos[1])
-            if rules.facing(self.state) != (self.pos[0] + dr, self.pos[1] + dc):
-                return self.act(MOVES[(dr, dc)]) or True
-            return self.act(action) or True
+            self._aim(t, action)
+            return True
         return False
+
+    def _aiming_at(self, target) -> bool:
+        """The player faces ``target`` (in its row or column)."""
+        dr, dc = _toward(self.pos, target)
+        return rules.facing(self.state) == (self.pos[0] + dr, self.pos[1] + dc)
+
+    def _aim(self, target, action: int) -> bool:
+        """One turn of fire at ``target`` (in the player's row or column): turn toward it (a
+        move: it steps instead when the cell ahead is free), or ``action`` once facing it."""
+        if not self._aiming_at(target):
+            return self.act(MOVES[_toward(self.pos, target)])
+        return self.act(action)
 
     def cast(self, name: str | None = None, count: int = 1, spell: int = Action.CAST_FIREBALL,
              limit: int = 300, reach: int = 6) -> bool:
@@ -998,13 +1013,9 @@ class Planner:
             lined = [t for t in targets if self.in_line(t, reach)]
             if lined:
                 t = _nearest(lined, self.pos, 1)[0]
-                dr, dc = (t[0] > self.pos[0]) - (t[0] < self.pos[0]), (t[1] > self.pos[1]) - (t[1] < self.pos[1])
-                if rules.facing(self.state) != (self.pos[0] + dr, self.pos[1] + dc):
-                    self.act(MOVES[(dr, dc)])    # (turns; the cell ahead may be free: then a step)
-                    continue
-                if self.state.player_mana < 2:
+                if self._aiming_at(t) and self.state.player_mana < 2:
                     return False
-                self.act(spell)
+                self._aim(t, spell)
                 continue
             # cells in line with a target, two or more from it, reachable by walking
             goals = set()
@@ -1041,13 +1052,7 @@ class Planner:
             inline = [m for m in targets if 2 <= _dist(m.cell, self.pos) <= 6
                       and self._clear_line(self.pos, m.cell)]
             if inline:
-                t = min(inline, key=lambda m: _dist(m.cell, self.pos))
-                step = ((t.cell[0] > self.pos[0]) - (t.cell[0] < self.pos[0]),
-                        (t.cell[1] > self.pos[1]) - (t.cell[1] < self.pos[1]))
-                if rules.facing(self.state) != (self.pos[0] + step[0], self.pos[1] + step[1]):
-                    self.act(MOVES[step])          # (a move: it turns, stepping if it can)
-                else:
-                    self.act(Action.SHOOT_ARROW)
+                self._aim(min(inline, key=lambda m: _dist(m.cell, self.pos)).cell, Action.SHOOT_ARROW)
                 continue
             # a cell in line with a target, 2-4 away, clear
             goals = set()
@@ -1163,7 +1168,7 @@ class Planner:
                 continue
             t = next(n for n in necro if _beside(self.pos, n))
             if rules.facing(self.state) != t:
-                self.act(MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
+                self.face(t)
             else:
                 self.act(Action.DO if s.boss_timesteps_to_spawn_this_round <= 0 else Action.NOOP)
         return self.state.boss_progress >= NUM_LEVELS - 1
