@@ -174,21 +174,6 @@ class Planner:
             return True
         return self.act(MOVES[step])
 
-    def _reachable(self, limit: int = 4000) -> dict:
-        """Walking distance from the player to each cell it can reach."""
-        s, start = self.state, self.pos
-        rows, cols = s.map.shape[1:]
-        dist, queue = {start: 0}, deque([start])
-        while queue and len(dist) < limit:
-            cell = queue.popleft()
-            for dr, dc in MOVES:
-                nxt = (cell[0] + dr, cell[1] + dc)
-                if nxt not in dist and 0 <= nxt[0] < rows and 0 <= nxt[1] < cols \
-                        and rules.player_can_enter(s, *nxt):
-                    dist[nxt] = dist[cell] + 1
-                    queue.append(nxt)
-        return dist
-
     def _mob_at(self, cell):
         """(class, type id) of the live mob at ``cell`` of the player's level, or None."""
         return next(((m.kind, _type_id(m)) for m in live_mobs(self.state) if m.cell == tuple(cell)), None)
@@ -234,7 +219,8 @@ class Planner:
         return out
 
     def _distances(self, goals: set, limit: int = 40) -> dict:
-        """Walking distance from every cell within ``limit`` of the goal cells (BFS from them)."""
+        """Walking distance from every cell within ``limit`` steps of the goal cells (BFS from
+        them; from ``{self.pos}``: to every cell the player reaches)."""
         s = self.state
         dist = {g: 0 for g in goals}
         queue = deque(goals)
@@ -677,7 +663,7 @@ class Planner:
         """Walk up to ``turns`` toward a far reachable cell (new mobs spawn near the player and
         monsters come to it): one drawn from the cells 8 to 20 steps away."""
         rng = rng if rng is not None else self.__dict__.setdefault("_rng", np.random.default_rng(0))
-        dist = self._reachable()
+        dist = self._distances({self.pos}, limit=20)
         far = [c for c, d in dist.items() if 8 <= d <= 20] or [c for c, d in dist.items() if d >= 2]
         if not far:
             return self.act(Action.NOOP)
