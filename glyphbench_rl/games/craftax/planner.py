@@ -87,7 +87,9 @@ class Planner:
     def __init__(self, task, budget: int = 10_000) -> None:
         self.task, self.budget, self.total = task, budget, 0.0
         self._waited = 0          # turns spent waiting in ambush for the same approach (skirmish)
-        self.kills_wanted = False  # explore: stop once a monster can be reached (hunt)
+        self.heal_at, self.heal_to = 0.0, 8   # gather: at or below heal_at health, recover to heal_to
+        self.alert = 1            # guard: walk up to a monster this many steps away
+        self._rng = np.random.default_rng(0)  # explore's choice of a far cell
 
     # -- basics -------------------------------------------------------------------------------------
     @property
@@ -321,8 +323,8 @@ class Planner:
                 return False
             if self.guard():
                 continue
-            if self.state.player_health <= getattr(self, "heal_at", 0) and self.state.inventory.stone >= 4:
-                self.recover(getattr(self, "heal_to", 8))
+            if self.state.player_health <= self.heal_at and self.state.inventory.stone >= 4:
+                self.recover(self.heal_to)
                 continue
             targets = set(self.cells(block))
             if not targets:
@@ -659,17 +661,17 @@ class Planner:
                 return self.act(action) or True
         return False
 
-    def explore(self, turns: int = 12, rng=None) -> bool:
+    def explore(self, turns: int = 12) -> bool:
         """Walk up to ``turns`` toward a far reachable cell (new mobs spawn near the player and
-        monsters come to it): one drawn from the cells 8 to 20 steps away."""
-        rng = rng if rng is not None else self.__dict__.setdefault("_rng", np.random.default_rng(0))
+        monsters come to it): one drawn from the cells 8 to 20 steps away; stop early once a
+        monster can be reached."""
         dist = self._distances({self.pos}, limit=20)
         far = [c for c, d in dist.items() if 8 <= d <= 20] or [c for c, d in dist.items() if d >= 2]
         if not far:
             return self.act(Action.NOOP)
-        goal = far[int(rng.integers(len(far)))]
+        goal = far[int(self._rng.integers(len(far)))]
         for i in range(turns):
-            if i and self.kills_wanted and self._path(set(self.mobs()), onto=False):
+            if i and self._path(set(self.mobs()), onto=False):
                 return True
             path = self._path({goal}, onto=True)
             if not path:
@@ -771,12 +773,12 @@ class Planner:
 
     def guard(self) -> bool:
         """If a monster stands beside the player, turn to it and hit it (one turn); True if so.
-        With ``self.alert`` (default 1) above 1, a monster that many steps away (by the
+        With ``self.alert`` above 1, a monster that many steps away (by the
         Manhattan distance) is walked up to first."""
         monsters, pos = self.mobs(), self.pos
         beside = [m for m in monsters if _beside(pos, m)]
         if not beside and not self.done:
-            close = [m for m in monsters if abs(m[0] - pos[0]) + abs(m[1] - pos[1]) <= getattr(self, "alert", 1)]
+            close = [m for m in monsters if abs(m[0] - pos[0]) + abs(m[1] - pos[1]) <= self.alert]
             if close:
                 return self.go(_nearest(close, pos, 1), limit=1) or True
         if not beside or self.done:
@@ -791,40 +793,36 @@ class Planner:
         healing potion when health is low; explore when none can be reached. With ``ranged``,
         a mob in line 2 or more cells away is first shot at (``_fire_at``)."""
         goal = self.kills(name) + count
-        self.kills_wanted = True
-        try:
-            for _ in range(limit):
-                if self.kills(name) >= goal:
-                    return True
-                if self.done or self.budget <= 0:
-                    return False
-                if self.upkeep(heal_below):
+        for _ in range(limit):
+            if self.kills(name) >= goal:
+                return True
+            if self.done or self.budget <= 0:
+                return False
+            if self.upkeep(heal_below):
+                continue
+            targets = self.mobs(name)
+            beside = [t for t in targets if _beside(self.pos, t)]
+            if self.dodge():
+                continue
+            if ranged and not beside and self._fire_at(targets):
+                continue
+            if beside:
+                t = beside[0]
+                if rules.facing(self.state) != t:
+                    self.face(t)
                     continue
-                targets = self.mobs(name)
-                beside = [t for t in targets if _beside(self.pos, t)]
-                if self.dodge():
-                    continue
-                if ranged and not beside and self._fire_at(targets):
-                    continue
-                if beside:
-                    t = beside[0]
-                    if rules.facing(self.state) != t:
-                        self.face(t)
-                        continue
-                    shot = self._projectile(t) if ranged else None
-                    better = shot is not None and self.damage_to(t, shot) > 2 * self.damage_to(t)
-                    self.act(shot if better else Action.DO)
-                    continue
-                path = self._path(set(targets), onto=False) if targets else None
-                if path:
-                    self._step_along(path)
-                elif explore:
-                    self.explore(6)
-                else:
-                    self.act(Action.NOOP)
-            return self.kills(name) >= goal
-        finally:
-            self.kills_wanted = False
+                shot = self._projectile(t) if ranged else None
+                better = shot is not None and self.damage_to(t, shot) > 2 * self.damage_to(t)
+                self.act(shot if better else Action.DO)
+                continue
+            path = self._path(set(targets), onto=False) if targets else None
+            if path:
+                self._step_along(path)
+            elif explore:
+                self.explore(6)
+            else:
+                self.act(Action.NOOP)
+        return self.kills(name) >= goal
 
     def strike(self, cell) -> bool:
         """One turn toward DO on the ``cell`` beside the player (a mob, a block, water): turn
@@ -1175,9 +1173,7 @@ class Planner:
             if path:
                 self._step_along(path)
             elif explore:
-                self.kills_wanted = True
                 self.explore(6)
-                self.kills_wanted = False
             else:
                 self.act(Action.NOOP)
         return self.state.player_health <= 0
