@@ -402,20 +402,10 @@ class Planner:
                 self.strike(beside[0])
         return self.state.player_food >= upto
 
-    def drink_water(self, upto: int, limit: int = 300) -> bool:
-        """Drink at the nearest water or fountain until drink reaches ``upto``: monsters beside
-        the player are fought off (``guard``), else a turn of ``quench``."""
-        for _ in range(limit):
-            if self.state.player_drink >= upto:
-                return True
-            if self.done or (not self.guard() and not self.quench(reach=1_000, until=upto)):
-                break
-        return self.state.player_drink >= upto
-
     # -- upkeep: potions, water, rest, shelter ------------------------------------------------------
     def drink_potion(self, effect: str) -> bool:
-        """Drink a potion whose effect is ``effect`` (tables' order: heal, harm, mana, drain,
-        energy, tire), read from the episode's potion mapping; False if none is held."""
+        """Drink a potion whose effect is ``effect`` (``task.POTION_EFFECTS``: heal, harm, mana,
+        drain, energy, tire), read from the episode's potion mapping; False if none is held."""
         want = POTION_EFFECTS.index(effect)
         s = self.state
         for colour, e in enumerate(s.potion_mapping):
@@ -447,9 +437,9 @@ class Planner:
         return not self.done and until()
 
     def upkeep(self, heal_below: float = 4.0) -> bool:
-        """Between fight turns: drink a healing potion when health falls below ``heal_below``;
-        without one, REST while no monster is within 10 steps (a hit ends the rest). True when
-        it took a turn."""
+        """Between fight turns: drink water (``quench``) when thirsty and no monster is beside;
+        drink a healing potion when health falls below ``heal_below``; without one, REST while
+        no monster is within 10 steps (a hit ends the rest). True when it took a turn."""
         s = self.state
         if s.player_drink <= 3 and not any(_beside(self.pos, t) for t in self.mobs()) \
                 and self.quench(reach=25):
@@ -487,6 +477,16 @@ class Planner:
             self.strike(t)
             took = True
         return took
+
+    def drink_water(self, upto: int, limit: int = 300) -> bool:
+        """Drink at the nearest water or fountain until drink reaches ``upto``: monsters beside
+        the player are fought off (``guard``), else a turn of ``quench``."""
+        for _ in range(limit):
+            if self.state.player_drink >= upto:
+                return True
+            if self.done or (not self.guard() and not self.quench(reach=1_000, until=upto)):
+                break
+        return self.state.player_drink >= upto
 
     def recover(self, upto: int, limit: int = 200) -> bool:
         """Wall in with stone and sleep (or wait) until health reaches ``upto`` (needs the
