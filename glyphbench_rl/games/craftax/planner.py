@@ -815,14 +815,19 @@ class Planner:
                 better = shot is not None and self.damage_to(t, shot) > 2 * self.damage_to(t)
                 self.act(shot if better else Action.DO)
                 continue
-            path = self._path(set(targets), onto=False) if targets else None
-            if path:
-                self._step_along(path)
-            elif explore:
-                self.explore(6)
-            else:
-                self.act(Action.NOOP)
+            self._approach(targets, explore)
         return self.kills(name) >= goal
+
+    def _approach(self, targets, explore: bool) -> None:
+        """One turn toward beside the nearest reachable of ``targets`` (cells; a projectile's way
+        is waited out); with none reachable, ``explore`` (or wait a turn)."""
+        path = self._path(set(targets), onto=False) if targets else None
+        if path:
+            self._step_along(path)
+        elif explore:
+            self.explore(6)
+        else:
+            self.act(Action.NOOP)
 
     def strike(self, cell) -> bool:
         """One turn toward DO on the ``cell`` beside the player (a mob, a block, water): turn
@@ -1169,11 +1174,5 @@ class Planner:
             if any(_beside(self.pos, t) for t in targets):
                 self.act(Action.NOOP)
                 continue
-            path = self._path(set(targets), onto=False) if targets else None
-            if path:
-                self._step_along(path)
-            elif explore:
-                self.explore(6)
-            else:
-                self.act(Action.NOOP)
+            self._approach(targets, explore)
         return self.state.player_health <= 0
