@@ -48,39 +48,39 @@ def furnace(p) -> None:
 
 # -- win paths ---------------------------------------------------------------------------------------
 def choptrees(p):
-    p.collect(B.TREE, lambda: p.task.tally.got["wood"] >= 10)
+    p.gather(B.TREE, lambda: p.task.tally.got["wood"] >= 10, dig=False)
 
 
 def minestone(p):
-    p.collect(B.STONE, lambda: p.task.tally.got["stone"] >= 10)
+    p.gather(B.STONE, lambda: p.task.tally.got["stone"] >= 10, dig=False)
 
 
 def gatherresources(p):
-    p.collect(B.TREE, lambda: inv(p).wood >= 8)
+    p.gather(B.TREE, lambda: inv(p).wood >= 8, dig=False)
     p.table()
     p.craft(A.MAKE_WOOD_PICKAXE)
-    p.collect(B.TREE, lambda: inv(p).wood >= 5)
-    p.collect(B.STONE, lambda: inv(p).stone >= 5)
+    p.gather(B.TREE, lambda: inv(p).wood >= 5, dig=False)
+    p.gather(B.STONE, lambda: inv(p).stone >= 5, dig=False)
 
 
 def craftpickaxe(p):
-    p.collect(B.TREE, lambda: inv(p).wood >= 3)
+    p.gather(B.TREE, lambda: inv(p).wood >= 3, dig=False)
     p.table()
     p.craft(A.MAKE_WOOD_PICKAXE)
 
 
 def craftsword(p):
-    p.collect(B.TREE, lambda: inv(p).wood >= 5)
+    p.gather(B.TREE, lambda: inv(p).wood >= 5, dig=False)
     p.table()
     p.craft(A.MAKE_WOOD_PICKAXE)
-    p.collect(B.STONE, lambda: inv(p).stone >= 1)
+    p.gather(B.STONE, lambda: inv(p).stone >= 1, dig=False)
     p.craft(A.MAKE_STONE_SWORD)
 
 
 def craftchain(p):
     tools(p, 6, 3)
-    p.collect(B.COAL, lambda: inv(p).coal >= 1)
-    p.collect(B.IRON, lambda: inv(p).iron >= 1)
+    p.gather(B.COAL, lambda: inv(p).coal >= 1, dig=False)
+    p.gather(B.IRON, lambda: inv(p).iron >= 1, dig=False)
     furnace(p)
     p.craft(A.MAKE_IRON_SWORD)
 
@@ -142,7 +142,7 @@ def find_diamond(p):
 
 
 def find_water(p):
-    p.drink(9)
+    p.drink_water(9)
 
 
 def survive_hunger(p):
@@ -151,7 +151,7 @@ def survive_hunger(p):
 
 
 def survive_thirst(p):
-    p.drink(6)
+    p.drink_water(6)
     p.survive(200)
 
 
@@ -161,11 +161,11 @@ def firstday(p):
     p.place_n(A.PLACE_STONE, B.STONE, 1)
     p.gather(B.COAL, lambda: inv(p).coal >= 1, limit=60)
     p.gather(B.IRON, lambda: inv(p).iron >= 1, limit=60)
-    p.drink(9)
-    p.fight("cow", 1, limit=60)
+    p.drink_water(9)
+    p.hunt("cow", 1, limit=60, explore=False, ranged=False)
     p.gather(B.GRASS, lambda: inv(p).sapling >= 1, limit=100, dig=False)
     p.place_n(A.PLACE_PLANT, B.PLANT, 1)
-    p.fight("zombie", 1, limit=40)
+    p.hunt("zombie", 1, limit=40, explore=False, ranged=False)
     if p.wall_in():     # sleep walled in until rested (wake_up)
         p.act(A.SLEEP)
         while p.state.is_sleeping and not p.done:
@@ -187,7 +187,7 @@ def tend(p) -> None:
     if p.state.player_health <= 5 and inv(p).stone >= 4:
         p.recover(8)
     if p.state.player_drink <= 4:
-        p.drink(9)
+        p.drink_water(9)
     if p.state.player_food <= 4:
         p.eat(9)
 
@@ -208,7 +208,8 @@ def armed_tools(p, wood: int, stone: int) -> None:
 
 def open_gate_and_descend(p) -> None:
     tend(p)
-    p.fight(None, max(0, 8 - int(p.state.monsters_killed[0])))   # kills still needed
+    need = max(0, 8 - int(p.state.monsters_killed[0]))       # kills still needed
+    p.hunt(None, need, limit=600, explore=False, ranged=False)
     tend(p)
     p.take_ladder()
 
@@ -274,7 +275,7 @@ LOSS_SEEDS = {"mine-iron": (1, 2)}     # seed 0: no monster comes near within th
 @pytest.mark.parametrize("name,seed", [(n, s) for n in LOSSES for s in LOSS_SEEDS.get(n, (0, 1))])
 def test_loss_path(name, seed):
     task, p = make(name, seed)
-    assert p.perish(), (name, seed, task.state.player_health)
+    assert p.surrender(limit=512, explore=False), (name, seed, task.state.player_health)
     assert task.done and task.won is False
     death = SCENARIOS[name].death
     earned = sum(term.unit * paid for term, _, paid in task._open) + sum(

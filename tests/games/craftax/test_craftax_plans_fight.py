@@ -1,6 +1,6 @@
 """Scripted win and loss paths for the Craftax fight and survival tasks.
 
-Each WIN path plays the task through ``task.step`` only (``planner.CombatPlanner``: it reads the
+Each WIN path plays the task through ``task.step`` only (``planner.Planner``: it reads the
 state to plan: mob cells, cooldowns, health) and wins with every reward term paid (or, for the
 tasks that run to the horizon, ends alive with a return of at least 0.5). The potion tasks are
 won blind (potions tried once health can take the harmful one); a second test drinks the
@@ -13,15 +13,16 @@ from __future__ import annotations
 import pytest
 
 from glyphbench_rl.core import registry
-from glyphbench_rl.games.craftax.planner import CombatPlanner, live_mobs
+from glyphbench_rl.games.craftax.planner import Planner, live_mobs
 from glyphbench_rl.games.craftax.scenarios import SCENARIOS
 from glyphbench_rl.games.craftax.tables import Action as A
+from glyphbench_rl.games.craftax.tables import BlockType as B
 
 
-def start(name: str, seed: int) -> CombatPlanner:
+def start(name: str, seed: int) -> Planner:
     task = registry.make(f"glyphbench/craftax-{name}-v0")
     task.reset(seed=seed)
-    return CombatPlanner(task)
+    return Planner(task)
 
 
 def kills(p, name: str) -> int:
@@ -55,18 +56,21 @@ def win_fight_skeletons(p):
 def win_wave_defense(p):
     # 5 of the 10 zombies (half the return), then keep out of reach to the horizon
     p.skirmish("zombie", 5, rest_below=3, rest_to=3)
-    p.survive(200)
+    p.survive(200, keep_away=True)
 
 
 def win_bow(p):
-    # shoot; out of arrows, make more at the table (1 wood + 1 stone: 2 arrows); then the sword
+    # shoot; out of arrows, make more at the table (1 wood + 1 stone: 2 arrows), placing a new
+    # table (2 wood) when the skeletons' arrows broke it; then the sword
     need = 4 if p.task.scenario.name == "bow-kite" else 5
     p.shoot("skeleton", need)
     inv = p.state.inventory
     while not p.done and inv.wood >= 1 and inv.stone >= 1 and kills(p, "skeleton") < need:
         arrows = inv.arrows
+        if not p.cells(B.CRAFTING_TABLE) and (inv.wood < 3 or not p.table()):
+            break
         if not p.craft(A.MAKE_ARROW) or inv.arrows != arrows + 2:
-            break                   # (no table left: skeletons' arrows break tables)
+            break
     p.shoot("skeleton", need - kills(p, "skeleton"))
     p.skirmish("skeleton", need - kills(p, "skeleton"), rest_below=3, rest_to=3)
 
@@ -89,12 +93,12 @@ def win_kiteskeletons(p):
 
 
 def win_survive(p):
-    p.survive(200)
+    p.survive(200, keep_away=True)
 
 
 def win_night_horde(p):
     p.skirmish(None, 4, rest_below=4, rest_to=4, until=lambda: p.task.tally.counts["turn"] >= 150)
-    p.survive(200)
+    p.survive(200, keep_away=True)
 
 
 def win_potion(p):
@@ -113,7 +117,7 @@ def win_potion(p):
 
 def win_potion_known(p):
     # the healing potion by its effect, read off the episode's (hidden) potion mapping
-    assert p.drink("heal")
+    assert p.drink_potion("heal")
     p.skirmish("zombie", 2, rest_below=3, rest_to=3)
 
 
@@ -122,14 +126,14 @@ def win_xp_attribute_spend(p):
     # knight (6 a blow, half of a sword's blow blocked) comes, and meets the sword in front
     p.skirmish("zombie", 2, rest_below=3, rest_to=3)
     while not p.done and p.state.player_health < 9:
-        p.survive(1)
+        p.survive(1, keep_away=True)
     p.act(A.LEVEL_UP_STRENGTH)
     p.act(A.LEVEL_UP_STRENGTH)
     p.skirmish("knight", 1)
 
 
 def win_reach_dungeon(p):
-    assert p.descend()
+    assert p.take_ladder()
 
 
 WINS = {
@@ -214,6 +218,6 @@ def test_loss_path(name):
 def test_loss_by_the_harmful_potion(name):
     # at 2 health the harmful potion (-3) kills on the step it is drunk
     p = start(name, 0)
-    assert p.drink("harm")
+    assert p.drink_potion("harm")
     assert p.done and p.task.won is False and p.state.player_health <= 0
     assert p.total == pytest.approx(SCENARIOS[name].death)
