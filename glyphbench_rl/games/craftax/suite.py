@@ -246,8 +246,8 @@ scenario(name="ice-realm", horizon=480, floor=7, kit=_DEEP_KIT,
          success="level >= 8", progress_keys=("gate",))
 # The necromancer (Craftax's own boss): 8 hits while he is vulnerable, each raising a 7-turn wave
 # of the next floor's monsters, damage x1.5. Upstream's fight as is; the player comes as a late
-# game Craftax character would: the 7 XP of the floors spent (strength 4, intelligence 4,
-# dexterity 3), potions saved from the chests, gems for re-enchanting, and fire and ice
+# game Craftax character would: attributes raised by the XP of the floors (strength 4,
+# intelligence 4, dexterity 3), potions saved from the chests, gems for re-enchanting, fire and ice
 # enchantment tables beside the start, 3 cells north of him (he stands at the graveyard's centre,
 # (24, 24)), to turn the sword to ice for the fire realm's wave and the armour to ice for the ice
 # realm's. He is vulnerable at the start (no wave before the first hit).
@@ -263,8 +263,8 @@ scenario(name="necromancer", horizon=512, floor=8,
          topics=("fight", "boss", "magic"),
          objective="Defeat the necromancer, 3 steps south: hit him (DO) 8 times. Each hit raises a 7-turn wave "
                    "of monsters (floor 1's, then 2's ... 7's) that must all die before he can be hit again. "
-                   "The fire realm's wave resists fire, the ice realm's ice: the enchantment tables beside you "
-                   "(fire: a ruby, ice: a sapphire, 9 mana each) re-enchant your sword or armour.",
+                   "The fire realm's wave resists fire, the ice realm's ice: the enchantment tables 2 steps west "
+                   "(fire: a ruby) and east (ice: a sapphire) of you re-enchant your sword or armour (9 mana).",
          terms=(Term("hits", "boss", 1 / 8, "each hit on the necromancer", cap=8),), success="boss >= 8",
          progress_keys=("boss",))
 scenario(name="bossfight", horizon=480, floor=5, settings=ARENA,
