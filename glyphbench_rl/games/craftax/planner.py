@@ -612,7 +612,7 @@ class Planner:
     # ice realm: ice), where there are gems and mana to spare
     WAVE_ARMOUR = {6: 1, 7: 2}
 
-    def necromancer(self, limit: int = 512, heal_below: float = 6.0, ready_health: float = 8.0) -> bool:
+    def necromancer(self, limit: int = 512, heal_below: float = 7.0, ready_health: float = 8.0) -> bool:
         """The necromancer fight, played the Craftax way: fight each spawn wave (``hunt``:
         the sword, or an arrow or spell where it does more); once he is vulnerable, get ready
         for the next wave before hitting him: drink a healing potion below ``ready_health``,
@@ -630,12 +630,15 @@ class Planner:
             if not necro:
                 return False
             if not is_boss_vulnerable(s):
-                if self.upkeep(heal_below):
+                if s.player_health < heal_below and self.quaff("heal"):
                     continue
-                mobs = self.mobs()      # (as ``boss``: hold the necromancer's side while the
-                if mobs and (s.boss_timesteps_to_spawn_this_round < 1      # wave spawns)
+                mobs = self.mobs()
+                if mobs and self._strike_ahead(mobs):     # (before dodging: a deep thing on a
+                    continue                              # grave cannot move and shoots at once)
+                if mobs and (s.boss_timesteps_to_spawn_this_round < 1      # (as ``boss``: hold
+                             # the necromancer's side while the wave spawns)
                              or any(_beside(self.pos, t) for t in mobs) or self.danger()):
-                    self.hunt(count=1, limit=1, explore=False, heal_below=heal_below)
+                    self.hunt(count=1, limit=1, explore=False, heal_below=0.0)   # (healing: above)
                 elif mobs and self._fire_at(mobs):
                     pass
                 elif not any(_beside(self.pos, n) for n in necro):
@@ -645,7 +648,7 @@ class Planner:
                     self.act(Action.NOOP)
                 continue
             # vulnerable: nothing can hurt the player until the next hit
-            if s.player_health < ready_health and self.drink("heal"):
+            if s.player_health < ready_health and self.quaff("heal"):
                 continue
             want = self.WAVE_ELEMENT.get(s.boss_progress + 1, 1)
             armour = self.WAVE_ARMOUR.get(s.boss_progress + 1)
@@ -657,7 +660,7 @@ class Planner:
             if jobs:
                 action, element = jobs[0]
                 if s.player_mana < ENCHANT_MANA_COST:
-                    if not self.drink("mana"):
+                    if not self.quaff("mana"):
                         stuck.add(jobs[0])
                     continue
                 before = self.budget
@@ -671,6 +674,31 @@ class Planner:
             t = next(n for n in necro if _beside(self.pos, n))
             self.act(Action.DO if rules.facing(self.state) == t else MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
         return self.state.boss_progress >= NUM_LEVELS - 1
+
+    def _strike_ahead(self, targets) -> bool:
+        """If the player faces a mob beside it, strike (DO); if it faces one in line 2..5 cells
+        away and holds a projectile that hurts it, shoot. True if it took the turn."""
+        ahead = rules.facing(self.state)
+        step = (ahead[0] - self.pos[0], ahead[1] - self.pos[1])
+        for t in _nearest(targets, self.pos, 3):
+            if t == ahead:
+                return self.act(Action.DO) or True
+            d = abs(t[0] - self.pos[0]) + abs(t[1] - self.pos[1])
+            toward = ((t[0] > self.pos[0]) - (t[0] < self.pos[0]), (t[1] > self.pos[1]) - (t[1] < self.pos[1]))
+            if toward == step and 2 <= d <= 5 and self.in_line(t, 5):
+                shot = self._projectile(t)
+                if shot is not None:
+                    return self.act(shot) or True
+        return False
+
+    def quaff(self, effect: str) -> bool:
+        """Drink a held potion whose effect (``task.POTION_EFFECTS``) is ``effect``; False (no
+        turn taken) when none is held. (As ``drink`` with an effect; a name of its own.)"""
+        from .task import POTION_EFFECTS
+        for colour, held in enumerate(self.state.inventory.potions.tolist()):
+            if held > 0 and POTION_EFFECTS[int(self.state.potion_mapping[colour])] == effect:
+                return self.act(Action.DRINK_POTION_RED + colour) or True
+        return False
 
     def surrender(self, limit: int = 500) -> bool:
         """A losing policy: walk up to the nearest monster (exploring until one comes) and stand
