@@ -1162,6 +1162,93 @@ class Planner:
                 self.act(Action.DO if s.boss_timesteps_to_spawn_this_round <= 0 else Action.NOOP)
         return self.state.boss_progress >= NUM_LEVELS - 1
 
+    # the sword element that hurts each wave of the necromancer fight (by the wave's row of
+    # FLOOR_MOB_MAPPING, which is the boss's progress): ice for the fire realm's fire-proof
+    # pigmen and fire elementals, fire for everything else (the ice realm's mobs are ice-proof)
+    WAVE_ELEMENT = {6: 2}
+    # the armour element that guards against each wave's elemental blows (fire realm: fire;
+    # ice realm: ice), where there are gems and mana to spare
+    WAVE_ARMOUR = {6: 1, 7: 2}
+
+    def necromancer(self, limit: int = 512, heal_below: float = 7.0, ready_health: float = 8.0) -> bool:
+        """The necromancer fight, played the Craftax way: fight each spawn wave (``hunt``:
+        the sword, or an arrow or spell where it does more); once he is vulnerable, get ready
+        for the next wave before hitting him: drink a healing potion below ``ready_health``,
+        and re-enchant the sword at the enchantment table of the element the next wave's
+        mobs are weak to (a mana potion first when short of mana); then hit him (DO)."""
+        from .mobs import is_boss_vulnerable
+        from .tables import ENCHANT_MANA_COST, NUM_LEVELS
+        tables = {1: (BlockType.ENCHANTMENT_TABLE_FIRE, "ruby"), 2: (BlockType.ENCHANTMENT_TABLE_ICE, "sapphire")}
+        stuck = set()
+        for _ in range(limit):
+            s = self.state
+            if self.done or self.budget <= 0 or s.boss_progress >= NUM_LEVELS - 1:
+                break
+            necro = self.cells(BlockType.NECROMANCER)
+            if not necro:
+                return False
+            if not is_boss_vulnerable(s):
+                if s.player_health < heal_below and self.drink_potion("heal"):
+                    continue
+                mobs = self.mobs()
+                if mobs and self._strike_ahead(mobs):     # (before dodging: a deep thing on a
+                    continue                              # grave cannot move and shoots at once)
+                if mobs and (s.boss_timesteps_to_spawn_this_round < 1      # (as ``boss``: hold
+                             # the necromancer's side while the wave spawns)
+                             or any(_beside(self.pos, t) for t in mobs) or self.danger()):
+                    self.hunt(count=1, limit=1, explore=False, heal_below=0.0)   # (healing: above)
+                elif mobs and self._fire_at(mobs):
+                    pass
+                elif not any(_beside(self.pos, n) for n in necro):
+                    path = self._path(set(necro), onto=False)
+                    self._step_along(path) if path else self.act(Action.NOOP)
+                else:
+                    self.act(Action.NOOP)
+                continue
+            # vulnerable: nothing can hurt the player until the next hit
+            if s.player_health < ready_health and self.drink_potion("heal"):
+                continue
+            want = self.WAVE_ELEMENT.get(s.boss_progress + 1, 1)
+            armour = self.WAVE_ARMOUR.get(s.boss_progress + 1)
+            jobs = [(Action.ENCHANT_SWORD, want)] * (s.sword_enchantment != want)
+            jobs += [(Action.ENCHANT_ARMOUR, armour)] * (armour is not None and bool(
+                (s.armour_enchantments != armour).any()))
+            jobs = [(a, e) for a, e in jobs if (a, e) not in stuck and self.cells(tables[e][0])
+                    and getattr(s.inventory, tables[e][1]) >= 1]
+            if jobs:
+                action, element = jobs[0]
+                if s.player_mana < ENCHANT_MANA_COST:
+                    if not self.drink_potion("mana"):
+                        stuck.add(jobs[0])
+                    continue
+                before = self.budget
+                if not self.enchant(action, tables[element][0]) and self.budget == before:
+                    stuck.add(jobs[0])
+                continue
+            if not any(_beside(self.pos, n) for n in necro):
+                path = self._path(set(necro), onto=False)
+                self._step_along(path) if path else self.act(Action.NOOP)
+                continue
+            t = next(n for n in necro if _beside(self.pos, n))
+            self.act(Action.DO if rules.facing(self.state) == t else MOVES[(t[0] - self.pos[0], t[1] - self.pos[1])])
+        return self.state.boss_progress >= NUM_LEVELS - 1
+
+    def _strike_ahead(self, targets) -> bool:
+        """If the player faces a mob beside it, strike (DO); if it faces one in line 2..5 cells
+        away and holds a projectile that hurts it, shoot. True if it took the turn."""
+        ahead = rules.facing(self.state)
+        step = (ahead[0] - self.pos[0], ahead[1] - self.pos[1])
+        for t in _nearest(targets, self.pos, 3):
+            if t == ahead:
+                return self.act(Action.DO) or True
+            d = abs(t[0] - self.pos[0]) + abs(t[1] - self.pos[1])
+            toward = ((t[0] > self.pos[0]) - (t[0] < self.pos[0]), (t[1] > self.pos[1]) - (t[1] < self.pos[1]))
+            if toward == step and 2 <= d <= 5 and self.in_line(t, 5):
+                shot = self._projectile(t)
+                if shot is not None:
+                    return self.act(shot) or True
+        return False
+
     # -- losing policies ---------------------------------------------------------------------------
     def surrender(self, limit: int = 500, explore: bool = True) -> bool:
         """A losing policy: walk up to the nearest monster and stand there doing nothing until

@@ -245,12 +245,27 @@ scenario(name="ice-realm", horizon=480, floor=7, kit=_DEEP_KIT,
          objective="Cross the dark ice realm (fire-enchanted sword, ice-enchanted armour): 3 kills open the ladder; DESCEND.",
          edits=(Gate(3),), terms=(stage("down", "level >= 8", 1.0, "for reaching the graveyard"),),
          success="level >= 8", progress_keys=("gate",))
-scenario(name="necromancer", horizon=420, floor=8,
-         kit=dict(sword=4, bow=1, arrows=20, wood=10, coal=10, ruby=2, sapphire=2, armour=ARMOUR_DIAMOND,
-                  potions=ALL_POTIONS),
-         player=_MAGIC | dict(sword_enchantment=1, bow_enchantment=1, armour_enchantments=(1, 2, 1, 2)),
+# The necromancer (Craftax's own boss): 8 hits while he is vulnerable, each raising a 7-turn wave
+# of the next floor's monsters, damage x1.5. Upstream's fight as is; the player comes as a late
+# game Craftax character would: attributes raised by the XP of the floors (strength 4,
+# intelligence 4, dexterity 3), potions saved from the chests, gems for re-enchanting, fire and ice
+# enchantment tables beside the start, 3 cells north of him (he stands at the graveyard's centre,
+# (24, 24)), to turn the sword to ice for the fire realm's wave and the armour to ice for the ice
+# realm's. He is vulnerable at the start (no wave before the first hit).
+scenario(name="necromancer", horizon=512, floor=8,
+         kit=dict(sword=4, bow=1, arrows=20, wood=10, coal=10, ruby=2, sapphire=6, armour=ARMOUR_DIAMOND,
+                  potions=(12,) * 6),
+         player=_MAGIC | dict(sword_enchantment=1, bow_enchantment=1, armour_enchantments=(1, 1, 1, 1),
+                              player_strength=4, player_health=12, player_intelligence=4, player_mana=18,
+                              player_dexterity=3, player_position=(21, 24),
+                              boss_timesteps_to_spawn_this_round=0),
+         edits=(Stamp(B.PATH, ((0, 0),)), Stamp(B.ENCHANTMENT_TABLE_FIRE, ((0, -2),)),
+                Stamp(B.ENCHANTMENT_TABLE_ICE, ((0, 2),))),
          topics=("fight", "boss", "magic"),
-         objective="Defeat the necromancer: hit him (DO) while he is vulnerable, 8 times; his summons must die first.",
+         objective="Defeat the necromancer, 3 steps south: hit him (DO) 8 times. Each hit raises a 7-turn wave "
+                   "of monsters (floor 1's, then 2's ... 7's) that must all die before he can be hit again. "
+                   "The fire realm's wave resists fire, the ice realm's ice: the enchantment tables 2 steps west "
+                   "(fire: a ruby) and east (ice: a sapphire) of you re-enchant your sword or armour (9 mana).",
          terms=(Term("hits", "boss", 1 / 8, "each hit on the necromancer", cap=8),), success="boss >= 8",
          progress_keys=("boss",))
 scenario(name="bossfight", horizon=480, floor=5, settings=ARENA,
