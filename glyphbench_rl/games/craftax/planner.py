@@ -1132,36 +1132,6 @@ class Planner:
                 return True
         return False
 
-    def boss(self, limit: int = 420, **kw) -> bool:
-        """The necromancer fight (the graveyard): kill the monsters of each spawn wave; while he
-        is vulnerable (none alive, the wave over) stand beside his block and hit him (DO)."""
-        for _ in range(limit):
-            s = self.state
-            if self.done or self.budget <= 0 or s.boss_progress >= NUM_LEVELS - 1:
-                break
-            if self.upkeep(kw.get("heal_below", 4.0)):
-                continue
-            necro = self.cells(BlockType.NECROMANCER)
-            if not necro:
-                return False
-            mobs = self.mobs()
-            if mobs and (s.boss_timesteps_to_spawn_this_round < 1
-                         or any(_beside(self.pos, t) for t in mobs) or self.projectile_cells()):
-                self.hunt(count=1, limit=1, explore=False, **kw)
-                continue
-            if mobs and self._fire_at(mobs):     # (the wave is on: hold the necromancer's side)
-                continue
-            if not any(_beside(self.pos, n) for n in necro):
-                path = self._path(set(necro), onto=False)
-                self._step_along(path) if path else self.act(Action.NOOP)
-                continue
-            t = next(n for n in necro if _beside(self.pos, n))
-            if rules.facing(self.state) != t:
-                self.face(t)
-            else:
-                self.act(Action.DO if s.boss_timesteps_to_spawn_this_round <= 0 else Action.NOOP)
-        return self.state.boss_progress >= NUM_LEVELS - 1
-
     # the sword element that hurts each wave of the necromancer fight (by the wave's row of
     # FLOOR_MOB_MAPPING, which is the boss's progress): ice for the fire realm's fire-proof
     # pigmen and fire elementals, fire for everything else (the ice realm's mobs are ice-proof)
@@ -1177,7 +1147,7 @@ class Planner:
         and re-enchant the sword at the enchantment table of the element the next wave's
         mobs are weak to (a mana potion first when short of mana); then hit him (DO)."""
         from .mobs import is_boss_vulnerable
-        from .tables import ENCHANT_MANA_COST, NUM_LEVELS
+        from .tables import ENCHANT_MANA_COST
         tables = {1: (BlockType.ENCHANTMENT_TABLE_FIRE, "ruby"), 2: (BlockType.ENCHANTMENT_TABLE_ICE, "sapphire")}
         stuck = set()
         for _ in range(limit):
@@ -1195,7 +1165,7 @@ class Planner:
                     continue                              # grave cannot move and shoots at once)
                 if mobs and (s.boss_timesteps_to_spawn_this_round < 1      # (as ``boss``: hold
                              # the necromancer's side while the wave spawns)
-                             or any(_beside(self.pos, t) for t in mobs) or self.danger()):
+                             or any(_beside(self.pos, t) for t in mobs) or self.projectile_cells()):
                     self.hunt(count=1, limit=1, explore=False, heal_below=0.0)   # (healing: above)
                 elif mobs and self._fire_at(mobs):
                     pass
