@@ -289,13 +289,44 @@ class Context:
         self.reserve: list[tuple[str, int, int]] = []
 
     def admit(self, state, rng) -> None:
+        """Each waiting mob, in turn, takes a random free cell in its ring (one draw whenever the
+        ring has a free cell, whether or not its class has a free slot). A ring's free cells are
+        found once and found again only after a mob was placed."""
         from .mobs import add_mob
         waiting = []
+        rings: dict[tuple[int, int], tuple] = {}
         for name, dmin, dmax in self.reserve:
-            spots = [p for p in _cells(state, dmin, dmax) if _free(state, *p, self.floor)]
-            if not spots or not add_mob(state, name, spots[int(rng.integers(len(spots)))]):
+            ring = rings.get((dmin, dmax))
+            if ring is None:
+                ring = rings[dmin, dmax] = _free_ring(state, dmin, dmax, self.floor)
+            cells, r0, c0, width = ring
+            if not cells.size:
+                waiting.append((name, dmin, dmax))
+                continue
+            k = int(cells[int(rng.integers(cells.size))])
+            if add_mob(state, name, (r0 + k // width, c0 + k % width)):
+                rings.clear()
+            else:
                 waiting.append((name, dmin, dmax))
         self.reserve = waiting
+
+
+def _free_ring(state, dmin: int, dmax: int, floor: int):
+    """``[p for p in _cells(state, dmin, dmax) if _free(state, *p, floor)]`` as flat indices
+    (row-major, the same order) into the box ``rows r0.., cols c0.., width`` columns wide."""
+    level = state.player_level
+    pr, pc = state.player_position.tolist()
+    rows, cols = state.map.shape[1:]
+    r0, r1 = max(0, pr - dmax), min(rows, pr + dmax + 1)
+    c0, c1 = max(0, pc - dmax), min(cols, pc + dmax + 1)
+    ok = state.map[level, r0:r1, c0:c1] == floor
+    ok &= ~state.mob_map[level, r0:r1, c0:c1]
+    ok &= state.item_map[level, r0:r1, c0:c1] == 0
+    d = np.add.outer(np.abs(np.arange(r0 - pr, r1 - pr)), np.abs(np.arange(c0 - pc, c1 - pc)))
+    ok &= (d >= dmin) & (d <= dmax)
+    if r0 <= pr < r1 and c0 <= pc < c1:
+        ok[pr - r0, pc - c0] = False
+    return np.flatnonzero(ok), r0, c0, c1 - c0
 
 
 @dataclass(frozen=True)

@@ -265,10 +265,33 @@ def _number(x: float) -> str:
     return str(int(r)) if r == int(r) else str(r)
 
 
+_HUDS: dict[tuple, str] = {}      # everything the HUD reads -> the HUD (``hud``)
+
+
 def hud(state: State, settings: Settings | None = None) -> str:
     """One line: vitals, inventory, equipment, potions, spells, attributes, floor, position,
-    facing, light and rest state; empty parts left out, parts joined by `` | ``."""
+    facing, light and rest state; empty parts left out, parts joined by `` | ``. (Remembered by
+    the values it reads: most turns change few of them, and a state seen before is common.)"""
     del settings   # (the HUD reads only the state; kept for the engine's call shape)
+    inv, level = state.inventory, state.player_level
+    key = (state.player_health, state.player_food, state.player_drink, state.player_energy,
+           state.player_mana, state.player_strength, state.player_dexterity,
+           state.player_intelligence, state.player_xp, inv.wood, inv.stone, inv.coal, inv.iron,
+           inv.diamond, inv.sapphire, inv.ruby, inv.sapling, inv.torches, inv.arrows, inv.books,
+           inv.pickaxe, inv.sword, inv.bow, state.sword_enchantment, state.bow_enchantment,
+           inv.armour.tobytes(), state.armour_enchantments.tobytes(), inv.potions.tobytes(),
+           state.learned_spells.tobytes(), level, state.player_position.tobytes(),
+           state.player_direction, state.light_level >= 0.5, state.monsters_killed.tobytes(),
+           state.is_sleeping, state.is_resting)
+    line = _HUDS.get(key)
+    if line is None:
+        if len(_HUDS) >= 50_000:
+            _HUDS.clear()
+        line = _HUDS[key] = _hud(state)
+    return line
+
+
+def _hud(state: State) -> str:
     maxima = max_vitals(state)
     values = (_number(state.player_health), state.player_food, state.player_drink,
               state.player_energy, state.player_mana)
