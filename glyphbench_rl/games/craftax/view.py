@@ -169,35 +169,55 @@ def _window(array: np.ndarray, r0: int, c0: int, fill) -> np.ndarray:
     return out
 
 
-_LADDER_DOWN = np.uint8(_ITEM0 + ItemType.LADDER_DOWN)
-_LADDER_BLOCKED = np.uint8(_ITEM0 + ItemType.LADDER_DOWN_BLOCKED)
-_NECROMANCER = np.uint8(BlockType.NECROMANCER)
-_NECROMANCER_VULNERABLE = np.uint8(BlockType.NECROMANCER_VULNERABLE)
-_ITEM_CODES = np.arange(len(ItemType), dtype=np.uint8) + _ITEM0
+_NECROMANCER = int(BlockType.NECROMANCER)
+_NECROMANCER_VULNERABLE = int(BlockType.NECROMANCER_VULNERABLE)
 _VISIBLE_LIGHT32 = np.float32(LIGHT_VISIBLE)      # (light_map is float32: compare as upstream)
 
 
-def _coded_lines(state: State) -> np.ndarray:
-    """The window as cell codes (uint8), ROWS x (COLS + 1): each row ends in a newline code, so
-    one ``translate`` and ``splitlines`` make the rows. Few numpy calls: on arrays this small each
-    costs about as much as the work in it."""
+def _cell_table(ladder_open: bool) -> np.ndarray:
+    """``table[block, item, dark]``: a cell's code from its block, its item (drawn over the
+    block; a closed floor's down ladder shown blocked) and whether it is unlit (darkness)."""
+    table = np.empty((len(BlockType), len(ItemType), 2), np.uint8)
+    table[:, :, 1] = _DARK
+    table[:, 0, 0] = np.arange(len(BlockType))
+    for item in ItemType:
+        if item:
+            shown = item if ladder_open or item != ItemType.LADDER_DOWN else ItemType.LADDER_DOWN_BLOCKED
+            table[:, item, 0] = _ITEM0 + shown
+    return table
+
+
+_CELLS = (_cell_table(False), _cell_table(True))     # by whether the floor's ladder is open
+_ROW_STARTS = tuple(range(0, ROWS * COLS, COLS))
+_OFF_MAP = bytes((int(BlockType.OUT_OF_BOUNDS),))
+
+
+def _codes(state: State) -> bytearray:
+    """The window as cell codes, ROWS * COLS bytes row by row. Few numpy calls (on arrays this
+    small each costs about as much as the work in it): one table lookup gives block, item and
+    darkness; mobs and projectiles go over it in Python (not on unlit cells), then the player."""
     level = state.player_level
     pr, pc = state.player_position.tolist()
     r0, c0 = pr - HALF_R, pc - HALF_C
-    lines = np.empty((ROWS, COLS + 1), np.uint8)
-    lines[:, COLS] = _NEWLINE
-    codes = lines[:, :COLS]
-    codes[...] = _window(state.map[level], r0, c0, int(BlockType.OUT_OF_BOUNDS))
-    items = _window(state.item_map[level], r0, c0, 0)
-    if np.count_nonzero(items):
-        item_codes = _ITEM_CODES[items]
-        if state.monsters_killed[level] < KILLS_TO_OPEN_LADDER:
-            item_codes[item_codes == _LADDER_DOWN] = _LADDER_BLOCKED
-        np.copyto(codes, item_codes, where=items > 0)
-    if level == BOSS_LEVEL and is_boss_vulnerable(state):
-        codes[codes == _NECROMANCER] = _NECROMANCER_VULNERABLE
-    flat = lines.reshape(-1)
-    width = COLS + 1
+    rows, cols = state.map.shape[1:]
+    ra, rb, ca, cb = max(r0, 0), min(r0 + ROWS, rows), max(c0, 0), min(c0 + COLS, cols)
+    if ra < rb and ca < cb:
+        table = _CELLS[state.monsters_killed.item(level) >= KILLS_TO_OPEN_LADDER]
+        # the part of the window on the map; a cell is unlit at light <= LIGHT_VISIBLE
+        dark = np.less_equal(state.light_map[level, ra:rb, ca:cb], _VISIBLE_LIGHT32)
+        inside = table[state.map[level, ra:rb, ca:cb], state.item_map[level, ra:rb, ca:cb],
+                       dark.view(np.uint8)].tobytes()
+    else:
+        inside = b""
+    if len(inside) == ROWS * COLS:
+        codes = bytearray(inside)
+    else:       # cells off the map: their own glyph, lit
+        codes = bytearray(_OFF_MAP * (ROWS * COLS))
+        width, at = cb - ca, ca - c0
+        for j, r in enumerate(range(ra - r0, rb - r0)):
+            codes[r * COLS + at:r * COLS + at + width] = inside[j * width:(j + 1) * width]
+    if level == BOSS_LEVEL and _NECROMANCER in codes and is_boss_vulnerable(state):
+        codes = codes.replace(bytes((_NECROMANCER,)), bytes((_NECROMANCER_VULNERABLE,)))
     for k, mobs in enumerate((state.melee_mobs, state.passive_mobs, state.ranged_mobs,
                               state.mob_projectiles, state.player_projectiles)):
         live = mobs.mask[level].tolist()
@@ -210,25 +230,22 @@ def _coded_lines(state: State) -> np.ndarray:
                 r, c = positions[slot]
                 r -= r0
                 c -= c0
-                if 0 <= r < ROWS and 0 <= c < COLS:
-                    flat[r * width + c] = base + types[slot]
-    # unlit cells (outside the map: lit, to keep the map-edge glyph)
-    dark = np.less_equal(_window(state.light_map[level], r0, c0, 1.0), _VISIBLE_LIGHT32)
-    if np.count_nonzero(dark):
-        np.putmask(codes, dark, _DARK)
-    flat[HALF_R * width + HALF_C] = _PLAYER0 + (0 if state.is_sleeping else state.player_direction)
-    return lines
+                if 0 <= r < ROWS and 0 <= c < COLS and codes[r * COLS + c] != _DARK:
+                    codes[r * COLS + c] = base + types[slot]
+    codes[HALF_R * COLS + HALF_C] = _PLAYER0 + (0 if state.is_sleeping else state.player_direction)
+    return codes
 
 
 def cell_codes(state: State) -> np.ndarray:
     """The window as cell codes (uint8, ROWS x COLS): what each visible cell shows, before the
     glyph lookup (``_TABLE``)."""
-    return _coded_lines(state)[:, :COLS]
+    return np.frombuffer(bytes(_codes(state)), np.uint8).reshape(ROWS, COLS).copy()
 
 
 def grid(state: State) -> list[str]:
     """The 9 rows of 11 glyphs around the player."""
-    return _charmap_decode(_coded_lines(state).tobytes(), "strict", _DECODING)[0].splitlines()
+    text = _charmap_decode(_codes(state), "strict", _DECODING)[0]
+    return [text[i:i + COLS] for i in _ROW_STARTS]
 
 
 def legend(rows: list[str]) -> list[tuple[str, str]]:
