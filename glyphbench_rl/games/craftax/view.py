@@ -155,58 +155,46 @@ _DECODING = "".join(_TABLE.get(code, "\ufffe") for code in range(256))
 
 # ---- the grid ----------------------------------------------------------------------------
 
-def _window(array: np.ndarray, r0: int, c0: int, fill) -> np.ndarray:
-    """``array[r0:r0+ROWS, c0:c0+COLS]`` with ``fill`` outside the array (a view when the window
-    lies inside, else a new array)."""
-    rows, cols = array.shape
-    if r0 >= 0 and c0 >= 0 and r0 + ROWS <= rows and c0 + COLS <= cols:
-        return array[r0:r0 + ROWS, c0:c0 + COLS]
-    out = np.full((ROWS, COLS), fill, array.dtype)
-    ra, rb = max(r0, 0), min(r0 + ROWS, rows)
-    ca, cb = max(c0, 0), min(c0 + COLS, cols)
-    if ra < rb and ca < cb:
-        out[ra - r0:rb - r0, ca - c0:cb - c0] = array[ra:rb, ca:cb]
-    return out
-
-
 _NECROMANCER = int(BlockType.NECROMANCER)
 _NECROMANCER_VULNERABLE = int(BlockType.NECROMANCER_VULNERABLE)
 _VISIBLE_LIGHT32 = np.float32(LIGHT_VISIBLE)      # (light_map is float32: compare as upstream)
 
 
-def _cell_table(ladder_open: bool) -> np.ndarray:
-    """``table[block, item, dark]``: a cell's code from its block, its item (drawn over the
-    block; a closed floor's down ladder shown blocked) and whether it is unlit (darkness)."""
-    table = np.empty((len(BlockType), len(ItemType), 2), np.uint8)
-    table[:, :, 1] = _DARK
-    table[:, 0, 0] = np.arange(len(BlockType))
-    for item in ItemType:
-        if item:
-            shown = item if ladder_open or item != ItemType.LADDER_DOWN else ItemType.LADDER_DOWN_BLOCKED
-            table[:, item, 0] = _ITEM0 + shown
-    return table
+def _item_codes(ladder_open: bool) -> np.ndarray:
+    """``codes[item]``: the code an item shows as (a closed floor's down ladder: blocked)."""
+    codes = np.arange(len(ItemType), dtype=np.uint8) + _ITEM0
+    if not ladder_open:
+        codes[ItemType.LADDER_DOWN] = _ITEM0 + ItemType.LADDER_DOWN_BLOCKED
+    return codes
 
 
-_CELLS = (_cell_table(False), _cell_table(True))     # by whether the floor's ladder is open
+_ITEM_CODES = (_item_codes(False), _item_codes(True))    # by whether the floor's ladder is open
 _ROW_STARTS = tuple(range(0, ROWS * COLS, COLS))
 _OFF_MAP = bytes((int(BlockType.OUT_OF_BOUNDS),))
 
 
 def _codes(state: State) -> bytearray:
     """The window as cell codes, ROWS * COLS bytes row by row. Few numpy calls (on arrays this
-    small each costs about as much as the work in it): one table lookup gives block, item and
-    darkness; mobs and projectiles go over it in Python (not on unlit cells), then the player."""
+    small each costs about as much as the work in it): blocks, then items and darkness where
+    the window has any; mobs and projectiles go over it in Python (not on unlit cells), then
+    the player."""
     level = state.player_level
     pr, pc = state.player_position.tolist()
     r0, c0 = pr - HALF_R, pc - HALF_C
     rows, cols = state.map.shape[1:]
     ra, rb, ca, cb = max(r0, 0), min(r0 + ROWS, rows), max(c0, 0), min(c0 + COLS, cols)
     if ra < rb and ca < cb:
-        table = _CELLS[state.monsters_killed.item(level) >= KILLS_TO_OPEN_LADDER]
-        # the part of the window on the map; a cell is unlit at light <= LIGHT_VISIBLE
+        # the part of the window on the map: blocks, items over them, darkness over all (a
+        # cell is unlit at light <= LIGHT_VISIBLE); most windows have no item and no dark cell
+        codes = state.map[level, ra:rb, ca:cb].astype(np.uint8)
+        items = state.item_map[level, ra:rb, ca:cb]
+        if np.count_nonzero(items):
+            shown = _ITEM_CODES[state.monsters_killed.item(level) >= KILLS_TO_OPEN_LADDER]
+            np.copyto(codes, shown[items], where=items > 0)
         dark = np.less_equal(state.light_map[level, ra:rb, ca:cb], _VISIBLE_LIGHT32)
-        inside = table[state.map[level, ra:rb, ca:cb], state.item_map[level, ra:rb, ca:cb],
-                       dark.view(np.uint8)].tobytes()
+        if np.count_nonzero(dark):
+            np.putmask(codes, dark, _DARK)
+        inside = codes.tobytes()
     else:
         inside = b""
     if len(inside) == ROWS * COLS:
