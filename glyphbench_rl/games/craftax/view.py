@@ -171,6 +171,7 @@ def _item_codes(ladder_open: bool) -> np.ndarray:
 _ITEM_CODES = (_item_codes(False), _item_codes(True))    # by whether the floor's ladder is open
 _ROW_STARTS = tuple(range(0, ROWS * COLS, COLS))
 _OFF_MAP = bytes((int(BlockType.OUT_OF_BOUNDS),))
+_FULL_LIGHT = np.ones(ROWS * COLS, np.float32).tobytes()     # a fully lit window's light map
 
 
 def _codes(state: State) -> bytearray:
@@ -191,9 +192,12 @@ def _codes(state: State) -> bytearray:
         if np.count_nonzero(items):
             shown = _ITEM_CODES[state.monsters_killed.item(level) >= KILLS_TO_OPEN_LADDER]
             np.copyto(codes, shown[items], where=items > 0)
-        dark = np.less_equal(state.light_map[level, ra:rb, ca:cb], _VISIBLE_LIGHT32)
-        if np.count_nonzero(dark):
-            np.putmask(codes, dark, _DARK)
+        light = state.light_map[level, ra:rb, ca:cb]
+        if light.dtype != np.float32 or light.tobytes() != _FULL_LIGHT[:light.nbytes]:
+            # (else the window is in full light: nothing dark)
+            dark = np.less_equal(light, _VISIBLE_LIGHT32)
+            if np.count_nonzero(dark):
+                np.putmask(codes, dark, _DARK)
         inside = codes.tobytes()
     else:
         inside = b""
