@@ -292,9 +292,11 @@ class Context:
         """Each waiting mob, in turn, takes a random free cell in its ring (one draw whenever the
         ring has a free cell, whether or not its class has a free slot). A ring's free cells are
         found once and found again only after a mob was placed."""
-        from .mobs import add_mob
+        from .mobs import MOB_BY_NAME, add_mob
         waiting = []
         rings: dict[tuple[int, int], tuple] = {}
+        groups = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)
+        level = state.player_level
         for name, dmin, dmax in self.reserve:
             ring = rings.get((dmin, dmax))
             if ring is None:
@@ -304,7 +306,10 @@ class Context:
                 waiting.append((name, dmin, dmax))
                 continue
             k = int(cells[int(rng.integers(cells.size))])
-            if add_mob(state, name, (r0 + k // width, c0 + k % width)):
+            known = MOB_BY_NAME.get(name)
+            if known is not None and False not in groups[known[0]].mask[level].tolist():
+                waiting.append((name, dmin, dmax))      # (no free slot: add_mob would refuse)
+            elif add_mob(state, name, (r0 + k // width, c0 + k % width)):
                 rings.clear()
             else:
                 waiting.append((name, dmin, dmax))
@@ -320,13 +325,27 @@ def _free_ring(state, dmin: int, dmax: int, floor: int):
     r0, r1 = max(0, pr - dmax), min(rows, pr + dmax + 1)
     c0, c1 = max(0, pc - dmax), min(cols, pc + dmax + 1)
     ok = state.map[level, r0:r1, c0:c1] == floor
-    ok &= ~state.mob_map[level, r0:r1, c0:c1]
-    ok &= state.item_map[level, r0:r1, c0:c1] == 0
-    d = np.add.outer(np.abs(np.arange(r0 - pr, r1 - pr)), np.abs(np.arange(c0 - pc, c1 - pc)))
-    ok &= (d >= dmin) & (d <= dmax)
-    if r0 <= pr < r1 and c0 <= pc < c1:
-        ok[pr - r0, pc - c0] = False
+    ok &= _ring(dmin, dmax)[r0 - pr + dmax:r1 - pr + dmax, c0 - pc + dmax:c1 - pc + dmax]
+    ok[state.mob_map[level, r0:r1, c0:c1]] = False
+    items = state.item_map[level, r0:r1, c0:c1]
+    if np.count_nonzero(items):
+        ok &= items == 0
     return np.flatnonzero(ok), r0, c0, c1 - c0
+
+
+_RINGS: dict[tuple[int, int], np.ndarray] = {}
+
+
+def _ring(dmin: int, dmax: int) -> np.ndarray:
+    """The cells at Manhattan distance dmin..dmax from the centre of a (2 dmax + 1) square,
+    the centre (the player's cell) left out."""
+    ring = _RINGS.get((dmin, dmax))
+    if ring is None:
+        d = np.abs(np.arange(-dmax, dmax + 1))
+        d = d[:, None] + d[None, :]
+        ring = _RINGS[dmin, dmax] = (d >= dmin) & (d <= dmax)
+        ring[dmax, dmax] = False
+    return ring
 
 
 @dataclass(frozen=True)
