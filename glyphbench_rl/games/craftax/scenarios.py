@@ -291,34 +291,52 @@ class Context:
     def admit(self, state, rng) -> None:
         """Each waiting mob, in turn, takes a random free cell in its ring (one draw whenever the
         ring has a free cell, whether or not its class has a free slot). A ring's free cells are
-        found once and found again only after a mob was placed."""
+        found once and found again only after a mob was placed. The draws of mobs with no free
+        slot, whose values go unused, are made together (``integers(n, size=k)`` advances the
+        generator exactly as k calls of ``integers(n)``), in order, before the next used one."""
         from .mobs import MOB_BY_NAME, add_mob
         waiting = []
         rings: dict[tuple[int, int], tuple] = {}
         groups = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)
         level = state.player_level
+        unused = [0, 0]          # draws owed: [their bound, how many]
         for name, dmin, dmax in self.reserve:
             ring = rings.get((dmin, dmax))
             if ring is None:
                 ring = rings[dmin, dmax] = _free_ring(state, dmin, dmax, self.floor)
-            cells, r0, c0, width = ring
-            if not cells.size:
+            ok, count, r0, c0, width = ring
+            if not count:
                 waiting.append((name, dmin, dmax))
                 continue
-            k = int(cells[int(rng.integers(cells.size))])
             known = MOB_BY_NAME.get(name)
             if known is not None and False not in groups[known[0]].mask[level].tolist():
                 waiting.append((name, dmin, dmax))      # (no free slot: add_mob would refuse)
-            elif add_mob(state, name, (r0 + k // width, c0 + k % width)):
+                if unused[0] != count:
+                    _draw_unused(rng, unused)
+                    unused[0] = count
+                unused[1] += 1
+                continue
+            _draw_unused(rng, unused)
+            k = int(np.flatnonzero(ok)[int(rng.integers(count))])
+            if add_mob(state, name, (r0 + k // width, c0 + k % width)):
                 rings.clear()
             else:
                 waiting.append((name, dmin, dmax))
+        _draw_unused(rng, unused)
         self.reserve = waiting
 
 
+def _draw_unused(rng, unused: list) -> None:
+    """Make the draws owed (``unused`` = [bound, count]), values unused."""
+    if unused[1]:
+        rng.integers(unused[0], size=unused[1])
+        unused[1] = 0
+
+
 def _free_ring(state, dmin: int, dmax: int, floor: int):
-    """``[p for p in _cells(state, dmin, dmax) if _free(state, *p, floor)]`` as flat indices
-    (row-major, the same order) into the box ``rows r0.., cols c0.., width`` columns wide."""
+    """``[p for p in _cells(state, dmin, dmax) if _free(state, *p, floor)]`` as a mask over the
+    box ``rows r0.., cols c0.., width`` columns wide (its true cells in row-major order are
+    that list) and their count: ``(mask, count, r0, c0, width)``."""
     level = state.player_level
     pr, pc = state.player_position.tolist()
     rows, cols = state.map.shape[1:]
@@ -330,7 +348,7 @@ def _free_ring(state, dmin: int, dmax: int, floor: int):
     items = state.item_map[level, r0:r1, c0:c1]
     if np.count_nonzero(items):
         ok &= items == 0
-    return np.flatnonzero(ok), r0, c0, c1 - c0
+    return ok, np.count_nonzero(ok), r0, c0, c1 - c0
 
 
 _RINGS: dict[tuple[int, int], np.ndarray] = {}
