@@ -344,7 +344,7 @@ def _free_ring(state, dmin: int, dmax: int, floor: int):
     c0, c1 = max(0, pc - dmax), min(cols, pc + dmax + 1)
     ok = state.map[level, r0:r1, c0:c1] == floor
     ok &= _ring(dmin, dmax)[r0 - pr + dmax:r1 - pr + dmax, c0 - pc + dmax:c1 - pc + dmax]
-    ok[state.mob_map[level, r0:r1, c0:c1]] = False
+    np.greater(ok, state.mob_map[level, r0:r1, c0:c1], out=ok)      # (ok and no mob)
     items = state.item_map[level, r0:r1, c0:c1]
     if np.count_nonzero(items):
         ok &= items == 0
