@@ -294,7 +294,7 @@ def hud(state: State, settings: Settings | None = None) -> str:
            state.is_sleeping, state.is_resting)
     line = _HUDS.get(key)
     if line is None:
-        if len(_HUDS) >= 50_000:
+        if len(_HUDS) >= 10_000:
             _HUDS.clear()
         line = _HUDS[key] = _hud(state)
     return line
