@@ -289,13 +289,81 @@ class Context:
         self.reserve: list[tuple[str, int, int]] = []
 
     def admit(self, state, rng) -> None:
-        from .mobs import add_mob
+        """Each waiting mob, in turn, takes a random free cell in its ring (one draw whenever the
+        ring has a free cell, whether or not its class has a free slot). A ring's free cells are
+        found once and found again only after a mob was placed. The draws of mobs with no free
+        slot, whose values go unused, are made together (``integers(n, size=k)`` advances the
+        generator exactly as k calls of ``integers(n)``), in order, before the next used one."""
+        from .mobs import MOB_BY_NAME, add_mob
         waiting = []
+        rings: dict[tuple[int, int], tuple] = {}
+        groups = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)
+        level = state.player_level
+        unused = [0, 0]          # draws owed: [their bound, how many]
         for name, dmin, dmax in self.reserve:
-            spots = [p for p in _cells(state, dmin, dmax) if _free(state, *p, self.floor)]
-            if not spots or not add_mob(state, name, spots[int(rng.integers(len(spots)))]):
+            ring = rings.get((dmin, dmax))
+            if ring is None:
+                ring = rings[dmin, dmax] = _free_ring(state, dmin, dmax, self.floor)
+            ok, count, r0, c0, width = ring
+            if not count:
                 waiting.append((name, dmin, dmax))
+                continue
+            known = MOB_BY_NAME.get(name)
+            if known is not None and False not in groups[known[0]].mask[level].tolist():
+                waiting.append((name, dmin, dmax))      # (no free slot: add_mob would refuse)
+                if unused[0] != count:
+                    _draw_unused(rng, unused)
+                    unused[0] = count
+                unused[1] += 1
+                continue
+            _draw_unused(rng, unused)
+            k = int(np.flatnonzero(ok)[int(rng.integers(count))])
+            if add_mob(state, name, (r0 + k // width, c0 + k % width)):
+                rings.clear()
+            else:
+                waiting.append((name, dmin, dmax))
+        _draw_unused(rng, unused)
         self.reserve = waiting
+
+
+def _draw_unused(rng, unused: list) -> None:
+    """Make the draws owed (``unused`` = [bound, count]), values unused."""
+    if unused[1]:
+        rng.integers(unused[0], size=unused[1])
+        unused[1] = 0
+
+
+def _free_ring(state, dmin: int, dmax: int, floor: int):
+    """``[p for p in _cells(state, dmin, dmax) if _free(state, *p, floor)]`` as a mask over the
+    box ``rows r0.., cols c0.., width`` columns wide (its true cells in row-major order are
+    that list) and their count: ``(mask, count, r0, c0, width)``."""
+    level = state.player_level
+    pr, pc = state.player_position.tolist()
+    rows, cols = state.map.shape[1:]
+    r0, r1 = max(0, pr - dmax), min(rows, pr + dmax + 1)
+    c0, c1 = max(0, pc - dmax), min(cols, pc + dmax + 1)
+    ok = state.map[level, r0:r1, c0:c1] == floor
+    ok &= _ring(dmin, dmax)[r0 - pr + dmax:r1 - pr + dmax, c0 - pc + dmax:c1 - pc + dmax]
+    np.greater(ok, state.mob_map[level, r0:r1, c0:c1], out=ok)      # (ok and no mob)
+    items = state.item_map[level, r0:r1, c0:c1]
+    if np.count_nonzero(items):
+        ok &= items == 0
+    return ok, np.count_nonzero(ok), r0, c0, c1 - c0
+
+
+_RINGS: dict[tuple[int, int], np.ndarray] = {}
+
+
+def _ring(dmin: int, dmax: int) -> np.ndarray:
+    """The cells at Manhattan distance dmin..dmax from the centre of a (2 dmax + 1) square,
+    the centre (the player's cell) left out."""
+    ring = _RINGS.get((dmin, dmax))
+    if ring is None:
+        d = np.abs(np.arange(-dmax, dmax + 1))
+        d = d[:, None] + d[None, :]
+        ring = _RINGS[dmin, dmax] = (d >= dmin) & (d <= dmax)
+        ring[dmax, dmax] = False
+    return ring
 
 
 @dataclass(frozen=True)

@@ -7,6 +7,7 @@ package. Mob tables are in ``bestiary``.
 
 from __future__ import annotations
 
+import math
 from enum import IntEnum
 
 
@@ -295,7 +296,6 @@ TORCH_LIGHT_MAP = _torch_light_map()
 
 def light_level(timestep: int, day_length: int) -> float:
     """The daylight at ``timestep`` (upstream calculate_light_level): 1 at noon, 0 at night."""
-    import math
     progress = (timestep / day_length) % 1 + 0.3
     return 1.0 - abs(math.cos(math.pi * progress)) ** 3
 

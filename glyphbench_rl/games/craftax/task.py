@@ -11,7 +11,6 @@ changes a rule of the game: upstream's native reward is not paid; the scenario's
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import ClassVar
 
 import numpy as np
 
@@ -79,6 +78,7 @@ class Tally:
                        "deepest": state.player_level}
         self.potions = dict.fromkeys(POTION_EFFECTS, 0)
         self._held = self._holdings(state)
+        self._getters: dict = {}       # key -> getter, compiled once (``value``)
 
     @staticmethod
     def _holdings(state) -> tuple:
@@ -88,7 +88,6 @@ class Tally:
 
     def getter(self, key: str):
         head, _, tail = key.partition(".")
-        s = self.state
         simple = {"level": lambda t: t.state.player_level, "health": lambda t: t.state.player_health,
                   "str": lambda t: t.state.player_strength, "dex": lambda t: t.state.player_dexterity,
                   "int": lambda t: t.state.player_intelligence, "xp": lambda t: t.state.player_xp,
@@ -120,15 +119,21 @@ class Tally:
         raise KeyError(f"unknown Craftax counter {key!r} (see task.Tally)")
 
     def value(self, key: str) -> float:
-        return self.getter(key)(self)
+        get = self._getters.get(key)
+        if get is None:
+            get = self._getters[key] = self.getter(key)
+        return get(self)
 
     def before_step(self, state, action: int) -> None:
         """Remember what a step can change that the tally counts by difference."""
         self._vitals = (state.player_food, state.player_drink, state.player_mana)
         level = self._level = state.player_level
-        self._live = [(k, i, int(mobs.type_id[level, i]))
-                      for k, mobs in enumerate((state.passive_mobs, state.melee_mobs, state.ranged_mobs))
-                      for i in np.flatnonzero(mobs.mask[level])]
+        live = self._live = []
+        for k, mobs in enumerate((state.passive_mobs, state.melee_mobs, state.ranged_mobs)):
+            mask = mobs.mask[level].tolist()
+            if True in mask:
+                types = mobs.type_id[level].tolist()
+                live += [(k, i, types[i]) for i, on in enumerate(mask) if on]
         if action in PLACED:
             self._ahead = self._facing_block(state)
         elif action == Action.PLACE_TORCH:
@@ -150,7 +155,7 @@ class Tally:
         level = self._level
         for k, i, type_id in self._live:
             mobs = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)[k]
-            if not mobs.mask[level, i] and mobs.health[level, i] <= 0:
+            if not mobs.mask.item(level, i) and mobs.health.item(level, i) <= 0:
                 name = MOB_NAMES[k][type_id]
                 self.kills[name] = self.kills.get(name, 0) + 1
                 self.kills["all"] += 1

@@ -155,49 +155,61 @@ _DECODING = "".join(_TABLE.get(code, "\ufffe") for code in range(256))
 
 # ---- the grid ----------------------------------------------------------------------------
 
-def _window(array: np.ndarray, r0: int, c0: int, fill) -> np.ndarray:
-    """``array[r0:r0+ROWS, c0:c0+COLS]`` with ``fill`` outside the array (a view when the window
-    lies inside, else a new array)."""
-    rows, cols = array.shape
-    if r0 >= 0 and c0 >= 0 and r0 + ROWS <= rows and c0 + COLS <= cols:
-        return array[r0:r0 + ROWS, c0:c0 + COLS]
-    out = np.full((ROWS, COLS), fill, array.dtype)
-    ra, rb = max(r0, 0), min(r0 + ROWS, rows)
-    ca, cb = max(c0, 0), min(c0 + COLS, cols)
-    if ra < rb and ca < cb:
-        out[ra - r0:rb - r0, ca - c0:cb - c0] = array[ra:rb, ca:cb]
-    return out
-
-
-_LADDER_DOWN = np.uint8(_ITEM0 + ItemType.LADDER_DOWN)
-_LADDER_BLOCKED = np.uint8(_ITEM0 + ItemType.LADDER_DOWN_BLOCKED)
-_NECROMANCER = np.uint8(BlockType.NECROMANCER)
-_NECROMANCER_VULNERABLE = np.uint8(BlockType.NECROMANCER_VULNERABLE)
-_ITEM_CODES = np.arange(len(ItemType), dtype=np.uint8) + _ITEM0
+_NECROMANCER = int(BlockType.NECROMANCER)
+_NECROMANCER_VULNERABLE = int(BlockType.NECROMANCER_VULNERABLE)
 _VISIBLE_LIGHT32 = np.float32(LIGHT_VISIBLE)      # (light_map is float32: compare as upstream)
 
 
-def _coded_lines(state: State) -> np.ndarray:
-    """The window as cell codes (uint8), ROWS x (COLS + 1): each row ends in a newline code, so
-    one ``translate`` and ``splitlines`` make the rows. Few numpy calls: on arrays this small each
-    costs about as much as the work in it."""
+def _item_codes(ladder_open: bool) -> np.ndarray:
+    """``codes[item]``: the code an item shows as (a closed floor's down ladder: blocked)."""
+    codes = np.arange(len(ItemType), dtype=np.uint8) + _ITEM0
+    if not ladder_open:
+        codes[ItemType.LADDER_DOWN] = _ITEM0 + ItemType.LADDER_DOWN_BLOCKED
+    return codes
+
+
+_ITEM_CODES = (_item_codes(False), _item_codes(True))    # by whether the floor's ladder is open
+_ROW_STARTS = tuple(range(0, ROWS * COLS, COLS))
+_OFF_MAP = bytes((int(BlockType.OUT_OF_BOUNDS),))
+_FULL_LIGHT = np.ones(ROWS * COLS, np.float32).tobytes()     # a fully lit window's light map
+
+
+def _codes(state: State) -> bytearray:
+    """The window as cell codes, ROWS * COLS bytes row by row. Few numpy calls (on arrays this
+    small each costs about as much as the work in it): blocks, then items and darkness where
+    the window has any; mobs and projectiles go over it in Python (not on unlit cells), then
+    the player."""
     level = state.player_level
     pr, pc = state.player_position.tolist()
     r0, c0 = pr - HALF_R, pc - HALF_C
-    lines = np.empty((ROWS, COLS + 1), np.uint8)
-    lines[:, COLS] = _NEWLINE
-    codes = lines[:, :COLS]
-    codes[...] = _window(state.map[level], r0, c0, int(BlockType.OUT_OF_BOUNDS))
-    items = _window(state.item_map[level], r0, c0, 0)
-    if np.count_nonzero(items):
-        item_codes = _ITEM_CODES[items]
-        if state.monsters_killed[level] < KILLS_TO_OPEN_LADDER:
-            item_codes[item_codes == _LADDER_DOWN] = _LADDER_BLOCKED
-        np.copyto(codes, item_codes, where=items > 0)
-    if level == BOSS_LEVEL and is_boss_vulnerable(state):
-        codes[codes == _NECROMANCER] = _NECROMANCER_VULNERABLE
-    flat = lines.reshape(-1)
-    width = COLS + 1
+    rows, cols = state.map.shape[1:]
+    ra, rb, ca, cb = max(r0, 0), min(r0 + ROWS, rows), max(c0, 0), min(c0 + COLS, cols)
+    if ra < rb and ca < cb:
+        # the part of the window on the map: blocks, items over them, darkness over all (a
+        # cell is unlit at light <= LIGHT_VISIBLE); most windows have no item and no dark cell
+        codes = state.map[level, ra:rb, ca:cb].astype(np.uint8)
+        items = state.item_map[level, ra:rb, ca:cb]
+        if np.count_nonzero(items):
+            shown = _ITEM_CODES[state.monsters_killed.item(level) >= KILLS_TO_OPEN_LADDER]
+            np.copyto(codes, shown[items], where=items > 0)
+        light = state.light_map[level, ra:rb, ca:cb]
+        if light.dtype != np.float32 or light.tobytes() != _FULL_LIGHT[:light.nbytes]:
+            # (else the window is in full light: nothing dark)
+            dark = np.less_equal(light, _VISIBLE_LIGHT32)
+            if np.count_nonzero(dark):
+                np.putmask(codes, dark, _DARK)
+        inside = codes.tobytes()
+    else:
+        inside = b""
+    if len(inside) == ROWS * COLS:
+        codes = bytearray(inside)
+    else:       # cells off the map: their own glyph, lit
+        codes = bytearray(_OFF_MAP * (ROWS * COLS))
+        width, at = cb - ca, ca - c0
+        for j, r in enumerate(range(ra - r0, rb - r0)):
+            codes[r * COLS + at:r * COLS + at + width] = inside[j * width:(j + 1) * width]
+    if level == BOSS_LEVEL and _NECROMANCER in codes and is_boss_vulnerable(state):
+        codes = codes.replace(bytes((_NECROMANCER,)), bytes((_NECROMANCER_VULNERABLE,)))
     for k, mobs in enumerate((state.melee_mobs, state.passive_mobs, state.ranged_mobs,
                               state.mob_projectiles, state.player_projectiles)):
         live = mobs.mask[level].tolist()
@@ -210,25 +222,22 @@ def _coded_lines(state: State) -> np.ndarray:
                 r, c = positions[slot]
                 r -= r0
                 c -= c0
-                if 0 <= r < ROWS and 0 <= c < COLS:
-                    flat[r * width + c] = base + types[slot]
-    # unlit cells (outside the map: lit, to keep the map-edge glyph)
-    dark = np.less_equal(_window(state.light_map[level], r0, c0, 1.0), _VISIBLE_LIGHT32)
-    if np.count_nonzero(dark):
-        np.putmask(codes, dark, _DARK)
-    flat[HALF_R * width + HALF_C] = _PLAYER0 + (0 if state.is_sleeping else state.player_direction)
-    return lines
+                if 0 <= r < ROWS and 0 <= c < COLS and codes[r * COLS + c] != _DARK:
+                    codes[r * COLS + c] = base + types[slot]
+    codes[HALF_R * COLS + HALF_C] = _PLAYER0 + (0 if state.is_sleeping else state.player_direction)
+    return codes
 
 
 def cell_codes(state: State) -> np.ndarray:
     """The window as cell codes (uint8, ROWS x COLS): what each visible cell shows, before the
     glyph lookup (``_TABLE``)."""
-    return _coded_lines(state)[:, :COLS]
+    return np.frombuffer(bytes(_codes(state)), np.uint8).reshape(ROWS, COLS).copy()
 
 
 def grid(state: State) -> list[str]:
     """The 9 rows of 11 glyphs around the player."""
-    return _charmap_decode(_coded_lines(state).tobytes(), "strict", _DECODING)[0].splitlines()
+    text = _charmap_decode(_codes(state), "strict", _DECODING)[0]
+    return [text[i:i + COLS] for i in _ROW_STARTS]
 
 
 def legend(rows: list[str]) -> list[tuple[str, str]]:
@@ -265,10 +274,33 @@ def _number(x: float) -> str:
     return str(int(r)) if r == int(r) else str(r)
 
 
+_HUDS: dict[tuple, str] = {}      # everything the HUD reads -> the HUD (``hud``)
+
+
 def hud(state: State, settings: Settings | None = None) -> str:
     """One line: vitals, inventory, equipment, potions, spells, attributes, floor, position,
-    facing, light and rest state; empty parts left out, parts joined by `` | ``."""
+    facing, light and rest state; empty parts left out, parts joined by `` | ``. (Remembered by
+    the values it reads: most turns change few of them, and a state seen before is common.)"""
     del settings   # (the HUD reads only the state; kept for the engine's call shape)
+    inv, level = state.inventory, state.player_level
+    key = (state.player_health, state.player_food, state.player_drink, state.player_energy,
+           state.player_mana, state.player_strength, state.player_dexterity,
+           state.player_intelligence, state.player_xp, inv.wood, inv.stone, inv.coal, inv.iron,
+           inv.diamond, inv.sapphire, inv.ruby, inv.sapling, inv.torches, inv.arrows, inv.books,
+           inv.pickaxe, inv.sword, inv.bow, state.sword_enchantment, state.bow_enchantment,
+           inv.armour.tobytes(), state.armour_enchantments.tobytes(), inv.potions.tobytes(),
+           state.learned_spells.tobytes(), level, state.player_position.tobytes(),
+           state.player_direction, state.light_level >= 0.5, state.monsters_killed.tobytes(),
+           state.is_sleeping, state.is_resting)
+    line = _HUDS.get(key)
+    if line is None:
+        if len(_HUDS) >= 10_000:
+            _HUDS.clear()
+        line = _HUDS[key] = _hud(state)
+    return line
+
+
+def _hud(state: State) -> str:
     maxima = max_vitals(state)
     values = (_number(state.player_health), state.player_food, state.player_drink,
               state.player_energy, state.player_mana)
