@@ -401,8 +401,13 @@ class Scenario:
         state = (worldgen.generate(rng, self.settings) if self.world == "overworld"
                  else worldgen.blank(self.settings))
         if self.floor:
+            from .tables import LEVEL_ACHIEVEMENT
             state.player_level = self.floor
             state.player_position = state.up_ladders[self.floor].copy()
+            # the player came down the ladders: the floors' first-entry achievements are had
+            # (else Craftax's step would grant the start floor's, and its XP, on the first turn)
+            for level in range(1, self.floor + 1):
+                state.achievements[LEVEL_ACHIEVEMENT[level]] = True
         state.timestep = self.time
         for k, v in self.kit.items():
             if k in ("armour", "potions"):

@@ -103,7 +103,7 @@ scenario(name="dungeonexplore", horizon=180, floor=1, kit=dict(sword=2, armour=A
          objective="Explore the dungeon: kill 3 monsters to open the ladder down, then DESCEND on it.",
          edits=(Gate(3), NoMobs(), Mobs("orc soldier", 2, 4, 10), Mobs("orc mage", 1, 4, 10)),
          terms=(kills("monsters", 3, 0.6, "monster"), stage("descend", "level >= 2", 0.4, "for descending")),
-         success="level >= 2", progress_keys=("gate",))
+         success="level >= 2")
 scenario(name="dungeonclear", horizon=220, floor=1, settings=ARENA, kit=dict(sword=3, armour=ARMOUR_IRON, potions=ALL_POTIONS),
          topics=("fight",),
          objective="Kill the 5 monsters of this dungeon floor (3 orc soldiers, 2 orc mages).",
@@ -214,37 +214,37 @@ FLOOR_TOPICS = ("fight", "floors")
 scenario(name="dungeon", horizon=480, floor=1, kit=dict(sword=2, pickaxe=2, wood=3, coal=3, armour=ARMOUR_IRON), topics=FLOOR_TOPICS,
          objective="Find the ladder down on the dungeon floor; it opens after 3 kills; DESCEND.",
          edits=(Gate(3),), terms=(stage("down", "level >= 2", 1.0, "for reaching floor 2"),),
-         success="level >= 2", progress_keys=("gate",))
+         success="level >= 2")
 _FLOOR_KIT = dict(sword=3, wood=5, coal=5, armour=ARMOUR_IRON)
 scenario(name="gnomish-mines", horizon=480, floor=2, kit=_FLOOR_KIT, topics=FLOOR_TOPICS + ("torch",),
          objective="Cross the dark gnomish mines: 3 kills open the ladder down; DESCEND.",
          edits=(Gate(3),), terms=(stage("down", "level >= 3", 1.0, "for reaching floor 3"),),
-         success="level >= 3", progress_keys=("gate",))
+         success="level >= 3")
 _MAGIC = dict(learned_spells=SPELLS, player_mana=9)
 scenario(name="sewers", horizon=480, floor=3, kit=_FLOOR_KIT | dict(potions=ALL_POTIONS), player=_MAGIC,
          topics=FLOOR_TOPICS + ("magic",), objective="Cross the sewers: 3 kills open the ladder down; DESCEND.",
          edits=(Gate(3),), terms=(stage("down", "level >= 4", 1.0, "for reaching floor 4"),),
-         success="level >= 4", progress_keys=("gate",))
+         success="level >= 4")
 scenario(name="vaults", horizon=480, floor=4, kit=_FLOOR_KIT | dict(sword=4, ruby=1, potions=ALL_POTIONS),
          player=_MAGIC, topics=FLOOR_TOPICS + ("magic",),
          objective="Cross the vaults: 3 kills open the ladder down; DESCEND.",
          edits=(Gate(3),), terms=(stage("down", "level >= 5", 1.0, "for reaching floor 5"),),
-         success="level >= 5", progress_keys=("gate",))
+         success="level >= 5")
 _DEEP_KIT = dict(sword=4, bow=1, arrows=10, wood=5, coal=5, armour=ARMOUR_DIAMOND, potions=ALL_POTIONS)
 scenario(name="troll-mines", horizon=480, floor=5, kit=_DEEP_KIT, player=_MAGIC, topics=FLOOR_TOPICS + ("magic",),
          objective="Cross the dark troll mines: 3 kills open the ladder down; DESCEND.",
          edits=(Gate(3),), terms=(stage("down", "level >= 6", 1.0, "for reaching floor 6"),),
-         success="level >= 6", progress_keys=("gate",))
+         success="level >= 6")
 scenario(name="fire-realm", horizon=480, floor=6, kit=_DEEP_KIT,
          player=_MAGIC | dict(sword_enchantment=2, armour_enchantments=(1, 1, 1, 1)), topics=FLOOR_TOPICS + ("magic",),
          objective="Cross the fire realm (your sword is ice-enchanted, your armour fire-enchanted): 3 kills open the ladder; DESCEND.",
          edits=(Gate(3),), terms=(stage("down", "level >= 7", 1.0, "for reaching floor 7"),),
-         success="level >= 7", progress_keys=("gate",))
+         success="level >= 7")
 scenario(name="ice-realm", horizon=480, floor=7, kit=_DEEP_KIT,
          player=_MAGIC | dict(sword_enchantment=1, armour_enchantments=(2, 2, 2, 2)), topics=FLOOR_TOPICS + ("magic",),
          objective="Cross the dark ice realm (fire-enchanted sword, ice-enchanted armour): 3 kills open the ladder; DESCEND.",
          edits=(Gate(3),), terms=(stage("down", "level >= 8", 1.0, "for reaching the graveyard"),),
-         success="level >= 8", progress_keys=("gate",))
+         success="level >= 8")
 # The necromancer (Craftax's own boss): 8 hits while he is vulnerable, each raising a 7-turn wave
 # of the next floor's monsters, damage x1.5. Upstream's fight as is; the player comes as a late
 # game Craftax character would: attributes raised by the XP of the floors (strength 4,
@@ -331,7 +331,7 @@ scenario(name="torchdescend", horizon=300, floor=2,
          terms=(stage("torch", "done.make_torch >= 1", 0.2, "for making torches"),
                 stage("light", "placed.torch >= 1", 0.2, "for placing a torch"),
                 stage("k4", "kills.monsters >= 4", 0.2, "at 4 kills"), stage("k8", "kills.monsters >= 8", 0.2, "at 8 kills"),
-                stage("down", "level >= 3", 0.2, "for descending")), success="level >= 3", progress_keys=("gate",))
+                stage("down", "level >= 3", 0.2, "for descending")), success="level >= 3")
 scenario(name="survivenight", horizon=150, time=DUSK, kit=dict(sword=2, stone=6, torches=2), topics=("fight", "torch"),
          objective="Night falls in 5 turns: survive it. Monsters come more often in the dark.",
          edits=(Clear(6), Scatter(B.TREE, 8, 4, 8), Scatter(B.STONE, 6, 4, 8), Mobs("zombie", 2, 6, 8)),
@@ -355,7 +355,7 @@ scenario(name="floor-clear-9hp", horizon=400, floor=1, kit=dict(sword=3, pickaxe
          topics=FLOOR_TOPICS + ("potions",),
          objective="Clear the dungeon floor the Craftax way: 8 kills open the ladder; DESCEND.",
          terms=(stage("k4", "kills.monsters >= 4", 0.25, "at 4 kills"), stage("k8", "kills.monsters >= 8", 0.5, "at 8 kills"),
-                stage("down", "level >= 2", 0.25, "for descending")), success="level >= 2", progress_keys=("gate",))
+                stage("down", "level >= 2", 0.25, "for descending")), success="level >= 2")
 scenario(name="spell-only-kill", horizon=200, floor=6, settings=ARENA, kit=dict(sword=1, armour=ARMOUR_IRON),
          player=dict(learned_spells=(False, True), player_intelligence=5, player_mana=21,
                      armour_enchantments=(1, 1, 1, 1)), topics=("fight", "magic"),
@@ -380,7 +380,7 @@ scenario(name="clear-floor-8gate", horizon=300, floor=4,
          kit=dict(sword=4, bow=1, arrows=12, armour=ARMOUR_DIAMOND, potions=ALL_POTIONS), player=_MAGIC,
          topics=FLOOR_TOPICS + ("magic",), objective="Clear the vaults: 8 kills open the ladder; DESCEND.",
          terms=(stage("k4", "kills.monsters >= 4", 0.25, "at 4 kills"), stage("k8", "kills.monsters >= 8", 0.5, "at 8 kills"),
-                stage("down", "level >= 5", 0.25, "for descending")), success="level >= 5", progress_keys=("gate",))
+                stage("down", "level >= 5", 0.25, "for descending")), success="level >= 5")
 RESOURCES = pockets((B.TREE, -6, -6, 1, 5), (B.STONE, -6, 2, 1, 5), (B.COAL, 6, -6, 1, 5), (B.IRON, 6, 2, 1, 5))
 scenario(name="surface-to-iron-descend", horizon=500, settings=ARENA, topics=("craft", "fight", "floors"),
          objective="Make an iron pickaxe and an iron sword, kill 3 monsters to open the ladder, and DESCEND.",
