@@ -91,7 +91,7 @@ def test_catalog_task_not_yet_implemented_says_so():
     import pytest
     from glyphbench_rl.core import UnknownTaskError, make
     with pytest.raises(UnknownTaskError, match="in the GlyphBench catalog but not implemented"):
-        make("glyphbench/craftax-choptrees-v0")
+        make("glyphbench/atari-pitfall-v0")
 
 
 SNAKE = "glyphbench/classics-snake-easy-v0"

@@ -445,16 +445,26 @@ class Scenario:
     # -- text ---------------------------------------------------------------------------------------
     def intro(self) -> str:
         from .view import LEVEL_NAMES
-        where = "on the surface" if not self.floor else f"on floor {self.floor} ({LEVEL_NAMES[self.floor]})"
-        return f"You start {where}."
+        return f"You start on floor {self.floor} ({LEVEL_NAMES[self.floor]})." if self.floor else ""
 
     def reward_text(self) -> str:
-        parts = []
-        for t in self.terms:
+        """The terms in order; milestones of one size said together ("+1/6 each: ...")."""
+        parts, i, terms = [], 0, self.terms
+        while i < len(terms):
+            t = terms[i]
             if t.counts and t.cap > 1:
-                parts.append(f"+{t.unit:g} for {t.says} (up to {t.cap})")
+                parts.append(f"+{_amount(t.unit)} for {t.says} (up to {t.cap})")
+                i += 1
+                continue
+            same = [t]
+            while i + len(same) < len(terms) and not (terms[i + len(same)].counts and terms[i + len(same)].cap > 1) \
+                    and abs(terms[i + len(same)].unit - t.unit) < 1e-12:
+                same.append(terms[i + len(same)])
+            if len(same) == 1:
+                parts.append(f"+{_amount(t.unit)} {t.says}")
             else:
-                parts.append(f"+{t.unit:g} {t.says}")
+                parts.append(f"+{_amount(t.unit)} each: " + ", ".join(x.says.removeprefix("for ") for x in same))
+            i += len(same)
         if self.death:
             parts.append(f"{self.death:+g} if you die")
         return "; ".join(parts) + "."
@@ -473,6 +483,15 @@ class Scenario:
             parse_test(text, tally)
         for key in self.progress_keys:
             tally.getter(key)
+
+
+def _amount(x: float) -> str:
+    """A reward size as written in the prompt: 0.25, or 1/6 where the decimal would run on."""
+    text = f"{x:g}"
+    n = round(1 / x) if x else 0
+    if len(text) > 5 and n and abs(1 / n - x) < 1e-9:
+        return f"1/{n}"
+    return text
 
 
 def _fmt(v) -> str:

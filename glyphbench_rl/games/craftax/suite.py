@@ -289,7 +289,7 @@ scenario(name="enchant-weapon", horizon=140, floor=4, settings=ARENA, kit=dict(s
                 kills("kobold", 2, 0.5, "kobold")),
          success="enchant.sword >= 1 and kills.kobold >= 2")
 scenario(name="bow-kite", horizon=120, settings=ARENA, kit=dict(bow=1, arrows=6, sword=1, wood=4, stone=4),
-         topics=("fight",), objective="Kill 4 skeletons; arrows (SHOOT_ARROW) are your best weapon; MAKE_ARROW at the table.",
+         topics=("fight", "craft"), objective="Kill 4 skeletons; arrows (SHOOT_ARROW) are your best weapon; MAKE_ARROW at the table.",
          edits=(Clear(6), Scatter(B.TREE, 5, 7, 9), Stamp(B.CRAFTING_TABLE, ((0, 2),)), Mobs("skeleton", 4, 4, 6)),
          terms=(kills("skeleton", 4, 1.0, "skeleton"),), success="kills.skeleton >= 4")
 scenario(name="potion-triage", horizon=120, settings=ARENA, kit=dict(sword=1),
@@ -299,7 +299,7 @@ scenario(name="potion-triage", horizon=120, settings=ARENA, kit=dict(sword=1),
          terms=(stage("heal", "potion.heal >= 1", 0.5, "for drinking the healing potion"), kills("zombie", 2, 0.5, "zombie")),
          success="kills.zombie >= 2")
 scenario(name="fight-archers", horizon=160, settings=ARENA, kit=dict(sword=2, bow=1, arrows=4, wood=3, stone=3),
-         topics=("fight",), objective="Kill 5 skeletons (at most 2 are out at once).",
+         topics=("fight", "craft"), objective="Kill 5 skeletons (at most 2 are out at once).",
          edits=(Clear(8), Stamp(B.CRAFTING_TABLE, ((0, 2),)), Mobs("skeleton", 5, 4, 7)),
          terms=(kills("skeleton", 5, 1.0, "skeleton"),), success="kills.skeleton >= 5")
 scenario(name="fight-spiders", horizon=120, settings=ARENA, kit=dict(sword=3), topics=("fight",),
@@ -325,7 +325,7 @@ scenario(name="speedrun", horizon=500, kit=dict(sword=4, bow=1, arrows=20, wood=
 # -- D. harder combinations ------------------------------------------------------------------------
 scenario(name="torchdescend", horizon=300, floor=2,
          kit=dict(sword=3, pickaxe=2, wood=3, coal=3, armour=ARMOUR_IRON, potions=ALL_POTIONS),
-         topics=FLOOR_TOPICS + ("torch",),
+         topics=FLOOR_TOPICS + ("torch", "craft"),
          objective="In the dark mines: make torches, light the way, kill 8 monsters to open the ladder, DESCEND.",
          edits=(Clear(3), Stamp(B.CRAFTING_TABLE, ((0, 1),)), Stamp(B.FURNACE, ((1, 0),))),
          terms=(stage("torch", "done.make_torch >= 1", 0.2, "for making torches"),
@@ -404,7 +404,7 @@ scenario(name="xp-attribute-spend", horizon=220, settings=ARENA, kit=dict(sword=
          terms=(stage("s2", "str >= 2", 0.25, "at strength 2"), stage("s3", "str >= 3", 0.25, "at strength 3"),
                 stage("knight", "kills.knight >= 1", 0.5, "for killing the knight")), success="kills.knight >= 1")
 scenario(name="bow-kite-hard", horizon=180, settings=ARENA, kit=dict(bow=1, arrows=6, sword=1, wood=5, stone=5),
-         topics=("fight",), objective="Kill 5 skeletons with 6 arrows and a wood sword; make more arrows at the table.",
+         topics=("fight", "craft"), objective="Kill 5 skeletons with 6 arrows and a wood sword; make more arrows at the table.",
          edits=(Clear(7), Scatter(B.TREE, 10, 4, 8), Stamp(B.CRAFTING_TABLE, ((0, 1),)), Stamp(B.FURNACE, ((1, 0),)),
                 Mobs("skeleton", 5, 4, 8)),
          terms=(kills("skeleton", 5, 1.0, "skeleton"),), success="kills.skeleton >= 5")

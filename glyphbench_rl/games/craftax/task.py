@@ -25,22 +25,22 @@ from .tables import Action, Achievement, BlockType
 
 SINGLE = [
     ("NOOP", "do nothing"),
-    ("DO", "act on the faced cell: chop, mine, attack, eat (cow, ripe plant), drink (water), open a chest"),
-    ("SLEEP", "sleep until energy is full (monsters hit a sleeper harder)"),
+    ("DO", "act on the faced cell"),
+    ("SLEEP", "sleep until energy is full (a sleeper is hit harder)"),
     ("REST", "rest until health is full"),
-    ("DESCEND", "go down the ladder you stand on"), ("ASCEND", "go up the ladder you stand on"),
-    ("SHOOT_ARROW", "shoot an arrow the way you face (needs a bow)"),
-    ("READ_BOOK", "read a book: learn a spell"),
+    ("DESCEND", "take the ladder down you stand on"), ("ASCEND", "take the ladder up you stand on"),
+    ("SHOOT_ARROW", "shoot an arrow ahead (needs a bow)"),
+    ("READ_BOOK", "learn a spell from a book"),
 ]
 GROUPS = [
-    ("move one cell that way, or turn to face it when blocked", ("LEFT", "RIGHT", "UP", "DOWN")),
-    ("place it on the faced cell", ("PLACE_STONE", "PLACE_TABLE", "PLACE_FURNACE", "PLACE_PLANT", "PLACE_TORCH")),
-    ("craft the named item (recipes above)", tuple(a.name for a in Action if a.name.startswith("MAKE_"))),
-    ("cast the spell the way you face (2 mana)", ("CAST_FIREBALL", "CAST_ICEBALL")),
+    ("step that way, or turn to face it when blocked", ("LEFT", "RIGHT", "UP", "DOWN")),
+    ("place on the faced cell", ("PLACE_STONE", "PLACE_TABLE", "PLACE_FURNACE", "PLACE_PLANT", "PLACE_TORCH")),
+    ("craft it", tuple(a.name for a in Action if a.name.startswith("MAKE_"))),
+    ("cast ahead (2 mana)", ("CAST_FIREBALL", "CAST_ICEBALL")),
     ("drink a potion of that colour", tuple(a.name for a in Action if a.name.startswith("DRINK_POTION_"))),
-    ("enchant it at a faced enchantment table (9 mana; ruby at fire, sapphire at ice)",
+    ("at a faced enchantment table: 9 mana and a ruby (fire) or sapphire (ice)",
      ("ENCHANT_SWORD", "ENCHANT_ARMOUR", "ENCHANT_BOW")),
-    ("spend 1 XP on that attribute", ("LEVEL_UP_DEXTERITY", "LEVEL_UP_STRENGTH", "LEVEL_UP_INTELLIGENCE")),
+    ("spend 1 XP on it", ("LEVEL_UP_DEXTERITY", "LEVEL_UP_STRENGTH", "LEVEL_UP_INTELLIGENCE")),
 ]
 # numbered as upstream's Action (index i is Action(i)); the prompt groups similar actions
 ACTIONS = ActionSet(SINGLE, groups=GROUPS, noop="NOOP", order=[a.name for a in Action])
@@ -206,7 +206,7 @@ class CraftaxTask(GlyphTask):
     ACTIONS = ACTIONS
     glyphs = view.VOCAB
     default_max_turns = 200
-    rules = "{intro} {objective} {game_rules}"
+    rules = "{intro}{objective} {game_rules}"
     rewards = "{reward_text}"
     ends = "{ends_text}"
 
@@ -219,7 +219,8 @@ class CraftaxTask(GlyphTask):
 
     def prompt_fields(self) -> dict:
         s = self.scenario
-        return {"intro": s.intro(), "objective": s.objective, "game_rules": view.rules_text(),
+        intro = s.intro()
+        return {"intro": intro + " " if intro else "", "objective": s.objective, "game_rules": view.rules_text(topics=s.topics, drains=self.settings.intrinsics),
                 "reward_text": s.reward_text(), "ends_text": s.ends_text()}
 
     def _setup(self, rng: np.random.Generator) -> None:

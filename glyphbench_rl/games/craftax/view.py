@@ -390,19 +390,26 @@ def _recipe_lines(recipes) -> list[str]:
     return lines
 
 
-def rules_text(recipes=RECIPES, mining=MINING_TIERS) -> str:
-    """The rules section of the Craftax system prompt, generated from the tables: DO, the
-    recipes, mining tiers, vitals, sleep, floors and the ladder gate."""
-    tiers = ", ".join(f"{BLOCK_GLYPHS[b][1]} {TIERS[t] if t else 'hand'}" for b, t in mining)
-    return "\n".join([
-        "The view is 9x11 around you; your arrow shows your facing; positions are row,col. A move "
-        "turns you even when blocked. DO acts on the faced cell: mine, attack, eat (cow, ripe "
-        "plant), drink water, open a chest.",
-        f"Pickaxe needed: {tiers}.",
-        "Crafting and placing (table, furnace: one must be among your 8 neighbours):",
-        *_recipe_lines(recipes),
-        "Food, drink and energy drop over time; at 0 they cost HP, when all are up HP regrows. "
-        "SLEEP restores energy.",
-        f"DESCEND on > once {KILLS_TO_OPEN_LADDER} monsters on the floor are killed (] until "
-        "then); ASCEND on <. On dark floors only cells near light show.",
-    ])
+def rules_text(recipes=RECIPES, mining=MINING_TIERS, topics=("craft", "floors"),
+               drains: bool = True) -> str:
+    """The rules section of the Craftax system prompt, generated from the tables: the view and
+    DO always; the mining tiers and the recipes with ``"craft"`` in ``topics``; the vitals when
+    ``drains`` (the intrinsics are on); the ladders with ``"floors"``."""
+    lines = ["The view is 9x11 around you; your arrow shows your facing; positions are row,col. "
+             "DO acts on the faced cell: mine, attack, eat (cow, ripe plant), drink water, open a chest."]
+    if "craft" in topics:
+        by_tier: dict[int, list[str]] = {}
+        for block, tier in mining:
+            by_tier.setdefault(tier, []).append(BLOCK_GLYPHS[block][1])
+        tiers = "; ".join(f"{TIERS[t] + ' pickaxe' if t else 'no tool'}: {', '.join(names)}"
+                          for t, names in sorted(by_tier.items()))
+        lines += [f"Mining needs {tiers}.",
+                  "Crafting and placing (table, furnace: one must be among your 8 neighbours):",
+                  *_recipe_lines(recipes)]
+    if drains:
+        lines.append("Food, drink and energy drop over time; at 0 they cost HP, when all are up "
+                     "HP regrows. SLEEP restores energy.")
+    if "floors" in topics:
+        lines.append(f"A ladder down (>) opens after {KILLS_TO_OPEN_LADDER} kills on its floor (] "
+                     "until then). On dark floors only lit cells show.")
+    return "\n".join(lines)

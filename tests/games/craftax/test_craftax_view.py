@@ -234,7 +234,10 @@ def test_hud_light(states):
 def test_rules_text_is_built_from_the_tables():
     text = view.rules_text()
     assert "iron pickaxe/iron sword 1 wood+1 stone+1 iron+1 coal" in text
-    assert "place table 2 wood" in text and "diamond iron" in text
+    assert "place table 2 wood" in text and "iron pickaxe: diamond" in text
+    assert "no tool: tree" in text and "ladder down" in text and "Food, drink" in text
+    fight = view.rules_text(topics=("fight",), drains=False)
+    assert "wood pickaxe" not in fight and "ladder" not in fight and "Food" not in fight
     custom = view.rules_text(recipes=(("MAKE_GOLD_HAT", {"gold": 4}, False, True),))
     assert "furnace: gold hat 4 gold" in custom and "wood pickaxe" not in custom
     assert "{" not in text and "}" not in text     # safe inside GlyphTask's str.format template
