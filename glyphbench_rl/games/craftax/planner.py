@@ -21,12 +21,12 @@ import numpy as np
 from . import mobs as mobrules
 from . import rules
 from .bestiary import MOB_NAMES, MOB_TYPE_DAMAGE_MAPPING, MOB_TYPE_DEFENCE_MAPPING
+from .state import MOB_GROUPS
 from .tables import (DRINK_BLOCKS, IS_SOLID, MINING_BY_BLOCK, MONSTERS_KILLED_TO_CLEAR_LEVEL, NUM_LEVELS,
                      PLAYER_ARROW, SLEEPING_MELEE_FACTOR, SPELLS, Action, BlockType)
 from .task import POTION_EFFECTS
 
 MOVES = {(0, -1): Action.LEFT, (0, 1): Action.RIGHT, (-1, 0): Action.UP, (1, 0): Action.DOWN}
-KINDS = ("passive_mobs", "melee_mobs", "ranged_mobs")
 ROOM_WEIGHT = 0.1     # evade: worth of one cell of running room (``_room``) against one of distance
 
 
@@ -41,7 +41,7 @@ class Mob:
 
 def live_mobs(state) -> list[Mob]:
     level, out = state.player_level, []
-    for k, kind in enumerate(KINDS):
+    for k, kind in enumerate(MOB_GROUPS):
         mobs = getattr(state, kind)
         for i in np.flatnonzero(mobs.mask[level]):
             out.append(Mob((int(mobs.position[level, i, 0]), int(mobs.position[level, i, 1])), k,

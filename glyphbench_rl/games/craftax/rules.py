@@ -586,6 +586,11 @@ _ENCHANT = frozenset(int(a) for a in (Action.ENCHANT_SWORD, Action.ENCHANT_ARMOU
 _LEVEL_UP = frozenset(_ATTRIBUTES)
 
 
+def daylight(timestep: int, settings) -> float:
+    """The light level at ``timestep``: upstream's daylight, or full day with the cycle off."""
+    return light_level(timestep, settings.day_length) if settings.daylight else 1.0
+
+
 def step(state: State, action: int, settings, draws, after_mobs=None) -> float:
     """One upstream step (see the module docstring); returns upstream's reward. ``after_mobs``,
     if given, is called with the state after the mobs moved and before any spawn (a task
@@ -636,5 +641,5 @@ def step(state: State, action: int, settings, draws, after_mobs=None) -> float:
         reward = float(_WEIGHTS[state.achievements & ~old].sum())
     reward += (state.player_health - health) * 0.1
     state.timestep += 1
-    state.light_level = light_level(state.timestep, settings.day_length) if settings.daylight else 1.0
+    state.light_level = daylight(state.timestep, settings)
     return reward

@@ -22,7 +22,7 @@ from typing import Callable
 
 import numpy as np
 
-from .state import Settings
+from .state import MOB_GROUPS, Settings
 from .tables import BlockType
 
 # ------------------------------------------------------------------------------------------------
@@ -264,9 +264,8 @@ class NearLadder:
 
 
 def _remove_mobs(state, where) -> None:
-    from .task import MOB_KINDS
     level = state.player_level
-    for kind in MOB_KINDS:
+    for kind in MOB_GROUPS:
         mobs = getattr(state, kind)
         for i in np.flatnonzero(mobs.mask[level]):
             r, c = (int(v) for v in mobs.position[level, i])
@@ -419,9 +418,8 @@ class Scenario:
                 getattr(state, k)[:] = v
             else:
                 setattr(state, k, v)
-        from .tables import light_level
-        state.light_level = (light_level(state.timestep, self.settings.day_length)
-                             if self.settings.daylight else 1.0)
+        from .rules import daylight
+        state.light_level = daylight(state.timestep, self.settings)
         ctx = Context(state)
         for edit in self.edits:
             edit.apply(state, rng, ctx)

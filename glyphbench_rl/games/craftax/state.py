@@ -22,6 +22,8 @@ NUM_LEVELS = 9
 MAP_SIZE = (48, 48)
 MAX_MELEE, MAX_PASSIVE, MAX_RANGED = 3, 3, 2
 MAX_MOB_PROJECTILES, MAX_PLAYER_PROJECTILES, MAX_GROWING_PLANTS = 3, 3, 10
+# the State fields of the three mob classes, in upstream's class order (MobType 0, 1, 2)
+MOB_GROUPS = ("passive_mobs", "melee_mobs", "ranged_mobs")
 
 
 @dataclass

@@ -294,6 +294,9 @@ def _torch_light_map():
 TORCH_LIGHT_MAP = _torch_light_map()
 
 
+NIGHT_LIGHT = 0.5   # the surface is in night below this light level (the HUD's Day/Night)
+
+
 def light_level(timestep: int, day_length: int) -> float:
     """The daylight at ``timestep`` (upstream calculate_light_level): 1 at noon, 0 at night."""
     progress = (timestep / day_length) % 1 + 0.3

@@ -21,7 +21,7 @@ from ..common.lanes import Draws
 from . import rules, view
 from .bestiary import MOB_NAMES
 from .scenarios import SCENARIOS, Scenario, parse_test
-from .tables import Action, Achievement, BlockType
+from .tables import NIGHT_LIGHT, Achievement, Action, BlockType
 
 SINGLE = [
     ("NOOP", "do nothing"),
@@ -50,10 +50,8 @@ ITEMS = ("wood", "stone", "coal", "iron", "diamond", "sapling", "ruby", "sapphir
          "torches", "books", "pickaxe", "sword", "bow")
 PLACED = {Action.PLACE_STONE: BlockType.STONE, Action.PLACE_TABLE: BlockType.CRAFTING_TABLE,
           Action.PLACE_FURNACE: BlockType.FURNACE, Action.PLACE_PLANT: BlockType.PLANT}
-MOB_KINDS = ("passive_mobs", "melee_mobs", "ranged_mobs")
 CASTS = (Action.CAST_FIREBALL, Action.CAST_ICEBALL)
 DRINKS = tuple(range(Action.DRINK_POTION_RED, Action.DRINK_POTION_YELLOW + 1))
-NIGHT_LIGHT = 0.5     # below this light level the surface is in night (the HUD says so too)
 POTION_EFFECTS = ("heal", "harm", "mana", "drain", "energy", "tire")   # upstream's effect order
 
 

@@ -26,7 +26,7 @@ import numpy as np
 
 from .mobs import is_boss_vulnerable
 from .state import Settings, State
-from .tables import (BOSS_LEVEL, DARK_LEVELS, LEVEL_NAMES, LIGHT_VISIBLE, MINING, PLACING,
+from .tables import (BOSS_LEVEL, DARK_LEVELS, LEVEL_NAMES, LIGHT_VISIBLE, MINING, NIGHT_LIGHT, PLACING,
                      POTION_COLOURS, RECIPES as CRAFTING, Action, BlockType, ItemType,
                      ProjectileType, max_drink, max_energy, max_food, max_health, max_mana)
 from .tables import MONSTERS_KILLED_TO_CLEAR_LEVEL as KILLS_TO_OPEN_LADDER
@@ -240,12 +240,6 @@ def grid(state: State) -> list[str]:
     return [text[i:i + COLS] for i in _ROW_STARTS]
 
 
-def legend(rows: list[str]) -> list[tuple[str, str]]:
-    """The ``(glyph, meaning)`` pairs of the glyphs in ``rows``, in ``VOCAB`` order."""
-    text = "".join(rows)
-    return [(g, m) for g, m in VOCAB.items() if g in text]
-
-
 # ---- the HUD -----------------------------------------------------------------------------
 
 TIERS = ("", "wood", "stone", "iron", "diamond")
@@ -290,7 +284,7 @@ def hud(state: State, settings: Settings | None = None) -> str:
            inv.pickaxe, inv.sword, inv.bow, state.sword_enchantment, state.bow_enchantment,
            inv.armour.tobytes(), state.armour_enchantments.tobytes(), inv.potions.tobytes(),
            state.learned_spells.tobytes(), level, state.player_position.tobytes(),
-           state.player_direction, state.light_level >= 0.5, state.monsters_killed.tobytes(),
+           state.player_direction, state.light_level >= NIGHT_LIGHT, state.monsters_killed.tobytes(),
            state.is_sleeping, state.is_resting)
     line = _HUDS.get(key)
     if line is None:
@@ -340,7 +334,7 @@ def _hud(state: State) -> str:
     row, col = state.player_position.tolist()
     where = f"Floor {level} {LEVEL_NAMES[level]} at {row},{col} facing {FACING.get(state.player_direction, '?')}"
     if level == 0:
-        where += " Day" if state.light_level >= 0.5 else " Night"
+        where += " Day" if state.light_level >= NIGHT_LIGHT else " Night"
     elif level in DARK_LEVELS:
         where += " dark"
     killed = state.monsters_killed.tolist()[level]

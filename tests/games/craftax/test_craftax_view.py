@@ -19,7 +19,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from glyphbench_rl.core.frame import is_single_width
+from glyphbench_rl.core.frame import is_single_width, legend_of, vocab_entries
 from glyphbench_rl.games.craftax import view
 from glyphbench_rl.games.craftax.state import Inventory, Mobs, Settings, State
 from glyphbench_rl.games.craftax.tables import Action, BlockType, ItemType, ProjectileType
@@ -101,7 +101,7 @@ def test_grid_shape_and_vocabulary(states):
         rows = view.grid(state)
         assert len(rows) == 9 and all(len(r) == 11 for r in rows)
         assert set("".join(rows)) <= set(view.VOCAB)
-        assert {g for g, _ in view.legend(rows)} == set("".join(rows))
+        assert {g for g, _ in legend_of("".join(rows), vocab_entries(view.VOCAB))} == set("".join(rows))
 
 
 def test_darkness_and_map_edge_match_upstreams_visibility(states):
