@@ -288,3 +288,9 @@ def register_arcade(game: type, name: str, *, mini: dict, atari: dict) -> None:
         raise ValueError(f"miniatari-{name}: its rule pays within [{lo}, {hi}], not [-1, 1]")
     register_variants(game, "MiniAtari", {f"glyphbench/miniatari-{name}-v0": mini})
     register_variants(game, "Atari", {f"glyphbench/atari-{name}-v0": atari}, tier="extended")
+
+
+def register_atari(game: type, name: str, **atari) -> None:
+    """Register only ``glyphbench/atari-<name>-v0`` (Atari, extended tier): a game without a
+    MiniAtari twin (``atari`` as ``register_arcade``'s)."""
+    register_variants(game, "Atari", {f"glyphbench/atari-{name}-v0": atari}, tier="extended")
