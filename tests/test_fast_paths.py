@@ -1,15 +1,17 @@
 """The shortcuts of the step path give what the plain computations give: numpy's integers,
 a legend computed from scratch every frame, the Frame's own constructor."""
 
+import copy
 import dataclasses
+import pickle
 import random
 
 import numpy as np
 import pytest
 
 from glyphbench_rl.core import ActionSet, Frame, GlyphTask, seeding
+from glyphbench_rl.core import frame as frame_module
 from glyphbench_rl.core.frame import new_frame, render
-from glyphbench_rl.core.task import _LEGEND_MEMO
 
 
 def test_int_sampler_is_numpy_integers_call_for_call():
@@ -89,7 +91,7 @@ def test_new_frame_is_the_frozen_dataclass():
 
 
 class Counter(GlyphTask):
-    """Never shows the same grid twice: the remembered legends never pay, so they are dropped."""
+    """Never shows the same grid twice: every row is new to the legend memo."""
     title = "counter"
     ACTIONS = ActionSet([("TICK", "count on")])
     glyphs = {str(d): f"digit {d}" for d in range(10)}
@@ -105,11 +107,24 @@ class Counter(GlyphTask):
         return [f"{self.n:04d}"]
 
 
-def test_legends_stay_right_when_the_memo_gives_up():
+def test_legends_stay_right_when_the_row_memo_starts_again(monkeypatch):
+    monkeypatch.setattr(frame_module, "ROW_MEMO", 50)
     task = Counter(tier="extended")
     task.reset(seed=0)
-    for _ in range(2 * _LEGEND_MEMO + 10):
+    for _ in range(130):
         _, _, _, _, info = task.step(0)
         digits = sorted(set(f"{task.n:04d}"), key=int)
         assert [g for g, _ in info["frame"].legend] == digits
-    assert task._legends is None
+        assert info["frame"].render().splitlines()[-1] == "Legend: " + ", ".join(
+            f"{d} digit {d}" for d in digits)
+    assert 0 < len(task._legend_memo.rows) <= 50
+
+
+def test_the_legend_memo_is_shared_not_copied():
+    task = Counter(tier="extended")
+    task.reset(seed=0)
+    task.step(0)
+    twin = copy.deepcopy(task)
+    assert twin._legend_memo is task._legend_memo
+    assert pickle.loads(pickle.dumps(task))._legend_memo is task._legend_memo   # (same process)
+    assert Counter(tier="extended")._legend_memo is not None

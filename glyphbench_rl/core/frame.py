@@ -116,6 +116,73 @@ def legend_of(text: str, entries: Sequence[tuple[str, str]],
     return tuple(legend)
 
 
+ROW_MEMO = 8192   # rows a Legends remembers before it starts again
+
+
+class Legends:
+    """The legends of grids drawn from one vocabulary (its ``vocab_entries``), found row by row.
+
+    A row's glyphs are worked out once, as a bit per entry (``mask``); a grid's legend is then
+    the union of its rows' bits, a dictionary lookup per row (rows repeat from turn to turn, and
+    a row already hashed costs nothing to hash again), and each union's legend and legend line
+    are made once (``legend``). Counting glyphs over the whole grid each turn cost a few times
+    more. One Legends serves every task with the same entries; being a cache of facts about
+    strings, it is shared, not copied, by ``copy`` and ``deepcopy``, and pickles empty."""
+    __slots__ = ("entries", "rows", "legends")
+
+    def __init__(self, entries: tuple[tuple[str, str], ...]) -> None:
+        self.entries = entries
+        self.rows: dict[str, int] = {}
+        self.legends: dict[int, tuple[tuple[tuple[str, str], ...], str]] = {}
+
+    def mask(self, row: str) -> int:
+        """The bits of the entries whose glyph is in ``row`` (remembered); RuntimeError when
+        ``row`` holds a character no entry names."""
+        bits = counted = 0
+        size = len(row)
+        for i, (g, _) in enumerate(self.entries):
+            if g in row:
+                bits |= 1 << i
+                counted += row.count(g)
+                if counted == size:
+                    break
+        if counted != size:
+            missing = "".join(sorted(set(row).difference(g for g, _ in self.entries)))
+            raise RuntimeError(f"glyphs {missing!r} are on the grid but have no legend entry")
+        if len(self.rows) >= ROW_MEMO:
+            self.rows.clear()
+        self.rows[row] = bits
+        return bits
+
+    def legend(self, bits: int) -> tuple[tuple[tuple[str, str], ...], str]:
+        """The legend (the entries themselves, in order) of the union ``bits``, and its line."""
+        seen = self.legends.get(bits)
+        if seen is None:
+            legend = tuple(e for i, e in enumerate(self.entries) if bits >> i & 1)
+            seen = self.legends[bits] = (legend, legend_line(legend))
+        return seen
+
+    def __copy__(self) -> "Legends":
+        return self
+
+    def __deepcopy__(self, memo: dict) -> "Legends":
+        return self
+
+    def __reduce__(self):
+        return legends_for, (self.entries,)
+
+
+_LEGENDS: dict[tuple[tuple[str, str], ...], Legends] = {}
+
+
+def legends_for(entries: tuple[tuple[str, str], ...]) -> Legends:
+    """The one ``Legends`` of ``entries`` in this process."""
+    memo = _LEGENDS.get(entries)
+    if memo is None:
+        memo = _LEGENDS[entries] = Legends(entries)
+    return memo
+
+
 @lru_cache(maxsize=4096)
 def legend_line(legend: tuple[tuple[str, str], ...]) -> str:
     """``Legend: g meaning, ...`` of a legend (a tuple of pairs), remembered per legend (a game

@@ -29,12 +29,11 @@ import gymnasium as gym
 import numpy as np
 
 from .actions import ActionSet
-from .frame import Frame, legend_line, legend_of, new_frame, render, vocab_entries
+from .frame import Frame, legend_line, legends_for, new_frame, render, vocab_entries
 from .params import ParamError, check_params
 from .seeding import MAX_SEED, check_seed, derive
 
 STANDARD_TURN_CAP = 512
-_LEGEND_MEMO = 512   # grids whose legend a task remembers
 _RETURN_EPS = 1e-9
 
 OBSERVATION_CONVENTIONS = (
@@ -94,14 +93,11 @@ class GlyphTask(gym.Env[str, int]):
         self._seedseq: np.random.SeedSequence | None = None
         self._streams: dict[tuple, np.random.Generator] = {}
         self._started = False
-        # the last frame's grid, vocabulary, legend and legend line: the next frame's first guess;
-        # and the legends of recent grids (their text) under that vocabulary
-        self._legends: dict[str, tuple[tuple[tuple[str, str], ...], str]] | None = {}
-        self._legend_reused = False   # a remembered legend served since the memo last filled
-        self._hint_holds = True
-        self._vocab_entries: tuple[tuple[str, str], ...] = ()
-        self._legend_grid: tuple[str, ...] = ()
+        # the vocabulary the legend is drawn from, its shared memo of rows' glyphs, and the last
+        # frame's glyphs (as the memo's bits), legend and legend line
         self._legend_vocab: Mapping[str, str] | None = None
+        self._legend_memo = legends_for(())
+        self._legend_bits = -1
         self._legend: tuple[tuple[str, str], ...] = ()
         self._legend_text = legend_line(())
         self._reset_counters()
@@ -302,33 +298,17 @@ class GlyphTask(gym.Env[str, int]):
         grid = tuple(self._grid())
         vocab = self.vocab()
         if vocab is not self._legend_vocab:
-            self._legends = {}
-            self._vocab_entries = vocab_entries(vocab)
-            legend = legend_of("".join(grid), self._vocab_entries)
-            self._legend_vocab, self._legend, self._legend_text = vocab, legend, legend_line(legend)
-        elif grid != self._legend_grid:   # (an unchanged grid, a bump or a no-op, keeps all)
-            # a grid seen before (boards repeat: a player walking a maze) has its legend
-            # remembered; else the last legend is tried first while that keeps paying off
-            text = "".join(grid)
-            legends = self._legends
-            seen = None if legends is None else legends.get(text)
-            if seen is None:
-                legend = legend_of(text, self._vocab_entries, self._legend if self._hint_holds else ())
-                self._hint_holds = legend == self._legend
-                if self._hint_holds:
-                    legend = self._legend
-                seen = (legend, self._legend_text if self._hint_holds else legend_line(legend))
-                if legends is not None:
-                    if len(legends) >= _LEGEND_MEMO:   # full: start again, or stop if it never paid
-                        legends.clear()
-                        if not self._legend_reused:
-                            self._legends = None
-                        self._legend_reused = False
-                    legends[text] = seen
-            else:
-                self._legend_reused = True
-            self._legend, self._legend_text = seen
-        self._legend_grid = grid
+            self._legend_vocab, self._legend_memo = vocab, legends_for(vocab_entries(vocab))
+            self._legend_bits = -1
+        memo = self._legend_memo
+        known = memo.rows
+        bits = 0
+        for row in grid:   # (the glyphs of a row seen before are remembered: most rows repeat)
+            b = known.get(row)
+            bits |= memo.mask(row) if b is None else b
+        if bits != self._legend_bits:
+            self._legend_bits = bits
+            self._legend, self._legend_text = memo.legend(bits)
         messages = self._messages
         return new_frame(grid, self._legend, hud, " ".join(messages) if messages else "", self.axes)
 

@@ -33,7 +33,6 @@ def test_fifty_seeds_give_distinct_levels(game):
 def survive(task, first, then=("NOOP", "UP", "DOWN", "LEFT", "RIGHT"), depth=3):
     """Look ahead: the reward of ``first`` and whether some steady move keeps you alive
     ``depth`` more turns (the world's streams are copied, so this is the real future)."""
-    task._legends = None                      # (no legend memo to copy)
     sim = copy.deepcopy(task)
     _, gain, term, trunc, _ = sim.step(first)
     if term or trunc:
@@ -178,7 +177,6 @@ def test_bossfight_phases_follow_the_boss_hit_points():
 # -- Plunder ----------------------------------------------------------------------------------------
 def outlook(task, action, turns):
     """The reward of ``action`` followed by ``turns`` NOOPs (the real future: streams are copied)."""
-    task._legends = None
     sim = copy.deepcopy(task)
     total = 0.0
     for move in [action] + ["NOOP"] * turns:
