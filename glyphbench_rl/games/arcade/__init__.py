@@ -40,6 +40,7 @@ from . import boxing  # noqa: F401
 from . import breakout  # noqa: F401
 from . import centipede  # noqa: F401
 from . import choppercommand  # noqa: F401
+from . import crazyclimber  # noqa: F401
 from . import defender  # noqa: F401
 from . import demonattack  # noqa: F401
 from . import doubledunk  # noqa: F401

@@ -209,3 +209,119 @@ def test_hero_map_marks_the_screens_visited():
     env, _ = play(HERO, hero_policy, 0, turns=400)
     assert len(env.map.visited) >= 2 or env.level >= 1
     assert "@" in env.map.hud() and "Map" in env.frame.hud
+
+
+# -- Crazy Climber --------------------------------------------------------------------------------
+CLIMBER = "glyphbench/atari-crazyclimber-v0"
+C_NOOP, C_UP, C_DOWN, C_LEFT, C_RIGHT = range(5)
+
+
+def seen(t) -> list[str]:
+    return t.frames[t.tick % t.params.cycle]
+
+
+def threatened(t, c: int) -> bool:
+    return any(pc == c and 0 <= t.r - pr <= 3 for pr, pc in t.pots.cells)
+
+
+def climber_policy(t) -> int:
+    rows, r, c = seen(t), t.r, t.c
+    if r == 0:
+        return C_RIGHT if t.copter > c else C_LEFT
+    if threatened(t, c):                        # a pot coming down your column: step aside
+        for x, a in ((c - 1, C_LEFT), (c + 1, C_RIGHT)):
+            if rows[r][x] == "." and not threatened(t, x):
+                return a
+    above = rows[r - 1][c]
+    if t.hand and above != "=":
+        return C_UP
+    if not t.hand and above in "._H":
+        return C_UP
+    for x, a in ((c - 1, C_LEFT), (c + 1, C_RIGHT)):   # barred: try a column whose window is open
+        if rows[r][x] == "." and rows[r - 1][x] == "." and not threatened(t, x):
+            return a
+    return C_NOOP
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2))
+def test_climber_policy_finishes_buildings(seed):
+    env, info = play(CLIMBER, climber_policy, seed, turns=1000)
+    assert env.score.done >= 2 and env.building >= 2 and env.score.points > 2 * env.params.unit
+
+
+def test_climber_who_hangs_on_is_hit_by_pots_until_no_life_is_left():
+    env, info = play(CLIMBER, lambda t: C_NOOP, 0)
+    assert info["won"] is False and env.lives == 0 and env.episode_return == -1 and env.turn < 400
+
+
+def climber_at(**over):
+    env = make(CLIMBER, **over)
+    env.reset(seed=0)
+    return env
+
+
+def test_climber_climbs_hand_over_hand_and_the_view_scrolls():
+    env = climber_at(shutters=0.0, drop=50)
+    r, top = env.r, env.tower.top
+    env.step(C_UP)
+    assert env.r == r and env.hand and "y" in "".join(env.frame.grid)
+    env.step(C_UP)
+    assert env.r == r - 1 and not env.hand and env.score.points == env.params.row_points
+    for _ in range(20):
+        env.step(C_UP)
+    assert env.r == r - 11 and env.tower.top < top
+    assert env.tower.top + env.params.height - 1 - env.r == env.params.below
+
+
+def shut_above(env):
+    """Make the window above you shut on every turn of the cycle."""
+    r, c = env.r - 1, env.c
+    for rows in env.frames:
+        rows[r] = rows[r][:c] + "=" + rows[r][c + 1:]
+
+
+def test_climber_shut_window_bars_the_way_and_sideways_moves_too():
+    env = climber_at(shutters=0.0, drop=50)
+    shut_above(env)
+    r = env.r
+    env.step(C_UP)
+    env.step(C_UP)
+    assert env.r == r and not env.hand
+    c = env.c
+    for rows in env.frames:
+        rows[r] = rows[r][:c + 1] + "=" + rows[r][c + 2:]
+    env.step(C_RIGHT)
+    assert env.c == c
+    env.step(C_LEFT)
+    assert env.c == c - 1
+
+
+def test_climber_window_shutting_on_your_hand_knocks_you_down():
+    env = climber_at(shutters=0.0, drop=50)
+    for _ in range(7):
+        env.step(C_UP)
+    r = env.r
+    assert env.hand
+    rows = env.frames[(env.tick + 1) % env.params.cycle]
+    rows[r - 1] = rows[r - 1][:env.c] + "=" + rows[r - 1][env.c + 1:]
+    env.step(C_NOOP)
+    assert env.r == r + env.params.knock and not env.hand
+
+
+def test_climber_pot_hits_cost_a_life_and_a_side_step_dodges():
+    env = climber_at(drop=50)
+    env.pots.drop(env.r - 1, env.c)
+    env.step(C_NOOP)
+    assert env.lives == env.params.lives - 1 and env.pots.cells == []
+    env.pots.drop(env.r - 1, env.c)
+    env.step(C_LEFT if env.frames[env.tick % env.params.cycle][env.r][env.c - 1] == "." else C_RIGHT)
+    assert env.lives == env.params.lives - 1
+
+
+def test_climber_helicopter_finishes_the_building_and_the_next_is_taller():
+    env = climber_at()
+    tall = len(env.frames[0])
+    env.r, env.c = 0, env.copter - 1 if env.copter > 1 else env.copter + 1
+    _, reward, *_ = env.step(C_RIGHT if env.c < env.copter else C_LEFT)
+    assert env.score.done == 1 and reward == env.params.unit and env.building == 1
+    assert len(env.frames[0]) == tall + env.params.taller and env.r == len(env.frames[0]) - 1
