@@ -6,7 +6,8 @@ from __future__ import annotations
 import pytest
 
 from glyphbench_rl import make
-from glyphbench_rl.games.arcade.climbing import Fallers, Purse, Tower, thrust
+from glyphbench_rl.games.arcade.climbing import Fallers, Purse, Tower, crawl, ledges, shaft, thrust
+from glyphbench_rl.games.common.lanes import Draws
 from arcade_play import play
 
 HERO = "glyphbench/atari-hero-v0"
@@ -44,6 +45,41 @@ def test_thrust_lifts_or_falls_never_through_rock():
     assert thrust(3, True, 0, blocked) == 2 and thrust(1, True, 0, blocked) == 1
     assert thrust(3, False, 2, blocked) == 5 and thrust(4, False, 2, blocked) == 5
     assert thrust(3, False, 0, blocked) == 3
+
+
+def test_tower_clears_a_wall_run_and_traces_a_beam():
+    t = Tower(["#....#", "#.%..#", "#.%..#", "######"], 2)
+    assert not t.clear_run(1, 1, "%", ".") and t.clear_run(2, 2, "%", ".")
+    assert t.rows[1] == "#....#" and t.rows[2] == "#....#"
+    bat = [1, 3, 0, 0, "B"]
+    assert t.beam(1, 1, 1, 5, ".", [bat]) == ([2], bat, None)
+    assert t.beam(1, 1, 1, 5, ".", []) == ([2, 3, 4], None, 5)
+    assert t.beam(1, 4, -1, 2, ".", []) == ([3, 2], None, None)
+
+
+def test_ledges_chain_each_band_into_the_next_gap_well_clear_of_the_drop():
+    import numpy as np
+    rows, bands = shaft(Draws(np.random.default_rng(3)), 20, 16, 3, 3, 5, "#", ".")
+    assert len(rows) == 48 and len(bands) == 9 and [b.last for b in bands] == [False] * 8 + [True]
+    entry = 5
+    for b in bands:
+        assert b.entry == entry and abs(b.near - entry) >= 4 and 1 <= b.gap <= 17
+        assert "".join(rows[b.floor]).count(".") == (0 if b.last else 2)
+        assert all(rows[r][0] == "#" and rows[r][19] == "#" for r in range(b.top, b.floor))
+        assert len(b.between) >= 4 and b.near - b.step not in (entry, entry + 1)
+        entry = b.gap
+    assert [b.floor % 16 for b in bands[:3]] == [5, 10, 15] and bands[1].top == 6
+    assert list(ledges(Draws(np.random.default_rng(3)), 20, 16, 3, 3, 5)) == bands
+
+
+def test_crawl_turns_back_at_rock_and_only_on_the_screen():
+    t = Tower(["#..#", "#..#", "####", "#..#"], 2)
+    bat, far = [0, 2, 0, 1, "B"], [3, 1, 0, 1, "B"]
+    crawl(t, [bat, far], 0, 2, ".")
+    assert bat[:4] == [0, 1, 0, -1] and far[:2] == [3, 1]
+    spider = [1, 1, 1, 0, "X"]
+    crawl(t, [spider], 0, 2, ".")
+    assert spider[:3] == [0, 1, -1]
 
 
 def test_purse_pays_native_points_without_units():
