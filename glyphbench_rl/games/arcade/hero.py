@@ -111,7 +111,7 @@ class Hero(ClimbTask):
                 self.critters.append([floor - 1, x, 0, step, BAT] if kind == 0 else
                                      [top + 1, x, 1, 0, SPIDER] if kind == 1 else
                                      [floor - 1, x, 0, 0, SNAKE])
-            if lava and free and floor - top >= 4:
+            if lava and free and floor - top >= 4 and top > 0:
                 x = free[d.below(len(free))]
                 rows[top][x] = rows[top + 1][x] = LAVA
         self.screens(["".join(row) for row in rows])

@@ -361,3 +361,11 @@ def test_climber_helicopter_finishes_the_building_and_the_next_is_taller():
     _, reward, *_ = env.step(C_RIGHT if env.c < env.copter else C_LEFT)
     assert env.score.done == 1 and reward == env.params.unit and env.building == 1
     assert len(env.frames[0]) == tall + env.params.taller and env.r == len(env.frames[0]) - 1
+
+
+def test_prompts_follow_the_parameters():
+    hero = make(HERO, reach=4, fuse=5, depth=3).system_prompt()
+    assert "laser 4 cells" in hero and "after 5 turns" in hero and "3 screens deep" in hero
+    assert "Map shows the rooms" in hero
+    climber = make(CLIMBER, tall=40, shut=3, cycle=10, knock=3).system_prompt()
+    assert "40 rows tall" in climber and "shut for 3 turns in every 10" in climber and "3 rows down" in climber
