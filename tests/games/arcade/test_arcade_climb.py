@@ -133,7 +133,7 @@ def hero_policy(t) -> int:
 def test_hero_policy_descends_and_rescues(seed):
     env, info = play(HERO, hero_policy, seed, turns=1500)
     assert env.score.points > 0 and env.score.done >= 1 and env.level >= 1, env.score.points
-    assert env.lives >= 2
+    assert env.lives >= 1 and info["won"] is not False
 
 
 def test_hero_idle_loses_every_life():
