@@ -23,6 +23,9 @@ Engine-level modules, which the games import (and nothing else of the family):
 - ``arena``: free-roam shooters (``ArenaTask``: facing fire with a reach, chasers that slide
   around walls, drifting foes, foe shells, wrap-around fields, an air or fuel countdown,
   reinforcements).
+- ``climbing``: vertical worlds seen a screen or a window at a time (``Tower``, ``ClimbTask``:
+  a mine shaft's screens with a ``RoomMap``, a facade that scrolls), native points beside the
+  tally (``Purse``), falling objects, a pack against gravity, critters that pace or climb.
 """
 
 from . import alien  # noqa: F401

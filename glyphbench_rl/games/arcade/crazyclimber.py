@@ -85,14 +85,14 @@ class CrazyClimber(ClimbTask):
         self.copter = 1 + d.below(w - 2)
         roof = EDGE + ROOF * (w - 2) + EDGE
         roof = roof[:self.copter] + COPTER + roof[self.copter + 1:]
-        self.frames = []
-        for t in range(p.cycle):
-            rows = [roof]
-            for r in range(1, tall):
-                cells = [OPEN if f < 0 else SHUT if (t + f) % p.cycle < p.shut else
-                         CLOSING if (t + f) % p.cycle == p.cycle - 1 else OPEN for f in phases[r]]
-                rows.append(EDGE + "".join(cells) + EDGE)
-            self.frames.append(rows)
+        cycle = p.cycle   # a window's cells over the cycle, one string per phase (-1: always open)
+        runs = {-1: OPEN * cycle}
+        runs.update((f, "".join(SHUT if (t + f) % cycle < p.shut else CLOSING if (t + f) % cycle == cycle - 1
+                                else OPEN for t in range(cycle))) for f in range(cycle))
+        self.frames = [[roof] for _ in range(cycle)]
+        for r in range(1, tall):
+            for frame, cells in zip(self.frames, zip(*[runs[f] for f in phases[r]])):
+                frame.append(EDGE + "".join(cells) + EDGE)
         self.tower = Tower(self.frames[0], p.height)
         self.r, self.c, self.hand, self.best = tall - 1, w // 2, False, tall - 1
         self.pots = Fallers()
