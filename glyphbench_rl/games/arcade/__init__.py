@@ -23,6 +23,9 @@ Engine-level modules, which the games import (and nothing else of the family):
 - ``arena``: free-roam shooters (``ArenaTask``: facing fire with a reach, chasers that slide
   around walls, drifting foes, foe shells, wrap-around fields, an air or fuel countdown,
   reinforcements).
+- ``climbing``: vertical worlds seen a screen or a window at a time (``Tower``, ``ClimbTask``:
+  a mine shaft's screens with a ``RoomMap``, a facade that scrolls), native points beside the
+  tally (``Purse``), falling objects, a pack against gravity, critters that pace or climb.
 """
 
 from . import alien  # noqa: F401
@@ -40,6 +43,7 @@ from . import boxing  # noqa: F401
 from . import breakout  # noqa: F401
 from . import centipede  # noqa: F401
 from . import choppercommand  # noqa: F401
+from . import crazyclimber  # noqa: F401
 from . import defender  # noqa: F401
 from . import demonattack  # noqa: F401
 from . import doubledunk  # noqa: F401
@@ -48,6 +52,7 @@ from . import fishingderby  # noqa: F401
 from . import freeway  # noqa: F401
 from . import frostbite  # noqa: F401
 from . import gopher  # noqa: F401
+from . import hero  # noqa: F401
 from . import icehockey  # noqa: F401
 from . import kangaroo  # noqa: F401
 from . import kungfumaster  # noqa: F401
