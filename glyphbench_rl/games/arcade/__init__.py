@@ -52,6 +52,7 @@ from . import icehockey  # noqa: F401
 from . import kangaroo  # noqa: F401
 from . import kungfumaster  # noqa: F401
 from . import mspacman  # noqa: F401
+from . import namethisgame  # noqa: F401
 from . import phoenix  # noqa: F401
 from . import pong  # noqa: F401
 from . import qbert  # noqa: F401

@@ -162,3 +162,105 @@ def test_too_many_nudges_tilt_the_table():
     while not t.done and t.tilt.tilted:
         env.step(NOOP)
     assert not t.tilt.tilted and t.held                            # cleared once the ball drained
+
+
+# -- namethisgame ---------------------------------------------------------------------------------
+OCTOPUS = "glyphbench/atari-namethisgame-v0"
+FIRE = 3
+
+
+def sea(seed: int = 0):
+    env = make(OCTOPUS)
+    env.reset(seed=seed)
+    return env, env.unwrapped
+
+
+def guard_policy(env) -> int:
+    """Breathe from a lowered line when air runs short; else stand under the deepest foe (the
+    shark led by its swim) and fire."""
+    t = env.unwrapped
+    p = t.params
+    if t.line and (t.air.left < p.air // 2 or t.line == t.row - 1 and t.air.left < p.air * 3 // 4):
+        goal = t.boat.c
+    else:
+        foe = max([x for x in t.tips if x.r > 1] + [t.shark], key=lambda x: x.r)
+        goal = foe.c
+        if foe is t.shark:
+            goal = min(p.width - 1, max(0, foe.c + foe.dc * ((t.row - foe.r) // 4)))
+    if goal == t.col:
+        return FIRE
+    return LEFT if goal < t.col else RIGHT
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_guarding_shoots_back_tentacles_and_sharks_to_the_goal(seed):
+    env, _ = play(OCTOPUS, guard_policy, seed, 1500)
+    t = env.unwrapped
+    assert t.done and t.score.done == t.params.goal and t.lives >= 1
+    assert t.score.points > 10.0 * t.params.goal                   # kills pay by depth, more than one row
+
+
+def test_standing_still_loses_every_life_to_the_octopus():
+    env = make(OCTOPUS)
+    env.reset(seed=0)
+    total, done = 0.0, False
+    while not done:
+        _, r, term, trunc, _ = env.step(NOOP)
+        total, done = total + r, term or trunc
+    t = env.unwrapped
+    assert term and t.lives == 0 and total == -1.0 and t.tick < 2000
+
+
+def test_a_shot_tip_drives_the_tentacle_back_and_pays_by_depth():
+    env, t = sea()
+    tip = t.tips[0]
+    tip.r = 9
+    t.col = tip.c
+    t.shark.r, t.shark.c = 5, 0 if tip.c > 2 else t.params.width - 1
+    rewards = [env.step(FIRE)[1] for _ in range(6)]
+    assert tip.r == 1 and sum(rewards) == 8 * t.params.unit and t.score.done == 1
+
+
+def test_the_shark_zigzags_down_pays_by_depth_and_takes_the_treasure():
+    env, t = sea()
+    s = t.shark
+    s.r, s.c, s.dc = 6, t.params.width - 1, 1
+    t.tick = t.params.swim - 1                                     # its move comes next turn
+    env.step(NOOP)
+    assert (s.r, s.dc, s.glyph) == (7, -1, "<")                    # turned at the wall, a row lower
+    s.r, s.c, s.dc = 14, t.col, 1                                  # met by the shot before it moves on
+    t.gun.shots = []
+    reward = sum(env.step(FIRE)[1] for _ in range(2))
+    assert reward == 13 * t.params.unit and t.shark is not s and t.shark.r == 2
+    s = t.shark
+    s.r, s.c, s.dc = t.row - 1, t.params.width - 1, 1
+    lives = t.lives
+    for _ in range(t.params.swim):
+        env.step(NOOP)
+    assert t.lives == lives - 1 and t.shark.r == 2 and all(x.r == 1 + t.params.reach for x in t.tips)
+
+
+def test_a_tentacle_reaching_the_diver_row_takes_a_life():
+    env, t = sea()
+    for x in t.tips:
+        x.r = t.row - 1
+    lives = t.lives
+    for _ in range(t.params.grow):
+        env.step(NOOP)
+    assert t.lives == lives - 1 and all(x.r == 1 + t.params.reach for x in t.tips)
+
+
+def test_the_boat_line_refills_air_and_running_out_costs_a_life():
+    env, t = sea()
+    p = t.params
+    while not (t.line == t.row - 1):
+        env.step(NOOP)
+    assert ":" in "\n".join(t._grid()) and t.air.left < p.air
+    t.col = t.boat.c
+    env.step(NOOP)
+    assert t.air.left == p.air
+    env, t = sea()
+    t.air.left = 1
+    lives = t.lives
+    env.step(NOOP)
+    assert t.lives == lives - 1 and t.air.left == p.air
