@@ -82,8 +82,11 @@ class NameThisGame(Shooter):
         self.air = Countdown(p.air)
         self.boat = Body(0, self.draws.below(p.width), dc=1, glyph=BOAT)
         self.line = 0                                 # rows of line lowered (0: none)
+        self.layer, self._layer_at = 0, -1            # bumped when tentacles or the line change
         self.line_left = 0                            # turns the lowered line stays
         self.shark = None
+        if "_water" not in self.__dict__:             # _draw_layer's rows under the octopus (kept)
+            self._water: dict[tuple[int, int], str] = {}
         self._start_over()
 
     def _start_over(self) -> None:
@@ -93,6 +96,7 @@ class NameThisGame(Shooter):
         self.pack.bodies.clear()
         self.tips = [self.pack.add(1 + p.reach, self._arm_col(i), ARM, data=i) for i in range(p.arms)]
         self.air.refill()
+        self.layer += 1
         self._new_shark()
 
     def _respawn(self) -> None:
@@ -120,12 +124,14 @@ class NameThisGame(Shooter):
                     self._new_shark()
                 else:
                     foe.r = 1
+                    self.layer += 1
                     self.say("The tentacle pulls back.")
             if self.done:
                 return
         if self.tick % self._pace(p.grow) == 0:
             tip = self.tips[self.draws.below(p.arms)]
             tip.r += 1
+            self.layer += 1
             if tip.r >= self.row:
                 self.lose_life("A tentacle took the treasure.")
                 return
@@ -150,12 +156,14 @@ class NameThisGame(Shooter):
         p, boat = self.params, self.boat
         if self.tick % p.line_every == 0 and not self.line:
             self.line, self.line_left = 1, p.line_stay
+            self.layer += 1
         if not self.line:
             if self.tick % 2 == 0:
                 bounce(boat, 0, p.width - 1)
             return
         if self.line < self.row - 1:
             self.line += 1
+            self.layer += 1
             return
         if self.col == boat.c and self.air.left < p.air:
             self.air.refill()
@@ -163,19 +171,40 @@ class NameThisGame(Shooter):
         self.line_left -= 1
         if self.line_left <= 0:
             self.line = 0
+            self.layer += 1
 
     def _rows(self) -> list[str]:
-        key = (self.line, self.boat.c if self.line else -1, *[t.r for t in self.tips])
-        return self.cached_rows(key, self._draw_layer)
+        if self._layer_at != self.layer:
+            self._layer, self._layer_at = self._draw_layer(), self.layer
+        return self._layer[:]
 
     def _draw_layer(self) -> list[str]:
-        rows = self.still[:]
-        for t in self.tips:
-            for r in range(2, t.r + 1):
-                rows[r] = rows[r][:t.c] + ARM + rows[r][t.c + 1:]
-        c = self.boat.c
-        for r in range(1, self.line + 1):
-            rows[r] = rows[r][:c] + LINE + rows[r][c + 1:]
+        """The tentacles and the line over the still rows: a row under the octopus is water
+        with the tentacles that reach it and the line if it is down that far, made once per
+        (tentacles, line column) and looked up after."""
+        rows, memo = self.still[:], self._water
+        line, c = self.line, self.boat.c
+        ends: dict[int, int] = {}
+        mask = 0
+        for i, t in enumerate(self.tips):
+            if t.r >= 2:
+                mask |= 1 << i
+                ends[t.r] = ends.get(t.r, 0) | 1 << i
+        if line:
+            rows[1] = rows[1][:c] + LINE + rows[1][c + 1:]
+        for r in range(2, max(line, *ends) + 1 if ends else line + 1):
+            key = (mask, c if r <= line else -1)
+            row = memo.get(key)
+            if row is None:
+                cells = list(self.still[2])
+                for i, t in enumerate(self.tips):
+                    if mask >> i & 1:
+                        cells[t.c] = ARM
+                if key[1] >= 0:
+                    cells[c] = LINE
+                row = memo[key] = "".join(cells)
+            rows[r] = row
+            mask &= ~ends.get(r, 0)
         return rows
 
     def _sprites(self):
