@@ -20,7 +20,7 @@ to its tip and off into the drain between them. ``Tilt`` counts nudges in a wind
 
 from __future__ import annotations
 
-from .duel import Ball, deflect
+from .duel import Ball, deflect, velocity_text
 from .engine import EMPTY, ArcadeTask, Tally
 
 WALL, TOP, POST = "|", "-", "#"
@@ -289,13 +289,15 @@ class PinballTask(ArcadeTask):
         return rows
 
     def _extra_hud(self) -> str:
-        tick, tilt = self.tick, self.tilt
+        tick, tilt, b = self.tick, self.tilt, self.ball
         state = "TILT" if tilt.tilted else "Plunger" if self.held else ""
         nudges = tilt.recent(tick) if tilt.times and tick - tilt.times[-1] < tilt.window else 0
-        key = (state, nudges, tilt.limit)
+        key = (state, nudges, tilt.limit, b.dr, b.dc)
         text = HUDS.get(key)
         if text is None:
             parts = [state] if state else []
+            if not self.held:
+                parts.append(velocity_text(b))
             if nudges:
                 parts.append(f"Nudges {nudges}/{tilt.limit}")
             text = HUDS[key] = " | ".join(parts)

@@ -59,14 +59,15 @@ class VideoPinball(PinballTask):
              "third, straight up off the middle, across the table off its tip. On an idle flipper "
              "the ball rolls a cell a turn toward the tip and falls into the drain. The left "
              "outlane (outside the post) and the shooter lane on the right drain too (v marks the "
-             "drains). A drained ball costs a ball ({lives_text}). A new ball waits on the plunger "
+             "drains). A drained ball is lost (you have {lives_text}). A new ball waits on the plunger "
              "at the foot of the shooter lane until you act or {autolaunch} turns pass. Bumpers "
              "(O) kick the ball away; drop targets (T, a bank of {targets}) fall when struck and "
              "stand again once all are down; spinners (S) and rollovers (R, lit r) score as the "
              "ball passes. Lighting every rollover earns an extra ball (at most {balls} held). "
              "NUDGE reverses a flying ball's sideways motion (a ball falling straight is shoved "
              "toward its side); more than {nudges} nudges within {window} turns TILT the table: "
-             "the flippers go dead and nothing scores until the ball drains.")
+             "the flippers go dead and nothing scores until the ball drains. The HUD's Ball v gives the "
+             "ball's velocity (rows, columns a turn; down and right are +).")
     rewards = ("+{bumper} for a bumper, a drop target, a spinner or a rollover; +{bank} for a whole "
                "bank of drop targets down (each of these is a scoring event).")
     ends = "after {goal} scoring events or when the last ball drains"
@@ -81,7 +82,9 @@ class VideoPinball(PinballTask):
 
     def prompt_fields(self) -> dict:
         u = self.params.unit
-        return {**super().prompt_fields(), "bumper": f"{VALUES[BUMPER] * u:g}",
+        n = self.params.lives
+        return {**super().prompt_fields(), "lives_text": "one ball" if n == 1 else f"{n} balls",
+                "bumper": f"{VALUES[BUMPER] * u:g}",
                 "bank": f"{VALUES['bank'] * u:g}"}
 
     def _still(self) -> list[str]:
