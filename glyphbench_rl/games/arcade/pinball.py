@@ -11,11 +11,14 @@ resting on them up at an angle by the part struck; an idle flipper lets the ball
 to its tip and off into the drain between them. ``Tilt`` counts nudges in a window::
 
     class Pinball(PinballTask):
-        def _table(self): ...                    # the still rows, from the parameters
+        values = {BUMPER: 1, TARGET: 1, SPINNER: 1, ROLL: 1, "bank": 10}   # units per event
+        def _still(self): ...                    # the table's rows, from the parameters
+        def _flippers(self): ...                 # [left, right]
+        def _setup(self, rng): self.open_table(rng)
         def _play(self, action):
             self.flip(left=action == 1, right=action == 2)
             if action == 3: self.nudge()
-            self.roll()                          # one ball step: scores, drains, lives
+            self.roll(action != 0)               # one ball step: plunger, scores, drains, lives
 """
 
 from __future__ import annotations
@@ -105,7 +108,7 @@ class Tilt:
 
 
 class PinballTask(ArcadeTask):
-    """A pinball table: ``_table()`` gives the still rows (walls, rails, bumpers, targets,
+    """A pinball table: ``_still()`` gives the rows (walls, rails, bumpers, targets,
     spinners, rollovers, drains, the flipper row's cells empty); the game's ``values`` say
     what each scores (units of ``unit``: bumper, target, bank, spinner, rollover). Params the
     engine reads: ``kick`` (lift off a flipper or the plunger), ``bump`` (off a bumper),
