@@ -20,6 +20,9 @@ Engine-level modules, which the games import (and nothing else of the family):
   a view following the player around a wrapping world);
 - ``duel``: paddle, ball and sports duels (``Ball`` with reflecting walls, paddle-third
   ``deflect``, ``serve``, the scripted ``pursue``, ``Possession``, tennis-style ``Match``);
+- ``pinball``: pinball tables (``PinballTask``: a ball under gravity, flippers that swing it up
+  by the part struck, bumpers, drop-target banks, spinners, rollovers, rails, drains, a plunger,
+  the nudge and the tilt) and ``Points``, a score of events worth different native points;
 - ``arena``: free-roam shooters (``ArenaTask``: facing fire with a reach, chasers that slide
   around walls, drifting foes, foe shells, wrap-around fields, an air or fuel countdown,
   reinforcements).
@@ -57,6 +60,7 @@ from . import icehockey  # noqa: F401
 from . import kangaroo  # noqa: F401
 from . import kungfumaster  # noqa: F401
 from . import mspacman  # noqa: F401
+from . import namethisgame  # noqa: F401
 from . import phoenix  # noqa: F401
 from . import pong  # noqa: F401
 from . import qbert  # noqa: F401
@@ -70,6 +74,7 @@ from . import surround  # noqa: F401
 from . import tennis  # noqa: F401
 from . import timepilot  # noqa: F401
 from . import upndown  # noqa: F401
+from . import videopinball  # noqa: F401
 from . import wizardofwor  # noqa: F401
 from . import yarsrevenge  # noqa: F401
 from . import zaxxon  # noqa: F401
