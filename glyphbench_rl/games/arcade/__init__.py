@@ -48,6 +48,7 @@ from . import fishingderby  # noqa: F401
 from . import freeway  # noqa: F401
 from . import frostbite  # noqa: F401
 from . import gopher  # noqa: F401
+from . import gravitar  # noqa: F401
 from . import icehockey  # noqa: F401
 from . import kangaroo  # noqa: F401
 from . import kungfumaster  # noqa: F401
