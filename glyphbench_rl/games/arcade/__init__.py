@@ -22,7 +22,9 @@ Engine-level modules, which the games import (and nothing else of the family):
   ``deflect``, ``serve``, the scripted ``pursue``, ``Possession``, tennis-style ``Match``);
 - ``arena``: free-roam shooters (``ArenaTask``: facing fire with a reach, chasers that slide
   around walls, drifting foes, foe shells, wrap-around fields, an air or fuel countdown,
-  reinforcements).
+  reinforcements);
+- ``sectors``: space games flown over a map of places to enter (a ship that keeps its velocity
+  under gravity, rotate-and-thrust ``FlightTask``, ``Sectors`` with the HUD's chart).
 """
 
 from . import alien  # noqa: F401
@@ -60,6 +62,7 @@ from . import riverraid  # noqa: F401
 from . import robotank  # noqa: F401
 from . import seaquest  # noqa: F401
 from . import skiing  # noqa: F401
+from . import solaris  # noqa: F401
 from . import spaceinvaders  # noqa: F401
 from . import stargunner  # noqa: F401
 from . import surround  # noqa: F401

@@ -118,7 +118,7 @@ class Gravitar(FlightTask):
         self.start_flight(rng, p.height - 2, p.width // 2, power=POWER)
         self.system = self.still
         self.sectors = Sectors(["#####"])
-        self.sectors.map.enter(0, 0)
+        self.sectors.go((0, 0))
         self.ground = {}
         for k in range(4):
             rows, spots, ground = self._surface(k)
@@ -138,7 +138,7 @@ class Gravitar(FlightTask):
         else:
             self.still, self.foes = self.sectors.held[(0, planet + 1)]
         self.still_version += 1
-        self.sectors.map.enter(0, 0 if planet is None else planet + 1)
+        self.sectors.go((0, 0 if planet is None else planet + 1))
         self.home = (r, c) if planet is not None else (self.params.height - 2, self.params.width // 2)
         self.r, self.c = r, c
         self.ship.place(r, c)

@@ -168,21 +168,41 @@ class FlightTask(ArenaTask):
 
 
 class Sectors:
-    """The places of a map: ``layout`` rows (``#`` a place) for the HUD's ``RoomMap``, and what
-    each place holds (``held``: place -> anything, None when nothing)."""
-    __slots__ = ("map", "held", "order")
+    """The places of a map (``layout`` rows, ``#`` a place) and what each holds (``held``: place
+    -> anything), with the ``RoomMap`` of those visited. ``chart(mark)`` is the HUD's picture of
+    every place, ``mark(place)`` giving its character (``@`` for where you are), made again only
+    after ``changed()``."""
+    __slots__ = ("map", "held", "order", "_chart")
 
     def __init__(self, layout) -> None:
         self.map = RoomMap(layout)
         self.order = sorted(self.map.rooms)
         self.held: dict = {p: None for p in self.order}
+        self._chart: str | None = None
+
+    def changed(self) -> None:
+        self._chart = None
+
+    def go(self, place) -> bool:
+        """Move to ``place``; True on a first visit."""
+        self._chart = None
+        return self.map.enter(*place)
+
+    def chart(self, mark) -> str:
+        if self._chart is None:
+            m = self.map
+            self._chart = "Chart " + "/".join(
+                "".join("@" if (r, c) == m.here else mark((r, c)) if (r, c) in m.rooms else " "
+                        for c in range(m.width)) for r in range(m.height))
+        return self._chart
 
     def after(self, here, wanted) -> tuple[int, int] | None:
-        """The next place in reading order after ``here`` (wrapping) for which ``wanted(held)``."""
+        """The next place in reading order after ``here`` (wrapping, ``here`` last) for which
+        ``wanted(place)``."""
         i = self.order.index(here) if here in self.map.rooms else -1
         n = len(self.order)
         for k in range(1, n + 1):
             place = self.order[(i + k) % n]
-            if wanted(self.held[place]):
+            if wanted(place):
                 return place
         return None

@@ -3,6 +3,8 @@ scripted policy that scores and reaches a new place, a loss path, and the signat
 
 from __future__ import annotations
 
+import copy
+
 import pytest
 
 from glyphbench_rl import make
@@ -150,3 +152,100 @@ def test_gravitar_last_bunker_destroys_the_planet():
     assert env.planet is None and env.score.done == env.params.bunkers
     pr, pc = env._planets()[2]
     assert env.still[pr][pc] == "x"
+
+
+# -- solaris ----------------------------------------------------------------------------------------
+SOLARIS = "glyphbench/atari-solaris-v0"
+UP, DOWN, S_LEFT, S_RIGHT, S_FIRE, WARP = 1, 2, 3, 4, 5, 6
+STEPS = {(-1, 0): UP, (1, 0): DOWN, (0, -1): S_LEFT, (0, 1): S_RIGHT}
+
+
+def hunter(env):
+    """Face a foe in line and fire; else line up on the nearest foe's short axis."""
+    best = None
+    for f in env.foes:
+        dr, dc = f.r - env.r, f.c - env.c
+        if (dr == 0 or dc == 0) and abs(dr) + abs(dc) <= env.params.reach:
+            d = ((dr > 0) - (dr < 0), (dc > 0) - (dc < 0))
+            return S_FIRE if env.face == d else STEPS[d]
+        key = (min(abs(dr), abs(dc)), abs(dr) + abs(dc))
+        if best is None or key < best[0]:
+            best = (key, dr, dc)
+    if best is None:
+        return NOOP
+    _, dr, dc = best
+    if dr and abs(dr) <= abs(dc) or not dc:    # close the short axis, or the gap in line
+        return STEPS[((dr > 0) - (dr < 0), 0)]
+    return STEPS[(0, (dc > 0) - (dc < 0))]
+
+
+def safe(env, action: int) -> bool:
+    """Whether ``action`` then a turn of waiting keeps the ship (a two-turn look ahead)."""
+    memo = {id(getattr(env, k)): getattr(env, k) for k in ("_drawn", "_legends", "_layers")}   # caches
+    e = copy.deepcopy(env, memo)
+    lives = e.lives
+    e.step(action)
+    if not e.done:
+        e.step(NOOP)
+    return e.lives == lives and not (e.done and not e.won)
+
+
+def solaris_policy(env):
+    if env.foes:
+        act = hunter(env)
+        if env.shells.shots or min(abs(f.r - env.r) + abs(f.c - env.c) for f in env.foes) <= 4:
+            for a in (act, S_FIRE, UP, DOWN, S_LEFT, S_RIGHT, NOOP):
+                if safe(env, a):
+                    return a
+        return act
+    if env.air.left < 400 and env.planets.get(env.place):
+        h, w = env.params.height // 2, env.params.width // 2
+        return STEPS[((h > env.r) - (h < env.r), 0)] if env.r != h else STEPS[(0, (w > env.c) - (w < env.c))]
+    return WARP
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_solaris_policy_warps_to_fleets_and_shoots_fighters(seed):
+    env, _ = play(SOLARIS, solaris_policy, seed, turns=250)
+    assert len(env.sectors.map.visited) >= 3
+    assert env.score.done >= 8 and env.episode_return >= 8 * env.params.unit
+
+
+def test_solaris_fleet_in_your_sector_is_fought_until_destroyed():
+    env = make(SOLARIS)
+    env.reset(seed=2)
+    fleet = next(q for q, n in env.sectors.held.items() if n)
+    env._enter_sector(fleet)
+    assert len(env.foes) == env.params.foes
+    n = env.params.fleet
+    for k in range(n):
+        env._hit(env.foes[0])
+    assert env.sectors.held[fleet] is None and not env.foes and env.score.done == n
+    assert env.sectors.chart(env._mark).count("@") == 1
+
+
+def test_solaris_fleets_advance_on_planets_and_cost_ships():
+    env = make(SOLARIS, advance=10)
+    env.reset(seed=0)
+    said = []
+    while not env.done and all(env.planets.values()):
+        _, _, _, _, info = env.step(NOOP)
+        said.append(info["frame"].message)
+    assert "A Zylon fleet destroyed a federation planet." in " ".join(said)
+    lost = next(q for q, up in env.planets.items() if not up)
+    assert env._mark(lost) == ("x" if not env.sectors.held[lost] else str(env.sectors.held[lost]))
+    env, _ = play(SOLARIS, lambda e: NOOP if e.foes else WARP, 0)
+    assert env.done and not env.won and env.episode_return < 0
+
+
+def test_solaris_planet_refuels_and_warp_costs_fuel():
+    env = make(SOLARIS)
+    env.reset(seed=0)
+    fuel = env.air.left
+    env.step(WARP)
+    assert env.air.left == fuel - env.params.jump
+    env._enter_sector(next(q for q, up in env.planets.items() if up))
+    env.air.left = 100
+    env.r, env.c = env.params.height // 2 + 1, env.params.width // 2
+    env.step(UP)
+    assert env.air.left == env.params.air - 1           # refuelled, then this turn's unit
