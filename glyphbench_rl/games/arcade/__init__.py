@@ -53,6 +53,7 @@ from . import gopher  # noqa: F401
 from . import gravitar  # noqa: F401
 from . import icehockey  # noqa: F401
 from . import kangaroo  # noqa: F401
+from . import krull  # noqa: F401
 from . import kungfumaster  # noqa: F401
 from . import mspacman  # noqa: F401
 from . import phoenix  # noqa: F401

@@ -249,3 +249,121 @@ def test_solaris_planet_refuels_and_warp_costs_fuel():
     env.r, env.c = env.params.height // 2 + 1, env.params.width // 2
     env.step(UP)
     assert env.air.left == env.params.air - 1           # refuelled, then this turn's unit
+
+
+# -- krull ------------------------------------------------------------------------------------------
+KRULL = "glyphbench/atari-krull-v0"
+MOVE = {UP: (-1, 0), DOWN: (1, 0), S_LEFT: (0, -1), S_RIGHT: (0, 1)}
+
+
+def route(env, goal) -> int:
+    """The first move of a shortest way to ``goal`` (leaps on the desert, steps elsewhere)."""
+    start = (env.r, env.c)
+    seen, todo = {start: None}, [start]
+    for at in todo:
+        if at == goal:
+            break
+        for a, d in MOVE.items():
+            q = env._landing(at, d) if env.stage == 1 else (at[0] + d[0], at[1] + d[1])
+            if q in seen or q is None or not (0 <= q[0] < env.params.height and 0 <= q[1] < env.params.width):
+                continue
+            ch = env.still[q[0]][q[1]]
+            if ch == "~" or (ch in env.SOLID and q != goal) or env.foe_at(*q):
+                continue
+            seen[q] = (at, a)
+            todo.append(q)
+    at, act = goal, NOOP
+    while seen.get(at) is not None:
+        at, act = seen[at]
+    return act
+
+
+def krull_policy(env):
+    if env.stage == 1:
+        door = next((r, c) for r, row in enumerate(env.still) for c, ch in enumerate(row) if ch == "D")
+        return route(env, door)
+    if env.stage == 0:
+        act = hunter(env) if env.back is None else NOOP
+    else:
+        beast = env.foes[0]
+        act = route(env, env.lyssa)
+        dr, dc = beast.r - env.r, beast.c - env.c
+        if env.back is None and env.tick >= env.stunned and (dr == 0 or dc == 0) and abs(dr) + abs(dc) <= env.params.reach:
+            d = ((dr > 0) - (dr < 0), (dc > 0) - (dc < 0))
+            act = S_FIRE if env.face == d else STEPS[d]
+    for a in (act, NOOP, UP, DOWN, S_LEFT, S_RIGHT):
+        if safe(env, a):
+            return a
+    return act
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_krull_policy_goes_through_the_stages(seed):
+    env, _ = play(KRULL, krull_policy, seed)
+    assert env.stages.visited >= {(0, 0), (0, 1), (0, 2)}
+    assert env.score.done >= 2 and env.episode_return >= 2 * env.params.unit
+
+
+def krull_at(stage: int, seed: int = 0):
+    env = make(KRULL)
+    env.reset(seed=seed)
+    env.kills = env.params.slayers if stage else 0
+    env._stage(stage)
+    return env
+
+
+def test_krull_glaive_flies_back_and_cuts_down_slayers_on_the_way():
+    env = krull_at(0)
+    env.foes = []
+    env.step(S_FIRE)
+    while env.back is None:
+        env.step(NOOP)
+    assert env.gun.shots == [] and env.back is not None
+    env.step(S_FIRE)
+    assert env.gun.shots == []                         # one glaive: not back yet
+    g = env.back
+    env.add_foe(g.r + 1, g.c)
+    kills = env.kills
+    env.step(NOOP)
+    assert env.kills == kills + 1
+    for _ in range(5):
+        env.step(NOOP)
+    assert env.back is None and env.gun.shots == []
+
+
+def test_krull_slayer_carries_lyssa_off_and_waiting_loses_the_game():
+    env = krull_at(0)
+    lr, lc = env.lyssa
+    env.foes = []
+    env.add_foe(0, 0)
+    env.add_foe(lr - 1, lc)                           # the second Slayer goes for Lyssa
+    said = []
+    while env.lives == env.params.lives:
+        _, _, _, _, info = env.step(NOOP)
+        said.append(info["frame"].message)
+    assert "A Slayer carried Lyssa off." in said[-1]
+    env, _ = play(KRULL, lambda e: NOOP, 0)
+    assert env.done and not env.won and env.lives == 0 and env.episode_return == env.params.death
+
+
+def test_krull_fire_mares_leap_over_swamp_and_swamp_drowns():
+    env = krull_at(1)
+    r, c = env.r, env.c
+    env.still[r] = "." + "~" + "." + "~" * (env.params.width - 3)
+    env.step(S_RIGHT)
+    assert (env.r, env.c) == (r, c + 2) and env.lives == env.params.lives
+    env.step(S_RIGHT)
+    assert env.lives == env.params.lives - 1 and (env.r, env.c) == env.home
+
+
+def test_krull_glaive_stuns_the_beast():
+    env = krull_at(2)
+    beast = env.foes[0]
+    env.r, env.c, env.face = beast.r, beast.c - 3, (0, 1)
+    env.step(S_FIRE)
+    env.step(NOOP)
+    assert env.stunned > env.tick
+    at = (beast.r, beast.c)
+    for _ in range(env.params.stun - 2):
+        env.step(NOOP)
+    assert (beast.r, beast.c) == at and beast in env.foes
