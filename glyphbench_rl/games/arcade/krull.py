@@ -14,6 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ...core.params import param
+from ..common.grid import DELTAS, bfs_search
 from .arena import EMPTY, SHOT, WALL, ArenaParams, ArenaTask, you_glyphs
 from .bodies import Body, Gun, chase
 from .engine import register_atari
@@ -143,17 +144,12 @@ class Krull(ArenaTask):
         return rows, start
 
     def _leaps(self, rows, start, door) -> bool:
-        seen, todo = {start}, [start]
-        while todo:
-            at = todo.pop()
-            if at == door:
-                return True
-            for d in ((-1, 0), (1, 0), (0, -1), (0, 1)):
+        def leaps(at):
+            for d in DELTAS:
                 q = self._landing(at, d)
-                if q not in seen and rows[q[0]][q[1]] != SWAMP:
-                    seen.add(q)
-                    todo.append(q)
-        return False
+                if rows[q[0]][q[1]] != SWAMP:
+                    yield d, q
+        return bfs_search(start, leaps, lambda q: q == door, limit=4000) is not None
 
     def _landing(self, at, d):
         p = self.params
