@@ -54,8 +54,8 @@ class Gravitar(FlightTask):
              "in space; flying off the top of a surface also takes you back, and its sides wrap "
              "around. Fuel ({air} at the start) burns a unit a turn and {burn} more for each "
              "THRUST; hover one or two cells straight above a fuel tank (F) and your tractor beam "
-             "takes it for {tank} fuel. Losing a ship puts you back at the home base (or the top "
-             "of the surface you are on). {map_text}.")
+             "takes it for {tank} fuel. Losing a ship puts you back at the home base (or where you "
+             "came down on the surface you are on). {map_text}.")
     rewards = "+{unit} for each bunker destroyed."
     ends = "when every bunker is destroyed ({goal}), the fuel runs out, or your last ship is lost"
     Params = GravitarParams
@@ -119,12 +119,15 @@ class Gravitar(FlightTask):
         self.system = self.still
         self.sectors = Sectors(["#####"])
         self.sectors.go((0, 0))
-        self.ground = {}
+        self.ground, self.entry = {}, {}
         for k in range(4):
             rows, spots, ground = self._surface(k)
             foes = [self._bunker(r, c) for r, c in spots]
             self.sectors.held[(0, k + 1)] = (rows, foes)
             self.ground[k] = ground
+            # you come down (and back after a loss) at the column farthest from the bunkers
+            self.entry[k] = max(range(p.width), key=lambda c: (min(abs(c - b) for _, b in spots),
+                                                               -abs(c - p.width // 2)))
         self.planet = None
 
     def _bunker(self, r, c):
@@ -157,7 +160,7 @@ class Gravitar(FlightTask):
         ch = self.still[r][c]
         if self.planet is None and ch in PLANETS:
             self.say(f"You descend to planet {ch}.")
-            self._go(int(ch) - 1, 1, self.params.width // 2)
+            self._go(int(ch) - 1, 1, self.entry[int(ch) - 1])
             return True
         return False
 
