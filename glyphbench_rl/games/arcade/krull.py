@@ -55,14 +55,15 @@ class Krull(ArenaTask):
              "{width}x{height} screen. 1) The wedding: Slayers (S) step a cell every {every} "
              "turns, some toward you and some toward Princess Lyssa (L); a Slayer that reaches "
              "you kills you, one that reaches Lyssa carries her off and costs you a life. FIRE "
-             "throws your glaive (*) {reach} cells the way you face; it flies back to you and "
-             "cuts down every Slayer it meets, out and back; you cannot throw it again until it "
-             "is back. Cut down {slayers} Slayers. 2) The Iron Desert: the Fire Mares carry you "
+             "throws your glaive (*) up to {reach} cells the way you face, cutting down the first "
+             "Slayer it meets; then it flies back to you through anything, 2 cells a turn, cutting "
+             "down every Slayer on its way; you cannot throw it again until it is back. Cut down {slayers} Slayers. 2) The Iron Desert: the Fire Mares carry you "
              "in leaps of two cells a move (over anything; one cell at the screen's edge); "
-             "landing in swamp (~) drowns you. Reach the Black Fortress's door (D). 3) The "
+             "landing in swamp (~) drowns you; you cannot throw the glaive while you ride. Reach the Black Fortress's door (D). 3) The "
              "Black Fortress: walls (#) block you; the Beast (B) steps toward you every {every} "
              "turns and kills you if it reaches you; the glaive stuns it for {stun} turns. Reach "
-             "Lyssa (L). A life lost restarts the stage. {map_text}.")
+             "Lyssa (L). A life lost puts you back at the start of the stage (Slayers cut down "
+             "stay down). {map_text}.")
     rewards = "+{unit} for each stage done; {death} when the game is lost."
     ends = "when Lyssa is saved or the game is lost"
     Params = KrullParams
