@@ -160,8 +160,8 @@ class FlightTask(ArenaTask):
         self.ship.place(*self.home)
 
     def _extra_hud(self) -> str:
-        ship = self.ship
-        return f"Fuel {self.air.left} | Head {COMPASS[ship.head]} | {ship.speed_text()}{self._place_hud()}"
+        ship = self.ship       # (the text of ``Ship.speed_text`` written out: this runs every turn)
+        return f"Fuel {self.air.left} | Head {COMPASS[ship.head]} | Vel {ship.vy:+d},{ship.vx:+d}{self._place_hud()}"
 
     def _place_hud(self) -> str:
         return ""

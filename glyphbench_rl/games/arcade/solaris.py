@@ -72,7 +72,8 @@ class Solaris(ArenaTask):
 
     def prompt_fields(self) -> dict:
         return {**super().prompt_fields(),
-                "edge_text": " that wraps around at its edges" if self.params.wrap else ""}
+                "edge_text": " that wraps around at its edges," if self.params.wrap else "",
+                "turn_text": " A move into a fighter only turns you to face it."}
 
     def _setup(self, rng) -> None:
         p = self.params
