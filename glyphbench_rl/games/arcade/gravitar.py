@@ -123,16 +123,14 @@ class Gravitar(FlightTask):
         self.ground, self.entry = {}, {}
         for k in range(4):
             rows, spots, ground = self._surface(k)
-            foes = [self._bunker(r, c) for r, c in spots]
+            foes = [Body(r, c, 0, 0, BUNKER, p.hp) for r, c in spots]
             self.sectors.held[(0, k + 1)] = (rows, foes)
             self.ground[k] = ground
             # you come down (and back after a loss) at the column farthest from the bunkers
-            self.entry[k] = max(range(p.width), key=lambda c: (min(abs(c - b) for _, b in spots),
-                                                               -abs(c - p.width // 2)))
+            w = p.width
+            self.entry[k] = max(range(w), key=lambda c: (min(min(abs(c - b), w - abs(c - b)) for _, b in spots),
+                                                         -abs(c - w // 2)))
         self.planet = None
-
-    def _bunker(self, r, c):
-        return Body(r, c, 0, 0, BUNKER, self.params.hp)
 
     def _go(self, planet: int | None, r: int, c: int) -> None:
         """Fly to planet ``planet``'s surface (None: the system) at (r, c), at rest."""
