@@ -396,3 +396,16 @@ def test_krull_glaive_stuns_the_beast():
     for _ in range(env.params.stun - 2):
         env.step(NOOP)
     assert (beast.r, beast.c) == at and beast in env.foes
+
+
+def test_gravitar_bunker_fires_up_its_column():
+    env = make(GRAVITAR)
+    env.reset(seed=0)
+    env._go(0, 1, 0)
+    f = env.foes[0]
+    env._go(0, f.r - 6, f.c)
+    fired = False
+    for _ in range(env.params.volley + 1):
+        env.step(NOOP)
+        fired = fired or any(s.c == f.c and s.r < f.r for s in env.shells.shots)
+    assert fired
