@@ -63,10 +63,6 @@ class Ship:
         self.vy = max(-SCALE, min(SCALE, self.vy + ay))
         self.vx = max(-SCALE, min(SCALE, self.vx + ax))
 
-    def speed_text(self) -> str:
-        """The drift, as cells a turn in quarters: rows (+ down), columns (+ right)."""
-        return f"Vel {self.vy:+d},{self.vx:+d}"
-
 
 class FlightTask(ArenaTask):
     ACTIONS = FLIGHT
@@ -160,7 +156,7 @@ class FlightTask(ArenaTask):
         self.ship.place(*self.home)
 
     def _extra_hud(self) -> str:
-        ship = self.ship       # (the text of ``Ship.speed_text`` written out: this runs every turn)
+        ship = self.ship       # (its velocity in quarter cells a turn: rows + down, columns + right)
         return f"Fuel {self.air.left} | Head {COMPASS[ship.head]} | Vel {ship.vy:+d},{ship.vx:+d}{self._place_hud()}"
 
     def _place_hud(self) -> str:
