@@ -25,10 +25,13 @@ Engine-level modules, which the games import (and nothing else of the family):
   the nudge and the tilt) and ``Points``, a score of events worth different native points;
 - ``arena``: free-roam shooters (``ArenaTask``: facing fire with a reach, chasers that slide
   around walls, drifting foes, foe shells, wrap-around fields, an air or fuel countdown,
-  reinforcements).
+  reinforcements);
 - ``climbing``: vertical worlds seen a screen or a window at a time (``Tower``, ``ClimbTask``:
   a mine shaft's screens with a ``RoomMap``, a facade that scrolls), native points beside the
-  tally (``Purse``), falling objects, a pack against gravity, critters that pace or climb.
+  tally (``Purse``), falling objects, a pack against gravity, critters that pace or climb;
+- ``sectors``: space games flown over a map of places to enter (a ship that keeps its velocity
+  under gravity, rotate-and-thrust ``FlightTask``, ``Sectors`` with the HUD's chart);
+- ``rooms``: ``RoomMap``, the HUD's map of a many-room world's rooms, visited or not.
 """
 
 from . import alien  # noqa: F401
@@ -55,9 +58,11 @@ from . import fishingderby  # noqa: F401
 from . import freeway  # noqa: F401
 from . import frostbite  # noqa: F401
 from . import gopher  # noqa: F401
+from . import gravitar  # noqa: F401
 from . import hero  # noqa: F401
 from . import icehockey  # noqa: F401
 from . import kangaroo  # noqa: F401
+from . import krull  # noqa: F401
 from . import kungfumaster  # noqa: F401
 from . import mspacman  # noqa: F401
 from . import namethisgame  # noqa: F401
@@ -68,6 +73,7 @@ from . import riverraid  # noqa: F401
 from . import robotank  # noqa: F401
 from . import seaquest  # noqa: F401
 from . import skiing  # noqa: F401
+from . import solaris  # noqa: F401
 from . import spaceinvaders  # noqa: F401
 from . import stargunner  # noqa: F401
 from . import surround  # noqa: F401
