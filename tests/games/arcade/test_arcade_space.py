@@ -210,7 +210,7 @@ def hunter(env):
 
 def safe(env, action: int) -> bool:
     """Whether ``action`` then a turn of waiting keeps the ship (a two-turn look ahead)."""
-    memo = {id(getattr(env, k)): getattr(env, k) for k in ("_drawn", "_legends", "_layers")}   # caches
+    memo = {id(getattr(env, k)): getattr(env, k) for k in ("_drawn", "_layers")}   # caches
     e = copy.deepcopy(env, memo)
     lives = e.lives
     e.step(action)
