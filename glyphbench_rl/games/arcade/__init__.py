@@ -56,6 +56,7 @@ from . import phoenix  # noqa: F401
 from . import pong  # noqa: F401
 from . import qbert  # noqa: F401
 from . import riverraid  # noqa: F401
+from . import roadrunner  # noqa: F401
 from . import robotank  # noqa: F401
 from . import seaquest  # noqa: F401
 from . import skiing  # noqa: F401

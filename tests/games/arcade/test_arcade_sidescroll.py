@@ -1,0 +1,128 @@
+"""The side-scrolling games on a course longer than the screen (sidescroll.Course, Leap): James
+Bond 007, Road Runner and Private Eye; per game a scripted policy that scores and gets on, a
+loss path, and the game's signature mechanics."""
+
+from __future__ import annotations
+
+import pytest
+
+from glyphbench_rl import make
+from glyphbench_rl.games.arcade.sidescroll import Course, Leap, lay, readout
+from arcade_play import play
+
+SEEDS = (0, 5)
+
+
+@pytest.mark.parametrize("game", ["roadrunner"])
+def test_registered_on_the_atari_suite_only(game):
+    from glyphbench_rl.core.registry import get_spec
+    spec = get_spec(f"glyphbench/atari-{game}-v0")
+    assert (spec.suite, spec.tier) == ("Atari", "extended") and spec.max_turns >= 5000
+    env = make(spec.id)
+    env.reset(seed=0)
+    assert env.params.lives >= 3 and env.pattern == "D"
+
+
+# -- the engine -----------------------------------------------------------------------------------
+def test_course_view_follows_and_mirrors():
+    cells = lay(("a", "b"), 10)
+    cells[0][7] = "X"
+    fwd = Course(cells, 4)
+    fwd.follow(6, lead=2)                       # x at view column 1, two columns ahead of it
+    assert fwd.left == 5 and fwd.view() == ["aaXa", "bbbb"] and fwd.screen(6) == 1
+    assert fwd.screen(2) == -1 and fwd.find(0, 3, "X", 5) == 7 and fwd.find(0, 3, "X", 4) == -1
+    fwd.follow(99, lead=2)
+    assert fwd.left == 6                        # stops at the course's end
+    back = Course(cells, 4, backward=True)
+    back.follow(6, lead=2)
+    assert back.view() == ["aXaa", "bbbb"] and back.screen(6) == 2 and back.screen(7) == 1
+    back.put(0, 8, "Y")
+    assert back.view()[0] == "YXaa" and back.get(0, 8) == "Y" and back.get(5, 0) == ""
+    with pytest.raises(ValueError):
+        Course(lay(("a",), 3), 4)
+    assert readout("Road", 3, 10) == "Road 3/10"
+
+
+def test_leap_lifts_along_its_arc_only_from_the_ground():
+    leap = Leap((1, 2, 1))
+    assert leap.lift(0) == 0 and leap.start(5)
+    assert [leap.lift(t) for t in range(5, 9)] == [1, 2, 1, 0]
+    assert not leap.start(6) and leap.start(8)
+    leap.land()
+    assert leap.lift(8) == 0
+
+
+# -- Road Runner ----------------------------------------------------------------------------------
+RR = "glyphbench/atari-roadrunner-v0"
+
+
+def runner_policy(env):
+    """Run left, steer to the nearest seed ahead, step out of a truck's lane."""
+    course, lane, d = env.course, env.lane, env.d
+    lanes = env.params.height - 2
+    danger = {t.r for t in env.trucks if 0 <= t.c - d <= 4} | {r.r for r in env.falling if 0 <= r.c - d <= 2}
+    if lane in danger:
+        for step, act in ((-1, "UP"), (1, "DOWN")):
+            if 1 <= lane + step <= lanes and lane + step not in danger:
+                return act
+    best = None
+    for x in range(d + 1, d + 8):
+        for r in range(1, lanes + 1):
+            if course.get(r, x) == ":" and (best is None or abs(r - lane) < abs(best - lane)):
+                best = r
+        if best is not None:
+            break
+    if best is not None and best != lane and (lane + (1 if best > lane else -1)) not in danger:
+        return "DOWN" if best > lane else "UP"
+    return "LEFT"
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_roadrunner_scripted_runner_eats_seed_and_reaches_the_next_level(seed):
+    env, _ = play(RR, runner_policy, seed, turns=600)
+    assert env.score.done >= 10 and env.score.points >= 1000
+    assert env.level >= 2
+
+
+def test_roadrunner_standing_still_the_coyote_catches_you():
+    env, info = play(RR, lambda e: "NOOP", 0, turns=2000)
+    assert env.done and env.lives == 0 and (env.cl, env.cd) == (env.lane, env.d)
+
+
+def test_roadrunner_missing_seeds_in_a_row_makes_you_faint():
+    env = make(RR)
+    env.reset(seed=1)
+    env.out = 10 ** 9                           # keep the Coyote away
+    lives = env.lives
+    for x, lane in env.seeds[:6]:               # every early pile in the lane you are not in
+        env.course.put(lane, x, ".")
+        env.course.put(1, x, ":")
+    env.lane = env.params.height - 2
+    env.seeds = [(x, 1) for x, _ in env.seeds]
+    for _ in range(200):
+        env.step("LEFT")
+        if env.lives < lives:
+            break
+    assert env.lives == lives - 1 and env.misses == 0
+
+
+def test_roadrunner_truck_and_mine_knock_out_the_coyote():
+    env = make(RR)
+    env.reset(seed=2)
+    from glyphbench_rl.games.arcade.bodies import Body
+    env.cd, env.cl, env.lane = env.d - 5, 1, 1     # the truck behind you, coming at him
+    env.trucks = [Body(1, env.cd + 2)]
+    before = env.score.done
+    env.step("NOOP")
+    env.step("NOOP")
+    assert env.score.done == before + 1 and env.tick < env.out
+    env.out = 0
+    env.cd, env.cl = env.d - 8, env.lane
+    for x in range(env.cd + 1, env.cd + 4):     # his own mines between him and you
+        env.course.put(env.lane, x, "x")
+    for _ in range(10):
+        env.trucks = []
+        env.step("NOOP")
+        if env.score.done > before + 1:
+            break
+    assert env.score.done == before + 2 and env.tick < env.out and env.lives == env.params.lives
