@@ -49,6 +49,7 @@ from . import freeway  # noqa: F401
 from . import frostbite  # noqa: F401
 from . import gopher  # noqa: F401
 from . import icehockey  # noqa: F401
+from . import jamesbond  # noqa: F401
 from . import kangaroo  # noqa: F401
 from . import kungfumaster  # noqa: F401
 from . import mspacman  # noqa: F401

@@ -13,7 +13,7 @@ from arcade_play import play
 SEEDS = (0, 5)
 
 
-@pytest.mark.parametrize("game", ["roadrunner"])
+@pytest.mark.parametrize("game", ["jamesbond", "roadrunner"])
 def test_registered_on_the_atari_suite_only(game):
     from glyphbench_rl.core.registry import get_spec
     spec = get_spec(f"glyphbench/atari-{game}-v0")
@@ -126,3 +126,134 @@ def test_roadrunner_truck_and_mine_knock_out_the_coyote():
         if env.score.done > before + 1:
             break
     assert env.score.done == before + 2 and env.tick < env.out and env.lives == env.params.lives
+
+
+# -- James Bond 007 -------------------------------------------------------------------------------
+JB = "glyphbench/atari-jamesbond-v0"
+
+
+def bond_policy(env):
+    """Drive right; jump craters, shoot frogmen low and helicopters with flares, wait out bombs
+    and marked laser columns, shoot the mission target."""
+    course, x, t = env.course, env.x, env.tick + 1     # (the turn about to be played)
+    lift = env.leap.lift(t)
+    if course.get(5, x + 1) == "X" or course.get(5, x + 2) == "X":
+        return "DOWN"
+    if any(0 <= f.c - x <= 4 for f in env.frogs) and env.lows.ready_at(t) and not lift:
+        return "DOWN"
+    if lift:
+        return "RIGHT"                                   # (never stop over a crater)
+    if env.aim >= 0 and env.aim == x:
+        return "RIGHT" if course.get(6, x + 1) == "#" else "LEFT"
+    if env.aim >= 0 and 0 < env.aim - x <= 1:
+        return "NOOP"
+    if any(abs(b.c - (x + 1)) <= 0 and b.r >= 3 for b in env.bombs):
+        return "NOOP"
+    if not lift and any(course.get(6, x + k) == "U" for k in (1,)):
+        return "UP"
+    if any(2 <= h.c - x <= 6 for h in env.helis) and env.flares.ready_at(t) and not lift:
+        return "FIRE"
+    if not lift and any(0 < f.c - x <= 2 for f in env.frogs):
+        return "UP"
+    return "RIGHT"
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_jamesbond_scripted_driver_accomplishes_a_mission(seed):
+    env, _ = play(JB, bond_policy, seed, turns=1000)
+    assert env.score.done >= 1 and env.score.points >= 1000 and env.mission >= 2 and env.x > 20
+
+
+def test_jamesbond_driving_blindly_into_craters_loses_every_vehicle():
+    env, _ = play(JB, lambda e: "RIGHT", 0, turns=500)
+    assert env.done and env.lives == 0 and env.score.done == 0
+
+
+def bond_at(seed=0):
+    env = make(JB)
+    env.reset(seed=seed)
+    env.helis, env.frogs = [], []
+    env.course.rows[6] = "#" * env.params.stage          # flat ground unless a test digs
+    env.course.version += 1
+    return env
+
+
+def quiet(env):
+    env.helis, env.bombs = [], []                          # no new helicopters bombing the test
+
+
+def test_jamesbond_a_jump_carries_you_over_a_crater():
+    env = bond_at()
+    x = env.x
+    env.course.put(6, x + 1, "U")
+    env.course.put(6, x + 2, "U")
+    for a in ("UP", "RIGHT", "RIGHT", "RIGHT", "RIGHT"):
+        quiet(env)
+        env.step(a)
+    assert env.x == x + 4 and env.lives == env.params.lives
+    env.course.put(6, env.x + 1, "U")
+    quiet(env)
+    env.step("RIGHT")
+    assert env.lives == env.params.lives - 1                # no jump: into the crater
+
+
+def test_jamesbond_flare_downs_a_helicopter_and_low_shot_a_frogman():
+    from glyphbench_rl.games.arcade.bodies import Body
+    env = bond_at()
+    x = env.x
+    heli = Body(1, x + 6, dc=-1, data=False)
+    env.helis = [heli]
+    env.step("FIRE")
+    for _ in range(4):
+        env.step("NOOP")
+    assert heli not in env.helis and heli.c > x and env.flares.shots == []
+    env.course.rows[6] = env.course.rows[6][:x + 3] + "~" * 6 + env.course.rows[6][x + 9:]
+    env.frogs = [Body(5, x + 6, dc=-1)]
+    quiet(env)
+    env.step("DOWN")
+    for _ in range(3):
+        quiet(env)
+        env.step("NOOP")
+    assert env.frogs == [] and env.lives == env.params.lives
+
+
+def test_jamesbond_bombs_crater_the_ground():
+    from glyphbench_rl.games.arcade.bodies import Body
+    env = bond_at()
+    x = env.x
+    env.bombs = [Body(2, x + 3)]
+    for _ in range(4):
+        env.helis = []
+        env.step("NOOP")
+    assert env.course.get(6, x + 3) == "U" and env.bombs == []
+
+
+def test_jamesbond_satellite_laser_strikes_the_marked_column():
+    env = bond_at()
+    env.mission = 3
+    hit = None
+    for _ in range(60):
+        quiet(env)
+        if env.aim >= 0 and env.x != env.aim:
+            env.step("RIGHT" if env.aim > env.x else "LEFT")   # drive into the marked column
+        else:
+            env.step("NOOP")
+        if env.lives < env.params.lives:
+            hit = env.frame.message
+            break
+    assert hit and "laser" in hit
+
+
+def test_jamesbond_shooting_the_target_starts_the_next_mission():
+    env = bond_at()
+    target = env.params.stage - 3
+    env.x = target - 4
+    quiet(env)
+    env.step("RIGHT")
+    quiet(env)
+    env.step("RIGHT")
+    quiet(env)
+    env.step("RIGHT")
+    assert env.x == target - 1                             # the target blocks the road
+    env.step("DOWN")
+    assert env.mission == 2 and env.score.done == 1 and env.x < 10
