@@ -55,6 +55,7 @@ from . import kungfumaster  # noqa: F401
 from . import mspacman  # noqa: F401
 from . import phoenix  # noqa: F401
 from . import pong  # noqa: F401
+from . import privateeye  # noqa: F401
 from . import qbert  # noqa: F401
 from . import riverraid  # noqa: F401
 from . import roadrunner  # noqa: F401

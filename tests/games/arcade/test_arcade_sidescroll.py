@@ -13,7 +13,7 @@ from arcade_play import play
 SEEDS = (0, 5)
 
 
-@pytest.mark.parametrize("game", ["jamesbond", "roadrunner"])
+@pytest.mark.parametrize("game", ["jamesbond", "privateeye", "roadrunner"])
 def test_registered_on_the_atari_suite_only(game):
     from glyphbench_rl.core.registry import get_spec
     spec = get_spec(f"glyphbench/atari-{game}-v0")
@@ -257,3 +257,142 @@ def test_jamesbond_shooting_the_target_starts_the_next_mission():
     assert env.x == target - 1                             # the target blocks the road
     env.step("DOWN")
     assert env.mission == 2 and env.score.done == 1 and env.x < 10
+
+
+# -- Private Eye ----------------------------------------------------------------------------------
+PE = "glyphbench/atari-privateeye-v0"
+
+
+def drive_to(env, target):
+    want = max(-2, min(2, target - env.x))
+    if env.v == want:
+        return "NOOP"
+    if want == 0:
+        return "DOWN"
+    return "RIGHT" if env.v < want else "LEFT"
+
+
+def eye_policy(env):
+    """Search the nearest unsearched building, jump for what shows at a window, take the item
+    home, jump over thugs."""
+    x, t = env.x, env.tick + 1
+    lift = env.leap.lift(t)
+    if not lift and any(abs(th.c - x) <= 2 + abs(env.v) for th in env.thugs):
+        return "UP"
+    if env.shown:
+        if x == env.shown[0] and env.v == 0:
+            return "NOOP" if lift else "UP"
+        return drive_to(env, env.shown[0])
+    if lift:
+        return "NOOP"
+    if env.phase == "find":
+        todo = [i for i, b in enumerate(env.fronts) if "ABCDEFGHIJKLMNOPQRSTUVWXYZ"[i] not in env.searched]
+        door = min((env.fronts[i] + 3 for i in todo), key=lambda d: abs(d - x))
+    else:
+        door = env.fronts[env.home] + 3
+    if x == door and env.v == 0:
+        return "EXAMINE"
+    return drive_to(env, door)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_privateeye_scripted_detective_closes_a_case(seed):
+    env, _ = play(PE, eye_policy, seed, turns=1200)
+    assert env.score.done >= 1 and env.score.points >= 1000 and env.case >= 2
+
+
+def test_privateeye_thugs_mug_a_detective_who_never_jumps():
+    env, _ = play(PE, lambda e: "RIGHT" if e.x < e.params.street - 3 else "LEFT", 0, turns=5000)
+    assert env.done and env.lives == 0 and env.score.done == 0 and "mugged" in env.frame.message
+
+
+def eye_at(seed=0):
+    env = make(PE)
+    env.reset(seed=seed)
+    return env
+
+
+def calm(env):
+    env.thugs, env.pots = [], []
+
+
+def test_privateeye_a_case_examine_catch_return_and_le_fiend():
+    env = eye_at(3)
+    wrong = (env.hide + 1) % len(env.fronts)
+    if wrong == env.home:
+        wrong = (wrong + 1) % len(env.fronts)
+    env.x = env.fronts[wrong] + 3
+    calm(env)
+    env.step("EXAMINE")
+    assert env.shown is None and env.searched == "ABCDEFGHIJKLMNOPQRSTUVWXYZ"[wrong] and env.phase == "find"
+    env.x = env.fronts[env.hide] + 2                       # nearer the left window
+    calm(env)
+    env.step("EXAMINE")
+    col = env.shown[0]
+    assert col == env.fronts[env.hide] + 1 and env.phase == "find"
+    assert "$" in env.frame.grid[2]
+    env.x = col
+    for a in ("UP", "NOOP"):
+        calm(env)
+        env.step(a)
+    assert env.phase == "return" and env.shown is None and env.score.done == 0
+    for _ in range(4):
+        calm(env)
+        env.step("NOOP")                                   # land
+    env.x = env.fronts[env.home] + 3
+    calm(env)
+    env.step("EXAMINE")
+    assert env.phase == "catch" and "&" in env.frame.grid[2]
+    col = env.shown[0]
+    env.x = col
+    env.course.follow(col, env.params.width // 2)
+    for a in ("UP", "NOOP"):
+        calm(env)
+        env.step(a)
+    assert env.score.done == 1 and env.case == 2 and env.phase == "find"
+
+
+def test_privateeye_an_item_not_caught_goes_back_in():
+    env = eye_at(1)
+    env.x = env.fronts[env.hide] + 3
+    env.step("EXAMINE")
+    assert env.shown
+    for _ in range(env.params.pop):
+        calm(env)
+        env.step("NOOP")
+    assert env.shown is None and env.phase == "find"
+
+
+def test_privateeye_thug_mugs_unless_you_jump_him_and_pots_cost_clock():
+    from glyphbench_rl.games.arcade.bodies import Body
+    env = eye_at(2)
+    env.x = 40
+    env.thugs = [Body(4, 43, dc=-1)]
+    env.step("UP")
+    for _ in range(3):
+        env.pots = []
+        env.step("RIGHT")
+    assert env.lives == env.params.lives and env.x > 43
+    for _ in range(3):                                  # land, then stand in a thug's way
+        calm(env)
+        env.step("DOWN")
+    env.thugs = [Body(4, env.x + 1, dc=-1)]
+    env.pots = []
+    env.step("NOOP")
+    env.step("NOOP")
+    assert env.lives == env.params.lives - 1
+    calm(env)
+    left = env.clock.left
+    env.pots = [Body(2, env.x)]
+    env.step("NOOP")
+    env.step("NOOP")
+    assert env.clock.left <= left - env.params.penalty
+
+
+def test_privateeye_the_clock_running_out_costs_a_life():
+    env = eye_at(4)
+    env.clock.left = 3
+    for _ in range(3):
+        calm(env)
+        env.step("NOOP")
+    assert env.lives == env.params.lives - 1 and env.clock.left == env.params.clock
