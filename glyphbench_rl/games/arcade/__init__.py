@@ -22,7 +22,10 @@ Engine-level modules, which the games import (and nothing else of the family):
   ``deflect``, ``serve``, the scripted ``pursue``, ``Possession``, tennis-style ``Match``);
 - ``arena``: free-roam shooters (``ArenaTask``: facing fire with a reach, chasers that slide
   around walls, drifting foes, foe shells, wrap-around fields, an air or fuel countdown,
-  reinforcements).
+  reinforcements);
+- ``sidescroll``: side-scrolling stages longer than the screen (``Course``: the stage's rows and
+  the view that follows the player, forward or backward; ``Leap``: a jump off the ground line;
+  ``fall``; ``ScrollTask``: the task drawn on a course's view).
 """
 
 from . import alien  # noqa: F401

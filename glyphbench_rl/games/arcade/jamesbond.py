@@ -13,9 +13,9 @@ from dataclasses import dataclass
 from ...core.actions import ActionSet
 from ...core.params import param, require
 from .bodies import Body, Gun
-from .engine import EMPTY, ArcadeParams, ArcadeTask, register_atari
+from .engine import EMPTY, ArcadeParams, register_atari
 from .scroller import fly_shots
-from .sidescroll import Course, Leap, lay, readout
+from .sidescroll import Course, Leap, ScrollTask, fall, lay, readout
 
 CAR, GROUND, CRATER, WATER, TARGET = "B", "#", "U", "~", "X"
 HELI, BOMB, FROG, SAT, WARN, BEAM, FLARE, SHOT = "H", "o", "f", "S", "!", "|", "/", "-"
@@ -44,7 +44,7 @@ class JamesBondParams(ArcadeParams):
         require(self.stage >= self.width + 20, "stage", "be longer than the view", self.stage)
 
 
-class JamesBond(ArcadeTask):
+class JamesBond(ScrollTask):
     title = "James Bond 007"
     rules = ("You drive 007's vehicle (B) right along a road {stage} columns long per mission (the "
              "view, {width} columns, follows you), with {lives_text}. The ground row under you has "
@@ -67,7 +67,7 @@ class JamesBond(ArcadeTask):
 
     def _setup(self, rng) -> None:
         self.start(rng)
-        self.mission, self._key, self._note = 0, None, ""
+        self.mission = 0
         self.leap = Leap()
         self._next_mission()
 
@@ -131,7 +131,7 @@ class JamesBond(ArcadeTask):
         if self._frogmen() or self._sky() or (self.mission >= 3 and self._satellite()):
             return
         if not self.leap.lift(self.tick) and course.get(ROAD + 1, self.x) == CRATER:
-            self.lose_life("You drove into a crater!")
+            self.lost("You drove into a crater!")
 
     def _row(self) -> int:
         return ROAD - self.leap.lift(self.tick)
@@ -175,32 +175,27 @@ class JamesBond(ArcadeTask):
     def _frogmen(self) -> bool:
         course, x, row = self.course, self.x, self._row()
         for f in self.frogs:
-            if 0 <= f.c - course.left < self.params.width:
+            if course.seen(f.c):
                 met = f.c == x
                 if self.tick % 2 == 0:
                     if course.get(ROAD + 1, f.c + f.dc) != WATER:
                         f.dc = -f.dc
                     f.c += f.dc
                 if (met or f.c == x) and row == ROAD:
-                    return self.lose_life("A frogman got you!") or True
+                    return self.lost("A frogman got you!")
         return False
 
     def _sky(self) -> bool:
         p, course, x = self.params, self.course, self.x
         if self.draws.random() < p.heli * (1 + (self.mission >= 4)):
             self.helis.append(Body(1, course.left + p.width - 1, dc=-1, data=True))
-        kept = []
-        for b in self.bombs:
-            b.r += 1
-            if b.c == x and b.r == self._row():
-                self.bombs = []
-                return self.lose_life("A bomb hit you!") or True
-            if b.r == ROAD + 1:
-                if course.get(ROAD + 1, b.c) == GROUND:
-                    course.put(ROAD + 1, b.c, CRATER)
-            else:
-                kept.append(b)
-        self.bombs = kept
+        hit, landed = fall(self.bombs, self._row(), x, ROAD + 1)
+        if hit:
+            self.bombs = []
+            return self.lost("A bomb hit you!")
+        for b in landed:
+            if course.get(ROAD + 1, b.c) == GROUND:
+                course.put(ROAD + 1, b.c, CRATER)
         kept = []
         for t in self.helis:
             t.c -= 1
@@ -224,32 +219,26 @@ class JamesBond(ArcadeTask):
         elif t >= self.fire_at:
             self.beam = t
             if self.x == self.aim:
-                return self.lose_life("The satellite's laser hit you!") or True
+                return self.lost("The satellite's laser hit you!")
         return False
 
-    def _rows(self) -> list[str]:
-        return self.course.view()
-
     def _sprites(self):
-        screen = self.course.screen
-        out = [(t.r, screen(t.c), HELI) for t in self.helis]
-        out += [(b.r, screen(b.c), BOMB) for b in self.bombs]
-        out += [(f.r, screen(f.c), FROG) for f in self.frogs]
-        out += [(s.r, screen(s.c), s.glyph) for s in self.flares.shots + self.lows.shots]
+        course = self.course
+        out = (course.sprites(self.helis, HELI) + course.sprites(self.bombs, BOMB) + course.sprites(self.frogs, FROG)
+               + course.sprites(self.flares.shots, FLARE) + course.sprites(self.lows.shots, SHOT))
         if self.mission >= 3:
-            out.append((0, screen(self.sat), SAT))
+            c = course.screen(self.aim)
+            out.append((0, course.screen(self.sat), SAT))
             if self.aim >= 0:
-                c = screen(self.aim)
                 out += [(r, c, BEAM) for r in range(1, ROAD + 1)] if self.beam == self.tick else [(1, c, WARN)]
-        out.append((self._row(), screen(self.x), CAR))
+        out.append((self._row(), course.screen(self.x), CAR))
         return out
 
-    def _extra_hud(self) -> str:
-        key = (self.mission, self.x)
-        if key != self._key:
-            self._key = key
-            self._note = f"Mission {self.mission}/{self.params.goal} | {readout('Road', self.x, self.params.stage)}"
-        return self._note
+    def note_key(self):
+        return self.mission, self.x
+
+    def note_text(self) -> str:
+        return f"Mission {self.mission}/{self.params.goal} | {readout('Road', self.x, self.params.stage)}"
 
 
 register_atari(JamesBond, "jamesbond", lives=5, goal=4, unit=1000.0, max_turns=10000)

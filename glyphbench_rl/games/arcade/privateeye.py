@@ -14,8 +14,8 @@ from dataclasses import dataclass
 from ...core.actions import ActionSet
 from ...core.params import param, require
 from .bodies import Body, Countdown
-from .engine import EMPTY, ArcadeParams, ArcadeTask, register_atari
-from .sidescroll import Course, Leap, lay, readout
+from .engine import EMPTY, ArcadeParams, register_atari
+from .sidescroll import Course, Leap, ScrollTask, fall, lay, readout
 
 CAR, THUG, POT, ITEM, FIEND, WALL, WINDOW, DOOR, ROOF, KERB = "@", "t", "v", "$", "&", "#", "o", "n", "_", "="
 SIGNS = "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
@@ -44,7 +44,7 @@ class PrivateEyeParams(ArcadeParams):
         require(self.street >= self.width + 20, "street", "be longer than the view", self.street)
 
 
-class PrivateEye(ArcadeTask):
+class PrivateEye(ScrollTask):
     title = "Private Eye"
     rules = ("You are detective Pierre Touche in your car (@) on a street {street} columns long "
              "(the view, {width} columns, follows you), with {lives_text}. The street is lined with "
@@ -81,7 +81,6 @@ class PrivateEye(ArcadeTask):
         self.course = Course(cells, p.width)
         self.x, self.v, self.case, self.leap = p.width // 2, 0, 0, Leap()
         self.clock = Countdown(p.clock)
-        self._key, self._note = None, ""
         self._next_case()
 
     def _next_case(self) -> None:
@@ -130,8 +129,8 @@ class PrivateEye(ArcadeTask):
             if self.done:
                 return
         if self.clock.tick():
-            self.lose_life("Time ran out on the case!")
             self.clock.refill()
+            self.lost("Time ran out on the case!")
             return
         self._street(x0, row)
 
@@ -189,47 +188,36 @@ class PrivateEye(ArcadeTask):
                 t.c += t.dc
             if row == STREET and lo <= t.c <= hi:
                 self.thugs = []
-                self.lose_life("You were mugged!")
+                self.lost("You were mugged!")
                 return
-            if 0 <= t.c - course.left < p.width:
+            if course.seen(t.c):
                 kept.append(t)
         self.thugs = kept
         if draws.random() < p.pots:
             c = x + self.v * 2 + draws.below(5) - 2
             if course.get(1, c) == WINDOW:
                 self.pots.append(Body(1, c))
-        kept = []
-        for pot in self.pots:
-            pot.r += 1
-            if pot.c == x and pot.r == row:
-                self.say("A flowerpot hit you!")
-                self.clock.tick(p.penalty)
-            elif pot.r < STREET + 1:
-                kept.append(pot)
-        self.pots = kept
-
-    def _rows(self) -> list[str]:
-        return self.course.view()
+        if fall(self.pots, row, x, STREET + 1)[0]:
+            self.say("A flowerpot hit you!")
+            self.clock.tick(p.penalty)
 
     def _sprites(self):
-        screen = self.course.screen
-        out = [(t.r, screen(t.c), THUG) for t in self.thugs]
-        out += [(pot.r, screen(pot.c), POT) for pot in self.pots]
+        course = self.course
+        out = course.sprites(self.thugs, THUG) + course.sprites(self.pots, POT)
         if self.shown:
-            out.append((2, screen(self.shown[0]), ITEM if self.phase == "find" else FIEND))
-        out.append((STREET - self.leap.lift(self.tick), screen(self.x), CAR))
+            out.append((2, course.screen(self.shown[0]), ITEM if self.phase == "find" else FIEND))
+        out.append((STREET - self.leap.lift(self.tick), course.screen(self.x), CAR))
         return out
 
-    def _extra_hud(self) -> str:
-        key = (self.case, self.clock.left, self.x, self.phase, self.searched)
-        if key != self._key:
-            self._key = key
-            task = {"find": f"Find the item (searched: {self.searched or 'none'})",
-                    "return": f"Return the item to {SIGNS[self.home]} at {self.fronts[self.home]}",
-                    "catch": "Catch Le Fiend"}[self.phase]
-            self._note = (f"Case {self.case}/{self.params.goal} | Clock {self.clock.left} | "
-                          f"{readout('Street', self.x, self.params.street)} | {task}")
-        return self._note
+    def note_key(self):
+        return self.case, self.clock.left, self.x, self.phase, self.searched
+
+    def note_text(self) -> str:
+        task = {"find": f"Find the item (searched: {self.searched or 'none'})",
+                "return": f"Return the item to {SIGNS[self.home]} at {self.fronts[self.home]}",
+                "catch": "Catch Le Fiend"}[self.phase]
+        return (f"Case {self.case}/{self.params.goal} | Clock {self.clock.left} | "
+                f"{readout('Street', self.x, self.params.street)} | {task}")
 
 
 register_atari(PrivateEye, "privateeye", lives=3, goal=5, unit=1000.0, max_turns=10000)

@@ -13,8 +13,8 @@ from dataclasses import dataclass
 from ...core.actions import ActionSet
 from ...core.params import param, require
 from .bodies import Body
-from .engine import EMPTY, ArcadeParams, ArcadeTask, register_atari
-from .sidescroll import Course, lay, readout
+from .engine import EMPTY, ArcadeParams, register_atari
+from .sidescroll import Course, ScrollTask, lay, readout
 
 RUNNER, COYOTE, SEED, MINE, TRUCK, SHADOW, VERGE = "R", "C", ":", "x", "T", "o", "="
 ACTIONS = ActionSet([("NOOP", "stand still"), ("LEFT", "run one cell left (onward)"),
@@ -43,7 +43,7 @@ class RoadRunnerParams(ArcadeParams):
         require(self.stage >= self.width, "stage", "be at least the view's width", self.stage)
 
 
-class RoadRunner(ArcadeTask):
+class RoadRunner(ScrollTask):
     title = "Road Runner"
     rules = ("You are the Road Runner (R) running left along a road of {lanes} lanes (the view, "
              "{width} columns, follows you; you see {lead} columns ahead), with {lives_text}. Wile "
@@ -68,7 +68,7 @@ class RoadRunner(ArcadeTask):
 
     def _setup(self, rng) -> None:
         self.start(rng)
-        self.level, self.misses, self._note, self._key = 0, 0, "", None
+        self.level, self.misses = 0, 0
         self._next_level()
 
     def _next_level(self) -> None:
@@ -140,12 +140,12 @@ class RoadRunner(ArcadeTask):
             if course.get(lane, x) == SEED:
                 self.misses += 1
                 if self.misses >= self.params.faint:
-                    return self.lose_life("You missed too many seeds and fainted!") or True
+                    return self.lost("You missed too many seeds and fainted!")
         return False
 
     def _caught(self) -> bool:
         if self.tick >= self.out and self.cd == self.d and self.cl == self.lane:
-            return self.lose_life("The Coyote caught you!") or True
+            return self.lost("The Coyote caught you!")
         return False
 
     def _knocked(self, why: str) -> None:
@@ -176,7 +176,7 @@ class RoadRunner(ArcadeTask):
             t.c -= 1
             if hit:
                 self.trucks = []
-                return self.lose_life("A truck ran you over!") or True
+                return self.lost("A truck ran you over!")
             if self.tick >= self.out and t.r == self.cl and self.cd in (t.c, t.c + 1):
                 self._knocked("A truck flattened the Coyote!")
             if t.c >= course.left:
@@ -195,31 +195,26 @@ class RoadRunner(ArcadeTask):
                 kept.append(rock)
             elif rock.r == self.lane and rock.c == self.d:
                 self.falling = []
-                return self.lose_life("A rock fell on you!") or True
+                return self.lost("A rock fell on you!")
             elif self.tick >= self.out and rock.r == self.cl and rock.c == self.cd:
                 self._knocked("A rock fell on the Coyote!")
         self.falling = kept
         return self.done
 
-    def _rows(self) -> list[str]:
-        return self.course.view()
-
     def _sprites(self):
-        screen = self.course.screen
-        out = [(t.r, screen(t.c), TRUCK) for t in self.trucks]
-        out += [(r.r, screen(r.c), SHADOW) for r in self.falling]
+        course = self.course
+        out = course.sprites(self.trucks, TRUCK) + course.sprites(self.falling, SHADOW)
         if self.tick >= self.out:
-            out.append((self.cl, screen(self.cd), COYOTE))
-        out.append((self.lane, screen(self.d), RUNNER))
+            out.append((self.cl, course.screen(self.cd), COYOTE))
+        out.append((self.lane, course.screen(self.d), RUNNER))
         return out
 
-    def _extra_hud(self) -> str:
-        key = (self.level, self.d, self.misses)
-        if key != self._key:
-            self._key = key
-            self._note = (f"Level {self.level} | {readout('Road', self.d, self.params.stage)} | "
-                          f"Missed {self.misses}/{self.params.faint}")
-        return self._note
+    def note_key(self):
+        return self.level, self.d, self.misses
+
+    def note_text(self) -> str:
+        p = self.params
+        return f"Level {self.level} | {readout('Road', self.d, p.stage)} | Missed {self.misses}/{p.faint}"
 
 
 register_atari(RoadRunner, "roadrunner", lives=3, goal=50, unit=100.0, max_turns=10000)

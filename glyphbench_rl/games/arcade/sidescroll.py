@@ -13,12 +13,15 @@ player heads left on the screen, world column 0 at the view's right edge (Road R
     if course.get(r, x) == SEED: course.put(r, x, EMPTY)
 
 ``Leap`` is a jump off the ground line (an arc of rows above it, one a tick); ``readout`` the
-HUD's progress text along the course.
+HUD's progress text along the course; ``ScrollTask`` the ``ArcadeTask`` whose field is a course's
+view (movers placed with ``course.sprites``, a HUD note remade only when its key changes).
 """
 
 from __future__ import annotations
 
 from typing import Sequence
+
+from .engine import ArcadeTask
 
 
 def lay(fills: Sequence[str], length: int) -> list[list[str]]:
@@ -71,6 +74,16 @@ class Course:
         self.rows[r] = row[:x] + ch + row[x + 1:]
         self.version += 1
 
+    def seen(self, x: int) -> bool:
+        """World column ``x`` is in the view."""
+        return 0 <= x - self.left < self.width
+
+    def sprites(self, things, glyph: str) -> list[tuple[int, int, str]]:
+        """(row, view column, glyph) of each thing (``.r``, ``.c`` in world columns) for
+        ``_sprites`` (a view column of -1, off the view, is not drawn)."""
+        screen = self.screen
+        return [(t.r, screen(t.c), glyph) for t in things]
+
     def find(self, r: int, x: int, glyphs: str, reach: int, step: int = 1) -> int:
         """The first world column from ``x`` (inclusive) ``reach`` columns on (``step`` +1 or
         -1) whose row-``r`` cell is one of ``glyphs``; -1 when none."""
@@ -105,6 +118,49 @@ class Leap:
         self.since = -len(self.arc) - 1
 
 
+def fall(things: list, r: int, c: int, floor: int) -> tuple[bool, list]:
+    """Drop each thing (``.r``, ``.c``) a row: True when one comes down on (``r``, ``c``) (the
+    player's cell), and the things that reached row ``floor``; ``things`` keeps the rest."""
+    hit, landed, kept = False, [], []
+    for t in things:
+        t.r += 1
+        if t.r == r and t.c == c:
+            hit = True
+        elif t.r >= floor:
+            landed.append(t)
+        else:
+            kept.append(t)
+    things[:] = kept
+    return hit, landed
+
+
 def readout(label: str, x: int, length: int) -> str:
     """The HUD's progress along a course: ``label x/length``."""
     return f"{label} {x}/{length}"
+
+
+class ScrollTask(ArcadeTask):
+    """An ``ArcadeTask`` on ``self.course`` (made in ``_setup``): the field is the course's view
+    with ``_sprites`` on top; the HUD's extra text is ``note_text()``, remade only when
+    ``note_key()`` changes."""
+    _key = None
+
+    def _rows(self) -> list[str]:
+        return self.course.view()
+
+    def lost(self, why: str) -> bool:
+        """``lose_life(why)``, then True: the turn stops here whether or not lives remain."""
+        self.lose_life(why)
+        return True
+
+    def note_key(self):
+        raise NotImplementedError
+
+    def note_text(self) -> str:
+        raise NotImplementedError
+
+    def _extra_hud(self) -> str:
+        key = self.note_key()
+        if key != self._key:
+            self._key, self._note = key, self.note_text()
+        return self._note

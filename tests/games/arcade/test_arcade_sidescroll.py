@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 
 from glyphbench_rl import make
-from glyphbench_rl.games.arcade.sidescroll import Course, Leap, lay, readout
+from glyphbench_rl.games.arcade.sidescroll import Course, Leap, fall, lay, readout
 from arcade_play import play
 
 SEEDS = (0, 5)
@@ -41,6 +41,15 @@ def test_course_view_follows_and_mirrors():
     with pytest.raises(ValueError):
         Course(lay(("a",), 3), 4)
     assert readout("Road", 3, 10) == "Road 3/10"
+
+
+def test_fall_drops_things_a_row_onto_you_or_the_floor():
+    from glyphbench_rl.games.arcade.bodies import Body
+    on_you, low, high = Body(3, 5), Body(4, 9), Body(0, 2)
+    things = [on_you, low, high]
+    hit, landed = fall(things, 4, 5, floor=5)
+    assert hit and landed == [low] and things == [high] and high.r == 1
+    assert fall(things, 4, 5, floor=5) == (False, []) and things == [high]
 
 
 def test_leap_lifts_along_its_arc_only_from_the_ground():
