@@ -15,7 +15,7 @@ from ...core.params import param, require
 from .bodies import Body, Gun
 from .engine import EMPTY, ArcadeParams, register_atari
 from .scroller import fly_shots
-from .sidescroll import Course, Leap, ScrollTask, fall, lay, readout
+from .sidescroll import Course, Leap, ScrollTask, fall, lay
 
 CAR, GROUND, CRATER, WATER, TARGET = "B", "#", "U", "~", "X"
 HELI, BOMB, FROG, SAT, WARN, BEAM, FLARE, SHOT = "H", "o", "f", "S", "!", "|", "/", "-"
@@ -101,6 +101,7 @@ class JamesBond(ScrollTask):
         while self.x > 0 and course.get(ROAD + 1, self.x) != GROUND:
             self.x -= 1
         self.leap.land()
+        self.row = ROAD
         course.follow(self.x, self.params.lead)
         self.helis: list[Body] = []
         self.bombs: list[Body] = []
@@ -122,19 +123,17 @@ class JamesBond(ScrollTask):
         elif action == FIRE:
             self.flares.fire(self.tick, ROAD - lift, self.x, -1, 1, FLARE)
         course.follow(self.x, p.lead)
+        self.row = ROAD - self.leap.lift(self.tick)
         if self.lows.shots:
             fly_shots(self.lows, self._low_hit, self._low_strike)
             if self.done or self.course is not course:
                 return
         if self.flares.shots:
             fly_shots(self.flares, self._air_hit, self._air_strike)
-        if self._frogmen() or self._sky() or (self.mission >= 3 and self._satellite()):
+        if (self.frogs and self._frogmen()) or self._sky() or (self.mission >= 3 and self._satellite()):
             return
-        if not self.leap.lift(self.tick) and course.get(ROAD + 1, self.x) == CRATER:
+        if self.row == ROAD and course.get(ROAD + 1, self.x) == CRATER:
             self.lost("You drove into a crater!")
-
-    def _row(self) -> int:
-        return ROAD - self.leap.lift(self.tick)
 
     def _low_hit(self, r: int, c: int) -> bool:
         if self.course.get(r, c) == TARGET:
@@ -173,7 +172,7 @@ class JamesBond(ScrollTask):
         return False
 
     def _frogmen(self) -> bool:
-        course, x, row = self.course, self.x, self._row()
+        course, x, row = self.course, self.x, self.row
         for f in self.frogs:
             if course.seen(f.c):
                 met = f.c == x
@@ -189,13 +188,16 @@ class JamesBond(ScrollTask):
         p, course, x = self.params, self.course, self.x
         if self.draws.random() < p.heli * (1 + (self.mission >= 4)):
             self.helis.append(Body(1, course.left + p.width - 1, dc=-1, data=True))
-        hit, landed = fall(self.bombs, self._row(), x, ROAD + 1)
-        if hit:
-            self.bombs = []
-            return self.lost("A bomb hit you!")
-        for b in landed:
-            if course.get(ROAD + 1, b.c) == GROUND:
-                course.put(ROAD + 1, b.c, CRATER)
+        if self.bombs:
+            hit, landed = fall(self.bombs, self.row, x, ROAD + 1)
+            if hit:
+                self.bombs = []
+                return self.lost("A bomb hit you!")
+            for b in landed:
+                if course.get(ROAD + 1, b.c) == GROUND:
+                    course.put(ROAD + 1, b.c, CRATER)
+        if not self.helis:
+            return False
         kept = []
         for t in self.helis:
             t.c -= 1
@@ -222,23 +224,23 @@ class JamesBond(ScrollTask):
                 return self.lost("The satellite's laser hit you!")
         return False
 
-    def _sprites(self):
-        course = self.course
-        out = (course.sprites(self.helis, HELI) + course.sprites(self.bombs, BOMB) + course.sprites(self.frogs, FROG)
-               + course.sprites(self.flares.shots, FLARE) + course.sprites(self.lows.shots, SHOT))
+    def _movers(self):
+        return ((self.helis, HELI), (self.bombs, BOMB), (self.frogs, FROG), (self.flares.shots, FLARE),
+                (self.lows.shots, SHOT))
+
+    def _marks(self):
+        out = [(self.row, self.x, CAR)]
         if self.mission >= 3:
-            c = course.screen(self.aim)
-            out.append((0, course.screen(self.sat), SAT))
+            out.insert(0, (0, self.sat, SAT))
             if self.aim >= 0:
-                out += [(r, c, BEAM) for r in range(1, ROAD + 1)] if self.beam == self.tick else [(1, c, WARN)]
-        out.append((self._row(), course.screen(self.x), CAR))
+                out[1:1] = [(r, self.aim, BEAM) for r in range(1, ROAD + 1)] if self.beam == self.tick else [(1, self.aim, WARN)]
         return out
 
     def note_key(self):
         return self.mission, self.x
 
     def note_text(self) -> str:
-        return f"Mission {self.mission}/{self.params.goal} | {readout('Road', self.x, self.params.stage)}"
+        return f"Mission {self.mission}/{self.params.goal} | Road {self.x}/{self.params.stage}"
 
 
 register_atari(JamesBond, "jamesbond", lives=5, goal=4, unit=1000.0, max_turns=10000)

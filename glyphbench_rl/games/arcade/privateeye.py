@@ -15,7 +15,7 @@ from ...core.actions import ActionSet
 from ...core.params import param, require
 from .bodies import Body, Countdown
 from .engine import EMPTY, ArcadeParams, register_atari
-from .sidescroll import Course, Leap, ScrollTask, fall, lay, readout
+from .sidescroll import Course, Leap, ScrollTask, fall, lay
 
 CAR, THUG, POT, ITEM, FIEND, WALL, WINDOW, DOOR, ROOF, KERB = "@", "t", "v", "$", "&", "#", "o", "n", "_", "="
 SIGNS = "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
@@ -95,7 +95,7 @@ class PrivateEye(ScrollTask):
     def _respawn(self) -> None:
         self.thugs: list[Body] = []
         self.pots: list[Body] = []
-        self.v = 0
+        self.v, self.row = 0, STREET
         self.leap.land()
 
     def _building(self) -> int:
@@ -123,7 +123,7 @@ class PrivateEye(ScrollTask):
         if self.x in (0, p.street - 1):
             self.v = 0
         self.course.follow(self.x, p.width // 2)
-        row = STREET - self.leap.lift(self.tick)
+        self.row = row = STREET - self.leap.lift(self.tick)
         if self.shown and self.shown[0] == self.x and row == 2:
             self._catch()
             if self.done:
@@ -201,23 +201,22 @@ class PrivateEye(ScrollTask):
             self.say("A flowerpot hit you!")
             self.clock.tick(p.penalty)
 
-    def _sprites(self):
-        course = self.course
-        out = course.sprites(self.thugs, THUG) + course.sprites(self.pots, POT)
-        if self.shown:
-            out.append((2, course.screen(self.shown[0]), ITEM if self.phase == "find" else FIEND))
-        out.append((STREET - self.leap.lift(self.tick), course.screen(self.x), CAR))
-        return out
+    def _movers(self):
+        return (self.thugs, THUG), (self.pots, POT)
+
+    def _marks(self):
+        me = (self.row, self.x, CAR)
+        return ((2, self.shown[0], ITEM if self.phase == "find" else FIEND), me) if self.shown else (me,)
 
     def note_key(self):
-        return self.case, self.clock.left, self.x, self.phase, self.searched
+        return self.clock.left, self.x, self.phase, self.searched
 
     def note_text(self) -> str:
-        task = {"find": f"Find the item (searched: {self.searched or 'none'})",
-                "return": f"Return the item to {SIGNS[self.home]} at {self.fronts[self.home]}",
-                "catch": "Catch Le Fiend"}[self.phase]
-        return (f"Case {self.case}/{self.params.goal} | Clock {self.clock.left} | "
-                f"{readout('Street', self.x, self.params.street)} | {task}")
+        p, phase = self.params, self.phase
+        task = ("Catch Le Fiend" if phase == "catch" else
+                f"Find the item (searched: {self.searched or 'none'})" if phase == "find" else
+                f"Return the item to {SIGNS[self.home]} at {self.fronts[self.home]}")
+        return f"Case {self.case}/{p.goal} | Clock {self.clock.left} | Street {self.x}/{p.street} | {task}"
 
 
 register_atari(PrivateEye, "privateeye", lives=3, goal=5, unit=1000.0, max_turns=10000)

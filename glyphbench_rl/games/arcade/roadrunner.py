@@ -14,7 +14,7 @@ from ...core.actions import ActionSet
 from ...core.params import param, require
 from .bodies import Body
 from .engine import EMPTY, ArcadeParams, register_atari
-from .sidescroll import Course, ScrollTask, lay, readout
+from .sidescroll import Course, ScrollTask, lay
 
 RUNNER, COYOTE, SEED, MINE, TRUCK, SHADOW, VERGE = "R", "C", ":", "x", "T", "o", "="
 ACTIONS = ActionSet([("NOOP", "stand still"), ("LEFT", "run one cell left (onward)"),
@@ -201,20 +201,19 @@ class RoadRunner(ScrollTask):
         self.falling = kept
         return self.done
 
-    def _sprites(self):
-        course = self.course
-        out = course.sprites(self.trucks, TRUCK) + course.sprites(self.falling, SHADOW)
-        if self.tick >= self.out:
-            out.append((self.cl, course.screen(self.cd), COYOTE))
-        out.append((self.lane, course.screen(self.d), RUNNER))
-        return out
+    def _movers(self):
+        return (self.trucks, TRUCK), (self.falling, SHADOW)
+
+    def _marks(self):
+        me = (self.lane, self.d, RUNNER)
+        return ((self.cl, self.cd, COYOTE), me) if self.tick >= self.out else (me,)
 
     def note_key(self):
         return self.level, self.d, self.misses
 
     def note_text(self) -> str:
         p = self.params
-        return f"Level {self.level} | {readout('Road', self.d, p.stage)} | Missed {self.misses}/{p.faint}"
+        return f"Level {self.level} | Road {self.d}/{p.stage} | Missed {self.misses}/{p.faint}"
 
 
 register_atari(RoadRunner, "roadrunner", lives=3, goal=50, unit=100.0, max_turns=10000)

@@ -12,9 +12,9 @@ player heads left on the screen, world column 0 at the view's right edge (Road R
     c = course.screen(x)                 # a world column's view column, -1 off the view
     if course.get(r, x) == SEED: course.put(r, x, EMPTY)
 
-``Leap`` is a jump off the ground line (an arc of rows above it, one a tick); ``readout`` the
-HUD's progress text along the course; ``ScrollTask`` the ``ArcadeTask`` whose field is a course's
-view (movers placed with ``course.sprites``, a HUD note remade only when its key changes).
+``Leap`` is a jump off the ground line (an arc of rows above it, one a tick); ``fall`` drops
+bombs and flowerpots a row a turn; ``ScrollTask`` the ``ArcadeTask`` whose field is a course's
+view with the movers drawn in (a HUD note remade only when its key changes).
 """
 
 from __future__ import annotations
@@ -78,12 +78,6 @@ class Course:
         """World column ``x`` is in the view."""
         return 0 <= x - self.left < self.width
 
-    def sprites(self, things, glyph: str) -> list[tuple[int, int, str]]:
-        """(row, view column, glyph) of each thing (``.r``, ``.c`` in world columns) for
-        ``_sprites`` (a view column of -1, off the view, is not drawn)."""
-        screen = self.screen
-        return [(t.r, screen(t.c), glyph) for t in things]
-
     def find(self, r: int, x: int, glyphs: str, reach: int, step: int = 1) -> int:
         """The first world column from ``x`` (inclusive) ``reach`` columns on (``step`` +1 or
         -1) whose row-``r`` cell is one of ``glyphs``; -1 when none."""
@@ -134,19 +128,39 @@ def fall(things: list, r: int, c: int, floor: int) -> tuple[bool, list]:
     return hit, landed
 
 
-def readout(label: str, x: int, length: int) -> str:
-    """The HUD's progress along a course: ``label x/length``."""
-    return f"{label} {x}/{length}"
-
-
 class ScrollTask(ArcadeTask):
     """An ``ArcadeTask`` on ``self.course`` (made in ``_setup``): the field is the course's view
-    with ``_sprites`` on top; the HUD's extra text is ``note_text()``, remade only when
-    ``note_key()`` changes."""
+    with the movers drawn in: each group of ``_movers()`` (things with ``.r`` and ``.c``, a world
+    column, and the group's glyph), then ``_marks()`` (row, world column, glyph), the later on
+    top; the HUD's extra text is ``note_text()``, remade only when ``note_key()`` changes."""
     _key = None
 
-    def _rows(self) -> list[str]:
-        return self.course.view()
+    def _movers(self):
+        return ()
+
+    def _marks(self):
+        return ()
+
+    def _grid(self) -> list[str]:
+        course = self.course
+        rows = course.view()
+        left, w, back, h = course.left, course.width, course.backward, len(rows)
+        for things, glyph in self._movers():
+            for t in things:
+                c, r = t.c - left, t.r
+                if 0 <= c < w and 0 <= r < h:
+                    if back:
+                        c = w - 1 - c
+                    line = rows[r]
+                    rows[r] = line[:c] + glyph + line[c + 1:]
+        for r, x, glyph in self._marks():
+            c = x - left
+            if 0 <= c < w and 0 <= r < h:
+                if back:
+                    c = w - 1 - c
+                line = rows[r]
+                rows[r] = line[:c] + glyph + line[c + 1:]
+        return rows
 
     def lost(self, why: str) -> bool:
         """``lose_life(why)``, then True: the turn stops here whether or not lives remain."""
