@@ -15,12 +15,12 @@ from ...core.params import param, require
 from .bodies import Body, Gun
 from .engine import EMPTY, ArcadeParams, register_atari
 from .scroller import fly_shots
-from .sidescroll import Course, Leap, ScrollTask, fall, lay
+from .sidescroll import Course, Leap, ScrollTask, fall, jump_text, lay
 
 CAR, GROUND, CRATER, WATER, TARGET = "B", "#", "U", "~", "X"
 HELI, BOMB, FROG, SAT, WARN, BEAM, FLARE, SHOT = "H", "o", "f", "S", "!", "|", "/", "-"
 ACTIONS = ActionSet([("NOOP", "hold your place"), ("LEFT", "back up one cell"),
-                     ("RIGHT", "drive one cell right"), ("UP", "jump (four turns in the air)"),
+                     ("RIGHT", "drive one cell right"), ("UP", "jump (keep driving to clear a crater)"),
                      ("DOWN", "fire a low shot straight ahead"),
                      ("FIRE", "fire a flare diagonally up and ahead")], noop="NOOP")
 LEFT, RIGHT, UP, DOWN, FIRE = range(1, 6)
@@ -38,6 +38,9 @@ class JamesBondParams(ArcadeParams):
     bomb: float = param(0.5, 0, 1)         # chance a helicopter over you drops its bomb
     laser: int = param(16, 4, 100)         # turns between the satellite's shots (mission 3 on)
     warn: int = param(3, 1, 10)            # turns its warning shows first
+    pools_from: int = param(2, 1, 99)      # the first mission with pools and frogmen
+    laser_from: int = param(3, 1, 99)      # the first mission with the satellite
+    hard_from: int = param(4, 1, 99)       # the first with wide craters and twice the helicopters
 
     def check(self) -> None:
         require(self.lead < self.width - 4, "lead", "leave room behind you", self.lead)
@@ -48,14 +51,15 @@ class JamesBond(ScrollTask):
     title = "James Bond 007"
     rules = ("You drive 007's vehicle (B) right along a road {stage} columns long per mission (the "
              "view, {width} columns, follows you), with {lives_text}. The ground row under you has "
-             "craters (U): drive onto one and you lose a vehicle, so jump them (UP: up two rows "
-             "for four turns; keep moving). From mission 2 pools of water (~) hold frogmen (f) "
-             "swimming at you: shoot them with the low shot (DOWN) or jump them. Helicopters (H) "
-             "cross the sky and drop bombs (o) that fall a row a turn and crater the ground: the "
-             "flare (FIRE, up a row and ahead a column a turn) downs them. From mission 3 a "
-             "satellite (S) marks a column (!) and {warn} turns later fires a laser (|) down it "
-             "every {laser} turns. Each mission ends at its target (X): shoot it with the low "
-             "shot to start the next mission.")
+             "craters (U): drive onto one and you lose a vehicle, so jump them (UP: {jump_text}; "
+             "keep moving). From mission {pools_from} pools of water (~) hold frogmen (f) "
+             "swimming at you: shoot them with the low shot (DOWN, straight ahead) or jump them. "
+             "Helicopters (H) cross the sky and drop bombs (o) that fall a row a turn and crater "
+             "the ground: the flare (FIRE, diagonally up and ahead) downs them. From mission "
+             "{laser_from} a satellite (S) marks a column (!) every {laser} turns and fires a laser "
+             "(|) down it {warn} turns later (a flare can knock it out for a while). From mission "
+             "{hard_from} craters are wider and helicopters come twice as often. Each mission ends "
+             "at its target (X): shoot it with the low shot to start the next mission.")
     rewards = "+{unit} for each mission accomplished; {death} when the game is lost."
     ends = "when {goal} missions are accomplished or the game is lost"
     ACTIONS = ACTIONS
@@ -64,6 +68,9 @@ class JamesBond(ScrollTask):
     glyphs = {EMPTY: "sky", GROUND: "ground", CRATER: "crater", WATER: "water", TARGET: "mission target",
               HELI: "helicopter", BOMB: "bomb", FROG: "frogman", SAT: "satellite", WARN: "laser warning",
               BEAM: "laser", FLARE: "your flare", SHOT: "your low shot", CAR: "you"}
+
+    def prompt_fields(self) -> dict:
+        return {**super().prompt_fields(), "jump_text": jump_text()}
 
     def _setup(self, rng) -> None:
         self.start(rng)
@@ -80,13 +87,13 @@ class JamesBond(ScrollTask):
         x = p.width - p.lead + 4
         while x < p.stage - 12:
             x += max(3, p.gap - 3 + draws.below(7))
-            if m >= 2 and draws.random() < 0.35:
+            if m >= p.pools_from and draws.random() < 0.35:
                 n = 5 + draws.below(5)
                 cells[ROAD + 1][x:x + n] = [WATER] * n
                 self.frogs.append(Body(ROAD, x + n - 1, dc=-1))
                 x += n
             else:
-                n = 1 + (m >= 3 and draws.random() < 0.5)
+                n = 1 + (m >= p.hard_from and draws.random() < 0.5)
                 cells[ROAD + 1][x:x + n] = [CRATER] * n
                 x += n
         cells[ROAD][p.stage - 3] = TARGET
@@ -130,7 +137,7 @@ class JamesBond(ScrollTask):
                 return
         if self.flares.shots:
             fly_shots(self.flares, self._air_hit, self._air_strike)
-        if (self.frogs and self._frogmen()) or self._sky() or (self.mission >= 3 and self._satellite()):
+        if (self.frogs and self._frogmen()) or self._sky() or (self.mission >= p.laser_from and self._satellite()):
             return
         if self.row == ROAD and course.get(ROAD + 1, self.x) == CRATER:
             self.lost("You drove into a crater!")
@@ -162,7 +169,7 @@ class JamesBond(ScrollTask):
         for b in self.bombs:
             if b.c == c and b.r in (r, r + 1):
                 return True
-        return r == 0 and c == self.sat and self.mission >= 3
+        return r == 0 and c == self.sat and self.mission >= self.params.laser_from
 
     def _air_strike(self, r: int, c: int) -> bool:
         if r == 0 and c == self.sat:
@@ -186,7 +193,7 @@ class JamesBond(ScrollTask):
 
     def _sky(self) -> bool:
         p, course, x = self.params, self.course, self.x
-        if self.draws.random() < p.heli * (1 + (self.mission >= 4)):
+        if self.draws.random() < p.heli * (1 + (self.mission >= p.hard_from)):
             self.helis.append(Body(1, course.left + p.width - 1, dc=-1, data=True))
         if self.bombs:
             hit, landed = fall(self.bombs, self.row, x, ROAD + 1)
@@ -230,7 +237,7 @@ class JamesBond(ScrollTask):
 
     def _marks(self):
         out = [(self.row, self.x, CAR)]
-        if self.mission >= 3:
+        if self.mission >= self.params.laser_from:
             out.insert(0, (0, self.sat, SAT))
             if self.aim >= 0:
                 out[1:1] = [(r, self.aim, BEAM) for r in range(1, ROAD + 1)] if self.beam == self.tick else [(1, self.aim, WARN)]

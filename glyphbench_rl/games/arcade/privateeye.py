@@ -15,7 +15,7 @@ from ...core.actions import ActionSet
 from ...core.params import param, require
 from .bodies import Body, Countdown
 from .engine import EMPTY, ArcadeParams, register_atari
-from .sidescroll import Course, Leap, ScrollTask, fall, lay
+from .sidescroll import Course, Leap, ScrollTask, fall, jump_text, lay
 
 CAR, THUG, POT, ITEM, FIEND, WALL, WINDOW, DOOR, ROOF, KERB = "@", "t", "v", "$", "&", "#", "o", "n", "_", "="
 SIGNS = "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
@@ -23,7 +23,7 @@ FRONT = ("_?_____", "#o#o#o#", "#o#n#o#")   # a building's three rows (? its let
 STREET = 4                                   # the row you drive on
 ACTIONS = ActionSet([("NOOP", "keep your speed"), ("LEFT", "speed up leftward (or slow a rightward car)"),
                      ("RIGHT", "speed up rightward (or slow a leftward car)"),
-                     ("UP", "jump (two rows up, four turns)"), ("DOWN", "brake to a stop"),
+                     ("UP", "jump"), ("DOWN", "brake to a stop"),
                      ("EXAMINE", "stop and search the building you are at")], noop="NOOP")
 LEFT, RIGHT, UP, DOWN, EXAMINE = range(1, 6)
 
@@ -39,6 +39,7 @@ class PrivateEyeParams(ArcadeParams):
     thugs: float = param(0.06, 0, 1)       # chance a thug comes along each turn
     pots: float = param(0.05, 0, 1)        # chance a flowerpot is thrown each turn
     penalty: int = param(40, 0, 500)       # clock turns a flowerpot costs
+    speed: int = param(2, 1, 5)            # the car's top speed (cells a turn)
 
     def check(self) -> None:
         require(self.street >= self.width + 20, "street", "be longer than the view", self.street)
@@ -47,17 +48,16 @@ class PrivateEyeParams(ArcadeParams):
 class PrivateEye(ScrollTask):
     title = "Private Eye"
     rules = ("You are detective Pierre Touche in your car (@) on a street {street} columns long "
-             "(the view, {width} columns, follows you), with {lives_text}. The street is lined with "
-             "buildings, each with its letter on the roof. Each case: (1) the stolen item is hidden "
-             "in one building: stop under a building and EXAMINE it; if the item is there it shows "
-             "($) at a ground-floor window for {pop} turns: jump (UP) into it to take it. (2) Bring "
-             "it to the building the HUD names and EXAMINE there. (3) Le Fiend (&) then shows at one "
-             "window near you after another ({hop} turns at each): jump into him to catch him and "
-             "close the case. Each case has a clock of {clock} turns; when it runs out you lose a "
-             "life and it restarts. Thugs (t) walk the street: touching one on the ground mugs you "
-             "(a life lost), so jump them. Flowerpots (v) thrown from windows cost {penalty} turns "
-             "of clock if they hit you. Speed: LEFT/RIGHT change it by one (at most two cells a "
-             "turn), NOOP keeps it, DOWN stops.")
+             "(the view, {width} columns, follows you), with {lives_text}. Each building has its "
+             "letter on the roof. A case: (1) find the stolen item: stop under a building and "
+             "EXAMINE it; where the item hides it shows ($) at a ground-floor window for {pop} "
+             "turns: jump (UP: {jump_text}) into it. (2) EXAMINE the building the HUD names to "
+             "return it. (3) Le Fiend (&) then shows at windows near you, {hop} turns at each: "
+             "jump into him to close the case. Each case has a {clock}-turn clock; when it runs "
+             "out you lose a life and it restarts. Thugs (t) on the street mug you (a life) "
+             "unless you jump them; a flowerpot (v) from a window costs {penalty} turns of clock. "
+             "LEFT/RIGHT change your speed by one (at most {speed} cells a turn), NOOP keeps it, "
+             "DOWN stops.")
     rewards = "+{unit} for each case closed; {death} when the game is lost."
     ends = "when {goal} cases are closed or the game is lost"
     ACTIONS = ACTIONS
@@ -66,6 +66,9 @@ class PrivateEye(ScrollTask):
     glyphs = {EMPTY: "air", KERB: "kerb", ROOF: "roof", WALL: "wall", WINDOW: "window", DOOR: "door",
               **{s: f"building {s}'s sign" for s in SIGNS}, ITEM: "stolen item", FIEND: "Le Fiend",
               THUG: "thug", POT: "flowerpot", CAR: "you"}
+
+    def prompt_fields(self) -> dict:
+        return {**super().prompt_fields(), "jump_text": jump_text()}
 
     def _setup(self, rng) -> None:
         self.start(rng)
@@ -109,9 +112,9 @@ class PrivateEye(ScrollTask):
         p, x0 = self.params, self.x
         lift = self.leap.lift(self.tick)
         if action == LEFT:
-            self.v = max(-2, self.v - 1)
+            self.v = max(-p.speed, self.v - 1)
         elif action == RIGHT:
-            self.v = min(2, self.v + 1)
+            self.v = min(p.speed, self.v + 1)
         elif action == DOWN:
             self.v = 0
         elif action == UP:

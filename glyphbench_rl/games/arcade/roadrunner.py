@@ -37,6 +37,8 @@ class RoadRunnerParams(ArcadeParams):
     warn: int = param(3, 1, 10)            # turns a rock's shadow shows before it lands
     daze: int = param(8, 1, 50)            # turns the Coyote is out after a mishap
     lead: int = param(12, 3, 40)           # view columns ahead of you
+    mines_from: int = param(2, 1, 99)      # the first level with the Coyote's mines
+    rocks_from: int = param(3, 1, 99)      # the first level with falling rocks
 
     def check(self) -> None:
         require(self.lead < self.width - 2, "lead", "leave room behind you", self.lead)
@@ -51,8 +53,8 @@ class RoadRunner(ScrollTask):
              "Eat birdseed piles (:) by running over them; missing {faint} piles in a row makes you "
              "faint (a life lost). Trucks (T) drive right along the lanes: one that hits you costs "
              "a life, one that hits the Coyote knocks him out. Reach the road's end ({stage} "
-             "columns) for the next level. From level 2 the Coyote's mines (x) lie on the road: "
-             "they blow up only him, so lead him over them. From level 3 rocks fall where a "
+             "columns) for the next level. From level {mines_from} the Coyote's mines (x) lie on "
+             "the road: they blow up only him, so lead him over them. From level {rocks_from} rocks fall where a "
              "shadow (o) shows, {warn} turns later, on you or on him.")
     rewards = ("+{unit} for each seed pile eaten and each time the Coyote is knocked out (truck, "
                "mine or rock); {death} when the game is lost.")
@@ -83,7 +85,7 @@ class RoadRunner(ScrollTask):
             cells[lane][x] = SEED
             self.seeds.append((x, lane))
             x += max(1, p.spacing - 2 + draws.below(5))
-        if self.level >= 2:
+        if self.level >= p.mines_from:
             for _ in range(p.mines * p.stage // 100):
                 x, lane = p.width + draws.below(p.stage - p.width - 1), 1 + draws.below(lanes)
                 if cells[lane][x] == EMPTY:
@@ -126,7 +128,7 @@ class RoadRunner(ScrollTask):
         if self.trucks or self.draws.random() < p.trucks:
             if self._drive():
                 return
-        if self.level >= 3 and (self.falling or self.draws.random() < p.rocks):
+        if self.level >= p.rocks_from and (self.falling or self.draws.random() < p.rocks):
             if self._rocks():
                 return
         if self.tick >= self.out:

@@ -89,13 +89,21 @@ class Course:
         return -1
 
 
+ARC = (1, 2, 2, 1)   # a jump's rows above the ground, turn by turn
+
+
+def jump_text(arc: Sequence[int] = ARC) -> str:
+    """A jump as the prompt says it."""
+    return f"up to {max(arc)} rows high for {len(arc)} turns"
+
+
 class Leap:
     """A jump off the ground line: ``start(tick)`` (only from the ground) lifts the jumper by
     ``arc[i]`` rows on the i-th tick after, then lands it; ``lift(tick)`` is the rows above the
     ground now (0: on it)."""
     __slots__ = ("arc", "since")
 
-    def __init__(self, arc: Sequence[int] = (1, 2, 2, 1)) -> None:
+    def __init__(self, arc: Sequence[int] = ARC) -> None:
         self.arc, self.since = tuple(arc), -len(arc) - 1
 
     def start(self, tick: int) -> bool:
