@@ -414,3 +414,26 @@ def test_privateeye_the_clock_running_out_costs_a_life():
         calm(env)
         env.step("NOOP")
     assert env.lives == env.params.lives - 1 and env.clock.left == env.params.clock
+
+
+def test_roadrunner_road_end_brings_the_next_level_and_rocks_fall_on_runner_or_coyote():
+    from glyphbench_rl.games.arcade.bodies import Body
+    env = make(RR)
+    env.reset(seed=3)
+    p = env.params
+    while env.level < p.rocks_from:                 # run the road to its end, level after level
+        env.d = p.stage - 2
+        env.out = 10 ** 9
+        env.trucks = []
+        env.step("LEFT")
+    assert env.level == p.rocks_from and env.d < p.width
+    assert any("x" in row for row in env.course.rows)      # the Coyote's mines from level 2 on
+    env.out, env.trucks = 0, []
+    env.cd, env.cl = env.d - 6, 1 if env.lane != 1 else 2
+    env.falling = [Body(env.cl, env.cd, data=env.tick + 1)]
+    before = env.score.done
+    env.step("NOOP")
+    assert env.score.done == before + 1 and env.tick < env.out and env.lives == p.lives
+    env.trucks, env.falling = [], [Body(env.lane, env.d, data=env.tick + 1)]
+    env.step("NOOP")
+    assert env.lives == p.lives - 1
