@@ -236,12 +236,14 @@ class JamesBond(ScrollTask):
                 (self.lows.shots, SHOT))
 
     def _marks(self):
-        out = [(self.row, self.x, CAR)]
-        if self.mission >= self.params.laser_from:
-            out.insert(0, (0, self.sat, SAT))
-            if self.aim >= 0:
-                out[1:1] = [(r, self.aim, BEAM) for r in range(1, ROAD + 1)] if self.beam == self.tick else [(1, self.aim, WARN)]
-        return out
+        me = (self.row, self.x, CAR)
+        if self.mission < self.params.laser_from:
+            return (me,)
+        if self.aim < 0:
+            return (0, self.sat, SAT), me
+        if self.beam == self.tick:
+            return [(0, self.sat, SAT)] + [(r, self.aim, BEAM) for r in range(1, ROAD + 1)] + [me]
+        return (0, self.sat, SAT), (1, self.aim, WARN), me
 
     def note_key(self):
         return self.mission, self.x

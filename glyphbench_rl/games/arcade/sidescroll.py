@@ -78,16 +78,6 @@ class Course:
         """World column ``x`` is in the view."""
         return 0 <= x - self.left < self.width
 
-    def find(self, r: int, x: int, glyphs: str, reach: int, step: int = 1) -> int:
-        """The first world column from ``x`` (inclusive) ``reach`` columns on (``step`` +1 or
-        -1) whose row-``r`` cell is one of ``glyphs``; -1 when none."""
-        row = self.rows[r]
-        for i in range(reach):
-            xi = x + i * step
-            if 0 <= xi < self.length and row[xi] in glyphs:
-                return xi
-        return -1
-
 
 ARC = (1, 2, 2, 1)   # a jump's rows above the ground, turn by turn
 

@@ -40,7 +40,7 @@ def test_course_view_follows_and_mirrors():
     fwd = Course(cells, 4)
     fwd.follow(6, lead=2)                       # x at view column 1, two columns ahead of it
     assert fwd.left == 5 and fwd.view() == ["aaXa", "bbbb"] and fwd.screen(6) == 1
-    assert fwd.screen(2) == -1 and fwd.find(0, 3, "X", 5) == 7 and fwd.find(0, 3, "X", 4) == -1
+    assert fwd.screen(2) == -1 and fwd.seen(5) and fwd.seen(8) and not fwd.seen(9)
     fwd.follow(99, lead=2)
     assert fwd.left == 6                        # stops at the course's end
     back = Course(cells, 4, backward=True)
