@@ -188,7 +188,7 @@ class RoadRunner(ScrollTask):
 
     def _rocks(self) -> bool:
         p, course = self.params, self.course
-        if self.draws.random() < p.rocks:   # a new shadow somewhere in the view ahead of you
+        if not self.falling or self.draws.random() < p.rocks:   # a new shadow in the view ahead
             ahead = self.d + 1 + self.draws.below(max(1, course.left + p.width - 1 - self.d))
             self.falling.append(Body(1 + self.draws.below(p.height - 2), ahead, data=self.tick + p.warn))
         kept = []

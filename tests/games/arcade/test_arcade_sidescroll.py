@@ -248,10 +248,11 @@ def test_jamesbond_bombs_crater_the_ground():
 
 def test_jamesbond_satellite_laser_strikes_the_marked_column():
     env = bond_at()
-    env.mission = 3
-    hit = None
+    env.mission = env.params.laser_from
+    hit, warned = None, False
     for _ in range(60):
         quiet(env)
+        warned = warned or (env.aim >= 0 and env.frame.grid[1][env.course.screen(env.aim)] == "!")
         if env.aim >= 0 and env.x != env.aim:
             env.step("RIGHT" if env.aim > env.x else "LEFT")   # drive into the marked column
         else:
@@ -259,7 +260,7 @@ def test_jamesbond_satellite_laser_strikes_the_marked_column():
         if env.lives < env.params.lives:
             hit = env.frame.message
             break
-    assert hit and "laser" in hit
+    assert hit and "laser" in hit and warned and env.frame.grid[0].count("S") == 1
 
 
 def test_jamesbond_shooting_the_target_starts_the_next_mission():
