@@ -31,6 +31,9 @@ Engine-level modules, which the games import (and nothing else of the family):
   tally (``Purse``), falling objects, a pack against gravity, critters that pace or climb;
 - ``sectors``: space games flown over a map of places to enter (a ship that keeps its velocity
   under gravity, rotate-and-thrust ``FlightTask``, ``Sectors`` with the HUD's chart);
+- ``sidescroll``: side-scrolling stages longer than the screen (``Course``: the stage's rows and
+  the view that follows the player, forward or backward; ``Leap``: a jump off the ground line;
+  ``fall``; ``ScrollTask``: the task drawn on a course's view);
 - ``rooms``: ``RoomMap``, the HUD's map of a many-room world's rooms, visited or not.
 """
 
@@ -61,6 +64,7 @@ from . import gopher  # noqa: F401
 from . import gravitar  # noqa: F401
 from . import hero  # noqa: F401
 from . import icehockey  # noqa: F401
+from . import jamesbond  # noqa: F401
 from . import kangaroo  # noqa: F401
 from . import krull  # noqa: F401
 from . import kungfumaster  # noqa: F401
@@ -68,8 +72,10 @@ from . import mspacman  # noqa: F401
 from . import namethisgame  # noqa: F401
 from . import phoenix  # noqa: F401
 from . import pong  # noqa: F401
+from . import privateeye  # noqa: F401
 from . import qbert  # noqa: F401
 from . import riverraid  # noqa: F401
+from . import roadrunner  # noqa: F401
 from . import robotank  # noqa: F401
 from . import seaquest  # noqa: F401
 from . import skiing  # noqa: F401
