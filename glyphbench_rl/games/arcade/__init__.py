@@ -65,6 +65,7 @@ from . import surround  # noqa: F401
 from . import tennis  # noqa: F401
 from . import timepilot  # noqa: F401
 from . import upndown  # noqa: F401
+from . import venture  # noqa: F401
 from . import wizardofwor  # noqa: F401
 from . import yarsrevenge  # noqa: F401
 from . import zaxxon  # noqa: F401

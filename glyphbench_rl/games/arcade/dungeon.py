@@ -1,0 +1,246 @@
+"""Dungeon: worlds of rooms seen one at a time, with monsters that wander and chase, treasures,
+and a bow or gun (venture, tutankham).
+
+``DungeonTask`` is an ``ArenaTask`` (facing fire with a reach, one shot in flight) whose field is
+one room of a world laid out on a ``RoomMap``: ``go(room, r, c)`` shows that room (its rows are
+built once by the game's ``_room(room)`` and kept, so a treasure taken with ``set_still`` stays
+taken) with the monsters it held when you left (or those ``_populate(room)`` adds on a first
+visit), and
+the HUD carries the map of rooms. Monsters (``self.foes``) step every ``every`` ticks: toward you
+when within ``sense`` cells (rows plus columns), else wandering (on along their heading, turning
+at random or when blocked). Touching one, or walking into one, costs a life. A slain monster
+may leave a corpse (``corpse`` ticks) that is as deadly to touch. ``clock`` puts a countdown in the
+HUD (``_time_up()`` when it runs out); ``SIDEWAYS`` games shoot only left or right (the way
+last moved sideways); ``flash()`` slays every monster in the room.
+
+Hooks, besides the arena's: ``_room``, ``_populate``, ``_cross(r, c)`` (you stepped on a
+``LINKS`` cell: a door or passage to another room), ``_take(r, c, ch)`` (you stepped on any
+other cell that is not floor: pick-ups), ``_armed()`` (whether FIRE shoots now), ``worth(foe)``
+(native points for slaying it), ``_time_up()``. ``bonus(points)`` pays native points outside the
+goal's units (kills, keys): shown in the HUD score, not counted toward ``goal``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import ClassVar
+
+from ...core.params import param
+from .arena import EMPTY, FIRE, ArenaParams, ArenaTask
+from .bodies import Body, Countdown
+from .rooms import LEGEND, RoomMap
+
+CORPSE = "%"
+TURNS = ((0, 1), (0, -1), (1, 0), (-1, 0))
+
+
+@dataclass(frozen=True)
+class DungeonParams(ArenaParams):
+    sense: int = param(6, 0, 60)       # a monster this close (rows plus columns) chases you
+    corpse: int = param(0, 0, 200)     # ticks a slain monster's corpse stays, deadly (0: none)
+    clock: int = param(0, 0, 10000)    # ticks on the clock (0: no clock)
+
+
+class DungeonTask(ArenaTask):
+    Params: ClassVar[type] = DungeonParams
+    LINKS: ClassVar[str] = ""              # glyphs of cells that lead to another room
+    IMMUNE: ClassVar[str] = ""             # monster glyphs that shots cannot harm
+    SIDEWAYS: ClassVar[bool] = False       # FIRE only left or right
+    map_legend = LEGEND
+
+    def prompt_fields(self) -> dict:
+        p = self.params
+        return {**super().prompt_fields(), "map_text": f" {LEGEND}.", "unit": f"{p.unit:g}",
+                "turn_text": " A move into a wall only turns you to face it.",
+                "wander_text": (f"Monsters wander; one within {p.sense} cells (rows plus columns) "
+                                f"of you chases you, a step every {p.every} turns. Touching a "
+                                "monster costs a life."),
+                "corpse_text": (f" A slain monster leaves a corpse ({CORPSE}) for {p.corpse} "
+                                "turns that is as deadly to touch.") if p.corpse else ""}
+
+    # -- the world -----------------------------------------------------------------------------------
+    def start_dungeon(self, rng, layout, room, r: int, c: int) -> None:
+        """Call first in ``_setup``: the arena start, the map of rooms, and you in ``room``."""
+        self.start_arena(rng, r, c)
+        self.new_world(layout)
+        self.aim = (0, 1)
+        self.clock = Countdown(self.params.clock) if self.params.clock else None
+        self.go(room, r, c)
+
+    def new_world(self, layout) -> None:
+        """A fresh map of rooms (a new level or zone): every room unbuilt and unvisited."""
+        self.map = RoomMap(layout)
+        self.room = None
+        self._built: dict = {}
+        self.held: dict = {}
+        self.corpses: list[Body] = []
+
+    def go(self, room, r: int, c: int) -> None:
+        """Show ``room`` with you at (r, c) (where you come back after a life lost there)."""
+        if self.room is not None:
+            self.held[self.room] = self.foes
+        self.room = room
+        rows = self._built.get(room)
+        if rows is None:
+            rows = self._built[room] = self._room(room)
+        self.still = rows
+        self.still_version += 1
+        self.r, self.c = self.home = (r, c)
+        self.corpses = []
+        if room in self.held:
+            self.foes = self.held.pop(room)
+        else:
+            self.foes = []
+            self._populate(room)
+        self.gun.shots, self.shells.shots = [], []
+        self.entered = self.tick
+        self.map.enter(*room)
+
+    def rows_of(self, room) -> list[str]:
+        """The kept rows of ``room`` (built now if it was never shown): change one to change it."""
+        rows = self._built.get(room)
+        if rows is None:
+            rows = self._built[room] = self._room(room)
+        return rows
+
+    # -- one tick ------------------------------------------------------------------------------------
+    def _play(self, action: int) -> None:
+        if action == FIRE:
+            if not self._armed():
+                action = 0
+            elif self.SIDEWAYS:
+                self.face = self.aim
+        d = self.MOVES[action]
+        if d is not None and d[1]:
+            self.aim = d
+        super()._play(action)
+        if self.done:
+            return
+        if self.corpses:
+            self.corpses = [b for b in self.corpses if b.data > self.tick]
+        if self.clock is not None and self.clock.left and self.clock.tick():
+            self._time_up()
+
+    def _enter(self, r: int, c: int) -> bool:
+        if self.foe_at(r, c) is not None or self.corpse_at(r, c):
+            self._killed(self.caught_text)
+            return True
+        ch = self.still[r][c]
+        if ch in self.LINKS:
+            self._cross(r, c)
+            return True
+        if ch != EMPTY and ch not in self.SOLID:
+            self._take(r, c, ch)
+        return False
+
+    def corpse_at(self, r: int, c: int) -> bool:
+        for b in self.corpses:
+            if b.r == r and b.c == c:
+                return True
+        return False
+
+    def _march(self) -> bool:
+        """Every monster takes a step: chasing when near, else wandering."""
+        p = self.params
+        h, w, still, solid, links = p.height, p.width, self.still, self.SOLID, self.LINKS
+        pr, pc, sense = self.r, self.c, p.sense
+        taken = {f.r * w + f.c for f in self.foes}
+        taken.update(b.r * w + b.c for b in self.corpses)
+        for foe in self.foes:
+            fr, fc = foe.r, foe.c
+            dr, dc = pr - fr, pc - fc
+            ar, ac = (dr if dr > 0 else -dr), (dc if dc > 0 else -dc)
+            sr, sc = (dr > 0) - (dr < 0), (dc > 0) - (dc < 0)
+            if ar + ac <= sense:
+                first = ((sr, 0), (0, sc)) if ar >= ac else ((0, sc), (sr, 0))
+                steps = (*first, (foe.dr, foe.dc), *TURNS)
+            elif foe.dr or foe.dc:
+                steps = ((foe.dr, foe.dc),) if self.draws.random() < 0.8 else ()
+                k = self.draws.below(4)
+                steps += TURNS[k:] + TURNS[:k]
+            else:
+                k = self.draws.below(4)
+                steps = TURNS[k:] + TURNS[:k]
+            for sr, sc in steps:
+                if not (sr or sc):
+                    continue
+                r, c = fr + sr, fc + sc
+                if (r == pr and c == pc) or (0 <= r < h and 0 <= c < w and r * w + c not in taken
+                                             and still[r][c] not in solid and still[r][c] not in links):
+                    taken.discard(fr * w + fc)
+                    taken.add(r * w + c)
+                    foe.r, foe.c, foe.dr, foe.dc = r, c, sr, sc
+                    break
+        return self._caught()
+
+    # -- slaying -------------------------------------------------------------------------------------
+    def _hit(self, foe: Body) -> None:
+        if foe.glyph in self.IMMUNE:
+            return
+        foe.data -= 1
+        if foe.data <= 0:
+            self.slay(foe)
+
+    def slay(self, foe: Body) -> None:
+        self.foes.remove(foe)
+        self.kills += 1
+        if self.params.corpse:
+            self.corpses.append(Body(foe.r, foe.c, 0, 0, CORPSE, self.tick + self.params.corpse))
+        self.say(f"You slew a {self.vocab().get(foe.glyph, self.foe_name)}.")
+        self.bonus(self.worth(foe))
+
+    def flash(self) -> int:
+        """Slay every monster in the room that can be slain; how many."""
+        doomed = [f for f in self.foes if f.glyph not in self.IMMUNE]
+        for f in doomed:
+            self.slay(f)
+        return len(doomed)
+
+    def bonus(self, points: float) -> None:
+        """Native points outside the goal's units: in the HUD score and the reward."""
+        if points:
+            self.score.points += points
+            self.score.shown = None
+            self.reward(points)
+
+    # -- hooks ---------------------------------------------------------------------------------------
+    def _room(self, room) -> list[str]:
+        raise NotImplementedError
+
+    def _populate(self, room) -> None:
+        """Place the monsters of a room shown for the first time (``add_foe``)."""
+
+    def _cross(self, r: int, c: int) -> None:
+        """You stepped on a ``LINKS`` cell at (r, c)."""
+
+    def _take(self, r: int, c: int, ch: str) -> None:
+        """You step on (r, c), which holds ``ch`` (a pick-up)."""
+
+    def _armed(self) -> bool:
+        return True
+
+    def worth(self, foe: Body) -> float:
+        return 0.0
+
+    def _time_up(self) -> None:
+        """The clock ran out."""
+
+    def _respawn(self) -> None:
+        super()._respawn()
+        self.corpses = [b for b in self.corpses if abs(b.r - self.r) + abs(b.c - self.c) > 1]
+
+    def _below(self):
+        return [(b.r, b.c, CORPSE) for b in self.corpses]
+
+    def _extra_hud(self) -> str:
+        if self.clock is None:
+            return self.map.hud()
+        if self._shown_clock != (self.clock.left, self.map.hud()):
+            self._shown_clock = (self.clock.left, self.map.hud())
+            self._clock_text = f"{self.map.hud()} | Time {self.clock.left}"
+        return self._clock_text
+
+    _shown_clock = None
+
+
+__all__ = ["CORPSE", "DungeonParams", "DungeonTask"]
