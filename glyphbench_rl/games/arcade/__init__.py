@@ -64,6 +64,7 @@ from . import stargunner  # noqa: F401
 from . import surround  # noqa: F401
 from . import tennis  # noqa: F401
 from . import timepilot  # noqa: F401
+from . import tutankham  # noqa: F401
 from . import upndown  # noqa: F401
 from . import venture  # noqa: F401
 from . import wizardofwor  # noqa: F401

@@ -200,3 +200,101 @@ def test_venture_four_treasures_start_a_new_level():
     assert env.score.done == 4 and not env.done and env.map.visited == {(1, 1)}
     env.go((0, 0), 1, 1)
     assert env._kind((0, 0)) not in kinds and "$" in "".join(env.still)
+
+
+# -- tutankham ----------------------------------------------------------------------------------------
+TUT = "glyphbench/atari-tutankham-v0"
+
+
+def explorer_of_the_tomb(env) -> int:
+    """Loot this chamber, then head for the key's chamber (or, key in hand, the door's)."""
+    here = env.room[1]
+    loot = cells_of(env, "$") | (set() if env.key else cells_of(env, "k"))
+    if loot:
+        return explorer(env, loot)
+    want = next((k for k, rows in enumerate(env.plan) if "k" in "".join(rows)), None)
+    if env.key or want is None:
+        want = env.params.chambers - 1
+    if want == here:
+        targets = cells_of(env, "D") if env.key else set()
+    else:
+        side = env.params.width - 1 if want > here else 0
+        targets = {(r, c) for r, c in cells_of(env, "+") if c == side}
+    return explorer(env, targets) if targets else explorer(env, set())
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_tutankham_explorer_loots_chambers_and_opens_the_door(seed):
+    env, info = play(TUT, explorer_of_the_tomb, seed, turns=1500)
+    assert env.score.done >= 3 and len(env.map.visited) >= 3 or env.zone > 1
+    assert env.episode_return >= 3 * env.params.unit
+
+
+def test_tutankham_a_still_explorer_is_hunted_down():
+    env, info = play(TUT, lambda e: NOOP, 0, turns=3000)
+    assert info["won"] is False and env.lives == 0 and env.episode_return == pytest.approx(-1.0)
+
+
+def bare_chamber(seed=0):
+    env = make(TUT)
+    env.reset(seed=seed)
+    env.foes[:] = []
+    env.born = 10 ** 6                      # no creature comes out during the test
+    return env
+
+
+def test_tutankham_fires_sideways_only_and_the_clock_spends_the_gun():
+    env = bare_chamber()
+    env.step(UP)
+    env.step(DOWN)                           # facing down, aiming right (the start's aim)
+    assert env.face == (1, 0) and env.aim == (0, 1)
+    right = env.add_foe(env.r, env.c + 2, glyph="M")
+    env.step(FIRE)
+    assert right not in env.foes and env.episode_return == pytest.approx(40)
+    assert env.frame.grid[env.r][env.c] == ">"
+    env.clock.left = 1
+    env.step(NOOP)
+    assert env.clock.left == 0
+    foe = env.add_foe(env.r, env.c + 2, glyph="B")
+    env.step(FIRE)
+    assert foe in env.foes and not env.gun.shots
+
+
+def test_tutankham_the_flash_bomb_slays_the_screen_once_a_life():
+    env = bare_chamber()
+    for k in range(3):
+        env.add_foe(13, 3 + 5 * k, glyph="SMB"[k])
+    env.step(6)
+    assert not env.foes and env.episode_return == pytest.approx(120) and env.flashes == 0
+    env.add_foe(13, 5, glyph="S")
+    env.step(6)
+    assert len(env.foes) == 1                # none left this life
+    env.lose_life("test")
+    assert env.flashes == 1
+
+
+def test_tutankham_the_key_opens_the_door_to_the_next_zone():
+    env = bare_chamber()
+    last = (0, env.params.chambers - 1)
+    door = next((r, c) for r, row in enumerate(env.plan[last[1]]) for c, ch in enumerate(row) if ch == "D")
+    env.go(last, door[0], door[1] - 1)
+    env.foes[:] = []
+    env.step(RIGHT)
+    assert env.zone == 1 and env.room == last and env.score.done == 0       # locked
+    env.key = True
+    env.step(RIGHT)
+    assert env.zone == 2 and env.room == (0, 0) and env.score.done == 1 and not env.key
+    assert env.map.visited == {(0, 0)} and env.clock.left >= env.params.clock - 1
+
+
+def test_tutankham_passages_join_neighbouring_chambers_and_creatures_come_from_nests():
+    env = bare_chamber(1)
+    passage = next((r, c) for r, c in cells_of(env, "+") if c == env.params.width - 1)
+    env.r, env.c = passage[0], passage[1] - 1
+    env.step(RIGHT)
+    assert env.room == (0, 1) and (env.r, env.c) == (passage[0], 1) and env.map.hud().startswith("Map +@")
+    nest = env.nests[1]
+    for _ in range(env.params.spawn + 1):
+        env.step(NOOP)
+    assert env.foes and abs(env.foes[0].r - nest[0]) + abs(env.foes[0].c - nest[1]) <= 2
+    assert env.foes[0].glyph == nest[2]
