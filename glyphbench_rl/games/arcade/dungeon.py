@@ -32,6 +32,7 @@ from .rooms import LEGEND, RoomMap
 
 CORPSE = "%"
 TURNS = ((0, 1), (0, -1), (1, 0), (-1, 0))
+WANDER = tuple(TURNS[k:] + TURNS[:k] for k in range(4))   # the four ways, from a random one
 
 
 @dataclass(frozen=True)
@@ -105,15 +106,14 @@ class DungeonTask(ArenaTask):
 
     # -- one tick ------------------------------------------------------------------------------------
     def _play(self, action: int) -> None:
-        if action == FIRE:
-            if not self._armed():
-                action = 0
-            elif self.SIDEWAYS:
-                self.face = self.aim
+        if action == FIRE and not self._armed():
+            action = 0
         d = self.MOVES[action]
         if d is not None and d[1]:
             self.aim = d
         super()._play(action)
+        if self.SIDEWAYS:
+            self.face = self.aim               # (drawn as the way the gun points)
         if self.done:
             return
         if self.corpses:
@@ -141,32 +141,31 @@ class DungeonTask(ArenaTask):
 
     def _march(self) -> bool:
         """Every monster takes a step: chasing when near, else wandering."""
+        foes = self.foes
+        if not foes:
+            return False
         p = self.params
         h, w, still, solid, links = p.height, p.width, self.still, self.SOLID, self.LINKS
-        pr, pc, sense = self.r, self.c, p.sense
-        taken = {f.r * w + f.c for f in self.foes}
-        taken.update(b.r * w + b.c for b in self.corpses)
-        for foe in self.foes:
-            fr, fc = foe.r, foe.c
+        pr, pc, sense, draws = self.r, self.c, p.sense, self.draws
+        taken = {f.r * w + f.c for f in foes}
+        for b in self.corpses:
+            taken.add(b.r * w + b.c)
+        for foe in foes:
+            fr, fc, hr, hc = foe.r, foe.c, foe.dr, foe.dc
             dr, dc = pr - fr, pc - fc
             ar, ac = (dr if dr > 0 else -dr), (dc if dc > 0 else -dc)
-            sr, sc = (dr > 0) - (dr < 0), (dc > 0) - (dc < 0)
             if ar + ac <= sense:
-                first = ((sr, 0), (0, sc)) if ar >= ac else ((0, sc), (sr, 0))
-                steps = (*first, (foe.dr, foe.dc), *TURNS)
-            elif foe.dr or foe.dc:
-                steps = ((foe.dr, foe.dc),) if self.draws.random() < 0.8 else ()
-                k = self.draws.below(4)
-                steps += TURNS[k:] + TURNS[:k]
+                sr, sc = (dr > 0) - (dr < 0), (dc > 0) - (dc < 0)
+                steps = (((sr, 0), (0, sc)) if ar >= ac else ((0, sc), (sr, 0))) + ((hr, hc),) + TURNS
+            elif (hr or hc) and draws.random() < 0.8:        # on along its heading, mostly
+                steps = ((hr, hc),) + WANDER[draws.below(4)]
             else:
-                k = self.draws.below(4)
-                steps = TURNS[k:] + TURNS[:k]
+                steps = WANDER[draws.below(4)]
             for sr, sc in steps:
-                if not (sr or sc):
-                    continue
                 r, c = fr + sr, fc + sc
-                if (r == pr and c == pc) or (0 <= r < h and 0 <= c < w and r * w + c not in taken
-                                             and still[r][c] not in solid and still[r][c] not in links):
+                if (r == pr and c == pc) or ((sr or sc) and 0 <= r < h and 0 <= c < w
+                                             and r * w + c not in taken and still[r][c] not in solid
+                                             and still[r][c] not in links):
                     taken.discard(fr * w + fc)
                     taken.add(r * w + c)
                     foe.r, foe.c, foe.dr, foe.dc = r, c, sr, sc

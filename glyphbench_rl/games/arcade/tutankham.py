@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 from ...core.actions import ActionSet
 from ...core.params import param
-from .arena import EMPTY, MOVES4, SHOT, WALL, you_glyphs
+from .arena import EMPTY, MOVES4, SHOT, WALL
 from .dungeon import DungeonParams, DungeonTask
 from .engine import register_atari
 
@@ -65,7 +65,7 @@ class Tutankham(DungeonTask):
     caught_text = "A creature got you."
     glyphs = {EMPTY: "floor", WALL: "wall", PASS: "passage to the next chamber", DOOR: "locked exit door",
               KEY: "key", GOLD: "treasure", NEST: "nest", **{g: name for name, g, _ in CREATURES},
-              SHOT: "your shot", **you_glyphs()}
+              SHOT: "your shot", "<": "you (aiming left)", ">": "you (aiming right)"}
 
     def prompt_fields(self) -> dict:
         return {**super().prompt_fields(), "pass_": PASS, "gold": GOLD, "key_": KEY, "door": DOOR,
@@ -181,11 +181,11 @@ class Tutankham(DungeonTask):
         self.flashes, self.born = 1, self.tick
 
     def _extra_hud(self) -> str:
-        base = super()._extra_hud()
-        state = (base, self.key, self.flashes)
+        state = (self.clock.left if self.clock else 0, self.zone, self.room, self.key, self.flashes)
         if state != self._state:
             self._state = state
-            self._text = f"{base} | Key {'yes' if self.key else 'no'} | Flash {self.flashes}"
+            self._text = (f"{super()._extra_hud()} | Key {'yes' if self.key else 'no'} | "
+                          f"Flash {self.flashes}")
         return self._text
 
     _state = None

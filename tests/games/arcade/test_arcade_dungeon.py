@@ -246,8 +246,8 @@ def bare_chamber(seed=0):
 def test_tutankham_fires_sideways_only_and_the_clock_spends_the_gun():
     env = bare_chamber()
     env.step(UP)
-    env.step(DOWN)                           # facing down, aiming right (the start's aim)
-    assert env.face == (1, 0) and env.aim == (0, 1)
+    env.step(DOWN)                           # moved down, still aiming right (the start's aim)
+    assert env.aim == (0, 1) and env.frame.grid[env.r][env.c] == ">"
     right = env.add_foe(env.r, env.c + 2, glyph="M")
     env.step(FIRE)
     assert right not in env.foes and env.episode_return == pytest.approx(40)
