@@ -37,6 +37,8 @@ WANDER = tuple(TURNS[k:] + TURNS[:k] for k in range(4))   # the four ways, from 
 
 @dataclass(frozen=True)
 class DungeonParams(ArenaParams):
+    width: int = param(20, 12, 40)
+    height: int = param(16, 10, 30)
     sense: int = param(6, 0, 60)       # a monster this close (rows plus columns) chases you
     corpse: int = param(0, 0, 200)     # ticks a slain monster's corpse stays, deadly (0: none)
     clock: int = param(0, 0, 10000)    # ticks on the clock (0: no clock)

@@ -32,8 +32,6 @@ ACTIONS = ActionSet([("NOOP", "wait a turn"), ("UP", "move up a cell"), ("DOWN",
 
 @dataclass(frozen=True)
 class TutankhamParams(DungeonParams):
-    width: int = param(20, 12, 40)
-    height: int = param(16, 10, 30)
     chambers: int = param(4, 2, 12)      # chambers in a zone
     treasures: int = param(3, 0, 20)     # treasures in a zone
     foes: int = param(3, 0, 10)          # creatures in a chamber at once (at most)

@@ -28,8 +28,6 @@ STEP = {"top": (-1, 0), "bottom": (1, 0), "left": (0, -1), "right": (0, 1)}
 
 @dataclass(frozen=True)
 class VentureParams(DungeonParams):
-    width: int = param(20, 16, 40)
-    height: int = param(16, 12, 30)
     foes: int = param(3, 0, 8)           # monsters in each room
     hallers: int = param(3, 0, 6)        # hallmonsters in the hallway
     linger: int = param(60, 0, 2000)     # turns in a room before a hallmonster comes in (0: never)
