@@ -11,7 +11,9 @@ when within ``sense`` cells (rows plus columns), else wandering (on along their 
 at random or when blocked). Touching one, or walking into one, costs a life. A slain monster
 may leave a corpse (``corpse`` ticks) that is as deadly to touch. ``clock`` puts a countdown in the
 HUD (``_time_up()`` when it runs out); ``SIDEWAYS`` games shoot only left or right (the way
-last moved sideways); ``flash()`` slays every monster in the room.
+last moved sideways); ``flash()`` slays every monster in the room. ``linger``: after that many
+ticks in a room where ``_haunted(room)``, a hunter (``HUNTER``, not to be harmed) comes in through
+the walls at the far corner and floats a cell toward you every other tick.
 
 Hooks, besides the arena's: ``_room``, ``_populate``, ``_cross(r, c)`` (you stepped on a
 ``LINKS`` cell: a door or passage to another room), ``_take(r, c, ch)`` (you stepped on any
@@ -30,7 +32,8 @@ from .arena import EMPTY, FIRE, ArenaParams, ArenaTask
 from .bodies import Body, Countdown
 from .rooms import LEGEND, RoomMap
 
-CORPSE = "%"
+CORPSE, HUNTER = "%", "H"
+SIDES = {"top": (-1, 0), "bottom": (1, 0), "left": (0, -1), "right": (0, 1)}   # outward steps
 TURNS = ((0, 1), (0, -1), (1, 0), (-1, 0))
 WANDER = tuple(TURNS[k:] + TURNS[:k] for k in range(4))   # the four ways, from a random one
 
@@ -42,6 +45,7 @@ class DungeonParams(ArenaParams):
     sense: int = param(6, 0, 60)       # a monster this close (rows plus columns) chases you
     corpse: int = param(0, 0, 200)     # ticks a slain monster's corpse stays, deadly (0: none)
     clock: int = param(0, 0, 10000)    # ticks on the clock (0: no clock)
+    linger: int = param(0, 0, 2000)    # ticks in a room before a hunter comes in (0: never)
 
 
 class DungeonTask(ArenaTask):
@@ -59,7 +63,12 @@ class DungeonTask(ArenaTask):
                                 f"of you chases you, a step every {p.every} turns. Touching a "
                                 "monster costs a life."),
                 "corpse_text": (f" A slain monster leaves a corpse ({CORPSE}) for {p.corpse} "
-                                "turns that is as deadly to touch.") if p.corpse else ""}
+                                "turns that is as deadly to touch.") if p.corpse else "",
+                "linger_text": (f" After {p.linger} turns in a room a {self.hunter_name} ({HUNTER}) "
+                                "comes in through the walls and floats a cell toward you every "
+                                "other turn.") if p.linger else ""}
+
+    hunter_name = "hunter"
 
     # -- the world -----------------------------------------------------------------------------------
     def start_dungeon(self, rng, layout, room, r: int, c: int) -> None:
@@ -96,7 +105,7 @@ class DungeonTask(ArenaTask):
             self.foes = []
             self._populate(room)
         self.gun.shots, self.shells.shots = [], []
-        self.entered = self.tick
+        self.entered, self.prowler = self.tick, None
         self.map.enter(*room)
 
     def rows_of(self, room) -> list[str]:
@@ -122,6 +131,22 @@ class DungeonTask(ArenaTask):
             self.corpses = [b for b in self.corpses if b.data > self.tick]
         if self.clock is not None and self.clock.left and self.clock.tick():
             self._time_up()
+        if self.params.linger and self._haunted(self.room):
+            self._prowl()
+
+    def _prowl(self) -> None:
+        p, o = self.params, self.prowler
+        if o is None:
+            if self.tick - self.entered >= p.linger:
+                self.prowler = [1 if self.r > p.height // 2 else p.height - 2,
+                                1 if self.c > p.width // 2 else p.width - 2]
+                self.say(f"A {self.hunter_name} is coming in!")
+            return
+        if self.tick % 2 == 0:
+            o[0] += (self.r > o[0]) - (self.r < o[0])
+            o[1] += (self.c > o[1]) - (self.c < o[1])
+        if o[0] == self.r and o[1] == self.c:
+            self._killed(f"The {self.hunter_name} got you.")
 
     def _enter(self, r: int, c: int) -> bool:
         if self.foe_at(r, c) is not None or self.corpse_at(r, c):
@@ -226,12 +251,20 @@ class DungeonTask(ArenaTask):
     def _time_up(self) -> None:
         """The clock ran out."""
 
+    def _haunted(self, room) -> bool:
+        """Whether a hunter comes after you for lingering in ``room``."""
+        return True
+
     def _respawn(self) -> None:
         super()._respawn()
         self.corpses = [b for b in self.corpses if abs(b.r - self.r) + abs(b.c - self.c) > 1]
+        self.prowler, self.entered = None, self.tick
 
     def _below(self):
         return [(b.r, b.c, CORPSE) for b in self.corpses]
+
+    def _above(self):
+        return () if self.prowler is None else ((self.prowler[0], self.prowler[1], HUNTER),)
 
     def _extra_hud(self) -> str:
         if self.clock is None:
@@ -244,4 +277,18 @@ class DungeonTask(ArenaTask):
     _shown_clock = None
 
 
-__all__ = ["CORPSE", "DungeonParams", "DungeonTask"]
+def side_cell(box: tuple[int, int, int, int], side: str) -> tuple[int, int]:
+    """The middle cell of a side of the box (top, left, bottom, right): where its door is."""
+    t, l, b, r = box
+    return {"top": (t, (l + r) // 2), "bottom": (b, (l + r) // 2),
+            "left": ((t + b) // 2, l), "right": ((t + b) // 2, r)}[side]
+
+
+def free_near(grid, r: int, c: int) -> tuple[int, int]:
+    """The floor cell of ``grid`` (rows of cells) nearest (r, c)."""
+    cells = [(abs(i - r) + abs(j - c), i, j) for i, row in enumerate(grid)
+             for j, ch in enumerate(row) if ch == EMPTY]
+    return min(cells)[1:]
+
+
+__all__ = ["CORPSE", "HUNTER", "SIDES", "DungeonParams", "DungeonTask", "free_near", "side_cell"]

@@ -16,21 +16,19 @@ from dataclasses import dataclass
 
 from ...core.params import param
 from .arena import EMPTY, SHOT, WALL, you_glyphs
-from .dungeon import CORPSE, DungeonParams, DungeonTask
+from .dungeon import CORPSE, HUNTER, SIDES, DungeonParams, DungeonTask, free_near, side_cell
 from .engine import register_atari
 
-HALL, DOOR, GOLD, INSIDE, HALLER = (1, 1), "D", "$", ":", "H"
+HALL, DOOR, GOLD, INSIDE, HALLER = (1, 1), "D", "$", ":", HUNTER
 LAYOUT = ("#.#", ".#.", "#.#")            # the four rooms at the corners, the hallway between
 ROOMS = (("serpent", "S"), ("skeleton", "K"), ("goblin", "G"), ("spider", "X"),
          ("troll", "T"), ("dragon", "R"), ("bat", "B"), ("zombie", "Z"))
-STEP = {"top": (-1, 0), "bottom": (1, 0), "left": (0, -1), "right": (0, 1)}
 
 
 @dataclass(frozen=True)
 class VentureParams(DungeonParams):
     foes: int = param(3, 0, 8)           # monsters in each room
     hallers: int = param(3, 0, 6)        # hallmonsters in the hallway
-    linger: int = param(60, 0, 2000)     # turns in a room before a hallmonster comes in (0: never)
     kill: int = param(100, 0, 10000)     # points per monster slain once its room's treasure is taken
 
 
@@ -42,9 +40,8 @@ class Venture(DungeonTask):
              "that room: it fills the screen, with its treasure ({gold}) guarded by monsters. Step "
              "on the treasure to take it and leave by a door. {wander_text} FIRE shoots an arrow "
              "(*) {reach} cells the way you face, one at a time, in rooms only; it slays the "
-             "first monster it meets.{corpse_text}{turn_text}{linger_text} When the four "
-             "treasures of a level are taken, leaving the room starts the next level with four "
-             "new rooms.{map_text}")
+             "first monster it meets.{corpse_text}{turn_text}{linger_text}{level_text}{map_text} "
+             "The hallway is the middle of the map, the rooms its corners.")
     rewards = ("+{unit} for each treasure; +{kill} times the level for each monster slain in a room "
                "whose treasure you hold; {death} when the game is lost.")
     ends = "when you have taken {goal} treasures or the game is lost"
@@ -52,19 +49,18 @@ class Venture(DungeonTask):
     pattern = "D"
     LINKS, IMMUNE, FOE = DOOR, HALLER, HALLER
     SOLID = frozenset((WALL, INSIDE))
-    caught_text = "A monster got you."
+    caught_text, hunter_name = "A monster got you.", "hallmonster"
     glyphs = {EMPTY: "floor", WALL: "wall", INSIDE: "inside a room (enter by its door)",
               DOOR: "door", GOLD: "treasure", HALLER: "hallmonster", CORPSE: "corpse (deadly)",
               **{g: name for name, g in ROOMS}, SHOT: "your arrow", **you_glyphs()}
 
     def prompt_fields(self) -> dict:
-        p = self.params
-        return {**super().prompt_fields(), "gold": GOLD, "linger_text": (
-            f" After {p.linger} turns in a room a hallmonster (H) comes in through the walls and "
-            "floats a cell toward you every other turn.") if p.linger else ""}
+        return {**super().prompt_fields(), "gold": GOLD, "level_text": (
+            " When the four treasures of a level are taken, leaving the room starts the next "
+            "level with four new rooms.") if self.params.goal > len(ROOMS) // 2 else ""}
 
     def _setup(self, rng) -> None:
-        self.level, self.prowler = 1, None
+        self.level = 1
         self._level()
         self.start_dungeon(rng, LAYOUT, HALL, *self._start())
 
@@ -84,14 +80,8 @@ class Venture(DungeonTask):
             sides = (("bottom" if room[0] == 0 else "top") if inner else ("top" if room[0] == 0 else "bottom"),
                      ("right" if room[1] == 0 else "left") if inner else ("left" if room[1] == 0 else "right"))
             for side in sides:
-                self.doors[self._door(box, side)] = (room, side)
+                self.doors[side_cell(box, side)] = (room, side)
             self.left.add(room)
-
-    @staticmethod
-    def _door(box, side) -> tuple[int, int]:
-        t, l, b, r = box
-        return {"top": (t, (l + r) // 2), "bottom": (b, (l + r) // 2),
-                "left": ((t + b) // 2, l), "right": ((t + b) // 2, r)}[side]
 
     def _room(self, room) -> list[str]:
         p = self.params
@@ -112,7 +102,7 @@ class Venture(DungeonTask):
             grid[i][j] = WALL
         for cell, (key, side) in self.doors.items():
             if key == room:
-                i, j = self._door((0, 0, h - 1, w - 1), side)
+                i, j = side_cell((0, 0, h - 1, w - 1), side)
                 grid[i][j] = DOOR
         i, j = free_near(grid, h // 2, w // 2)
         grid[i][j] = GOLD
@@ -139,16 +129,15 @@ class Venture(DungeonTask):
         if self.room == HALL:
             room, side = self.doors[(r, c)]
             p = self.params
-            i, j = self._door((0, 0, p.height - 1, p.width - 1), side)
-            dr, dc = STEP[side]
+            i, j = side_cell((0, 0, p.height - 1, p.width - 1), side)
+            dr, dc = SIDES[side]
             self.go(room, i - dr, j - dc)
             self.say(f"You enter the {ROOMS[self._kind(room)][0]} room.")
             return
         frame = (0, 0, self.params.height - 1, self.params.width - 1)
         cell, side = next((cell, side) for cell, (key, side) in self.doors.items()
-                          if key == self.room and self._door(frame, side) == (r, c))
-        dr, dc = STEP[side]
-        self.prowler = None
+                          if key == self.room and side_cell(frame, side) == (r, c))
+        dr, dc = SIDES[side]
         self.held.pop(HALL, None)              # the hallmonsters are back at their posts
         if self.left:
             self.go(HALL, cell[0] + dr, cell[1] + dc)
@@ -176,28 +165,8 @@ class Venture(DungeonTask):
     def worth(self, foe) -> float:
         return 0.0 if self.room in self.left else self.params.kill * self.level
 
-    def _turn(self) -> None:
-        p = self.params
-        if self.room == HALL or not p.linger:
-            return
-        if self.prowler is None:
-            if self.tick - self.entered >= p.linger:
-                self.prowler = [1 if self.r > p.height // 2 else p.height - 2,
-                                1 if self.c > p.width // 2 else p.width - 2]
-                self.say("A hallmonster is coming in!")
-        elif self.tick % 2 == 0:
-            o = self.prowler
-            o[0] += (self.r > o[0]) - (self.r < o[0])
-            o[1] += (self.c > o[1]) - (self.c < o[1])
-        if self.prowler == [self.r, self.c]:
-            self._killed("The hallmonster got you.")
-
-    def _respawn(self) -> None:
-        super()._respawn()
-        self.prowler, self.entered = None, self.tick
-
-    def _above(self):
-        return () if self.prowler is None else ((self.prowler[0], self.prowler[1], HALLER),)
+    def _haunted(self, room) -> bool:
+        return room != HALL
 
 
 def walls(kind: int, h: int, w: int) -> list[tuple[int, int]]:
@@ -220,13 +189,6 @@ def walls(kind: int, h: int, w: int) -> list[tuple[int, int]]:
             cells += [(i, j) for j in range(3 + 2 * (kind == 4), w - 3, 4)]
     mr, mc = (h - 1) // 2, (w - 1) // 2                   # the doors' inner cells stay open
     return [(i, j) for i, j in cells if (i, j) not in ((mr, 1), (mr, w - 2), (1, mc), (h - 2, mc))]
-
-
-def free_near(grid, r: int, c: int) -> tuple[int, int]:
-    """The floor cell nearest (r, c)."""
-    cells = [(abs(i - r) + abs(j - c), i, j) for i in range(len(grid)) for j in range(len(grid[0]))
-             if grid[i][j] == EMPTY]
-    return min(cells)[1:]
 
 
 register_atari(Venture, "venture", width=20, height=16, lives=4, goal=4, unit=200.0, foes=3,
