@@ -53,7 +53,6 @@ class DungeonTask(ArenaTask):
     LINKS: ClassVar[str] = ""              # glyphs of cells that lead to another room
     IMMUNE: ClassVar[str] = ""             # monster glyphs that shots cannot harm
     SIDEWAYS: ClassVar[bool] = False       # FIRE only left or right
-    map_legend = LEGEND
 
     def prompt_fields(self) -> dict:
         p = self.params
@@ -92,15 +91,15 @@ class DungeonTask(ArenaTask):
         if self.room is not None:
             self.held[self.room] = self.foes
         self.room = room
-        rows = self._built.get(room)
-        if rows is None:
-            rows = self._built[room] = self._room(room)
-        self.still = rows
+        self.still = self.rows_of(room)
         self.still_version += 1
         self.r, self.c = self.home = (r, c)
         self.corpses = []
         if room in self.held:
             self.foes = self.held.pop(room)
+            for foe in self.foes:             # none waiting right at the door
+                if abs(foe.r - r) + abs(foe.c - c) < 3:
+                    foe.r, foe.c = self.spot(4)
         else:
             self.foes = []
             self._populate(room)

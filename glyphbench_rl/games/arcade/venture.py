@@ -121,9 +121,14 @@ class Venture(DungeonTask):
             return
         glyph = ROOMS[self._kind(room)][1]
         gr, gc = next((i, j) for i, row in enumerate(self.still) for j, ch in enumerate(row) if ch == GOLD)
+        rows = range(max(1, gr - 4), min(p.height - 1, gr + 5))
+        cols = range(max(1, gc - 6), min(p.width - 1, gc + 7))
         for _ in range(p.foes):
-            self.add_foe(*self.spot(6, range(max(1, gr - 4), min(p.height - 1, gr + 5)),
-                                    range(max(1, gc - 6), min(p.width - 1, gc + 7))), glyph=glyph)
+            for _ in range(9):                        # guards stand beside the treasure, not on it
+                r, c = self.spot(6, rows, cols)
+                if self.still[r][c] == EMPTY:
+                    break
+            self.add_foe(r, c, glyph=glyph)
 
     def _cross(self, r: int, c: int) -> None:
         if self.room == HALL:
