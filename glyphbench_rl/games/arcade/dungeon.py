@@ -6,9 +6,9 @@ one room of a world laid out on a ``RoomMap``: ``go(room, r, c)`` shows that roo
 built once by the game's ``_room(room)`` and kept, so a treasure taken with ``set_still`` stays
 taken) with the monsters it held when you left (or those ``_populate(room)`` adds on a first
 visit), and
-the HUD carries the map of rooms. Monsters (``self.foes``) step every ``every`` ticks: toward you
-when within ``sense`` cells (rows plus columns), else wandering (on along their heading, turning
-at random or when blocked). Touching one, or walking into one, costs a life. A slain monster
+the HUD carries the map of rooms. Monsters (``self.foes``) step every ``every`` ticks: down the
+shortest way toward you when within ``sense`` steps, else wandering (on along their heading,
+turning at random or when blocked, back only at a dead end). Touching one, or walking into one, costs a life. A slain monster
 may leave a corpse (``corpse`` ticks) that is as deadly to touch. ``clock`` puts a countdown in the
 HUD (``_time_up()`` when it runs out); ``SIDEWAYS`` games shoot only left or right (the way
 last moved sideways); ``flash()`` slays every monster in the room. ``linger``: after that many
@@ -42,7 +42,7 @@ WANDER = tuple(TURNS[k:] + TURNS[:k] for k in range(4))   # the four ways, from 
 class DungeonParams(ArenaParams):
     width: int = param(20, 12, 40)
     height: int = param(16, 10, 30)
-    sense: int = param(6, 0, 60)       # a monster this close (rows plus columns) chases you
+    sense: int = param(6, 0, 60)       # a monster this many steps away (or nearer) chases you
     corpse: int = param(0, 0, 200)     # ticks a slain monster's corpse stays, deadly (0: none)
     clock: int = param(0, 0, 10000)    # ticks on the clock (0: no clock)
     linger: int = param(0, 0, 2000)    # ticks in a room before a hunter comes in (0: never)
@@ -58,9 +58,9 @@ class DungeonTask(ArenaTask):
         p = self.params
         return {**super().prompt_fields(), "map_text": f" {LEGEND}.", "unit": f"{p.unit:g}",
                 "turn_text": " A move into a wall only turns you to face it.",
-                "wander_text": (f"Monsters wander; one within {p.sense} cells (rows plus columns) "
-                                f"of you chases you, a step every {p.every} turns. Touching a "
-                                "monster costs a life."),
+                "wander_text": (f"Monsters wander; one within {p.sense} steps of you comes for "
+                                f"you by the shortest way, a step every {p.every} turns. Touching "
+                                "a monster costs a life."),
                 "corpse_text": (f" A slain monster leaves a corpse ({CORPSE}) for {p.corpse} "
                                 "turns that is as deadly to touch.") if p.corpse else "",
                 "linger_text": (f" After {p.linger} turns in a room a {self.hunter_name} ({HUNTER}) "
@@ -84,6 +84,7 @@ class DungeonTask(ArenaTask):
         self.room = None
         self._built: dict = {}
         self.held: dict = {}
+        self._nav: dict = {}                  # room -> (steps fields from your cells, walkways)
         self.corpses: list[Body] = []
 
     def go(self, room, r: int, c: int) -> None:
@@ -105,6 +106,7 @@ class DungeonTask(ArenaTask):
             self._populate(room)
         self.gun.shots, self.shells.shots = [], []
         self.entered, self.prowler = self.tick, None
+        self._fields, self._ways = self._nav.setdefault(room, ({}, []))
         self.map.enter(*room)
 
     def rows_of(self, room) -> list[str]:
@@ -165,34 +167,76 @@ class DungeonTask(ArenaTask):
                 return True
         return False
 
+    def _field(self) -> dict:
+        """Steps from your cell to every cell a monster may walk within ``sense`` steps (a
+        breadth-first search over the room's walkways, kept per cell while you stay in the room)."""
+        p = self.params
+        w = p.width
+        here = self.r * w + self.c
+        dist = self._fields.get(here)
+        if dist is not None:
+            return dist
+        ways = self._ways
+        if not ways:                          # the room's walkways: each cell's open neighbours
+            blocked, n = self.SOLID | set(self.LINKS), p.height * w
+            open_ = [ch not in blocked for row in self.still for ch in row]
+            for i in range(n):
+                ways.append(tuple(j for j in (i - w, i + w, i - 1 if i % w else -1, i + 1 if (i + 1) % w else -1)
+                                  if 0 <= j < n and open_[j]))
+        dist, frontier, d = {here: 0}, [here], 0
+        while frontier and d < p.sense:
+            d += 1
+            grown = []
+            for i in frontier:
+                for j in ways[i]:
+                    if j not in dist:
+                        dist[j] = d
+                        grown.append(j)
+            frontier = grown
+        if len(self._fields) >= 512:
+            self._fields.clear()
+        self._fields[here] = dist
+        return dist
+
     def _march(self) -> bool:
-        """Every monster takes a step: chasing when near, else wandering."""
+        """Every monster takes a step: within ``sense`` steps of you, one down the shortest way
+        toward you; farther, wandering."""
         foes = self.foes
         if not foes:
             return False
         p = self.params
         h, w, still, solid, links = p.height, p.width, self.still, self.SOLID, self.LINKS
         pr, pc, sense, draws = self.r, self.c, p.sense, self.draws
+        here = pr * w + pc
         taken = {f.r * w + f.c for f in foes}
         for b in self.corpses:
             taken.add(b.r * w + b.c)
+        dist = ways = None
         for foe in foes:
             fr, fc, hr, hc = foe.r, foe.c, foe.dr, foe.dc
-            dr, dc = pr - fr, pc - fc
-            ar, ac = (dr if dr > 0 else -dr), (dc if dc > 0 else -dc)
-            if ar + ac <= sense:
-                sr, sc = (dr > 0) - (dr < 0), (dc > 0) - (dc < 0)
-                steps = (((sr, 0), (0, sc)) if ar >= ac else ((0, sc), (sr, 0))) + ((hr, hc),) + TURNS
-            elif (hr or hc) and draws.random() < 0.8:        # on along its heading, mostly
-                steps = ((hr, hc),) + WANDER[draws.below(4)]
-            else:
-                steps = WANDER[draws.below(4)]
-            for sr, sc in steps:
+            at = fr * w + fc
+            if (pr - fr if pr > fr else fr - pr) + (pc - fc if pc > fc else fc - pc) <= sense:
+                if dist is None:
+                    dist, ways = self._field(), self._ways
+                d = dist.get(at)
+                if d is not None:                            # chasing: a step nearer, if one is free
+                    for j in ways[at]:
+                        if dist.get(j, d) < d and (j == here or j not in taken):
+                            taken.discard(at)
+                            taken.add(j)
+                            foe.r, foe.c, foe.dr, foe.dc = j // w, j % w, j // w - fr, j % w - fc
+                            break
+                    continue
+            u = draws.random()                               # wandering: on along its heading, mostly
+            steps = ((hr, hc),) + WANDER[int(u * 20) & 3] if (hr or hc) and u < 0.8 else WANDER[int(u * 4)]
+            back, last = (-hr, -hc), len(steps)
+            for i, (sr, sc) in enumerate(steps + (back,)):     # turning back only at a dead end
+                if not (sr or sc) or (i < last and sr == back[0] and sc == back[1]):
+                    continue
                 r, c = fr + sr, fc + sc
-                if (r == pr and c == pc) or ((sr or sc) and 0 <= r < h and 0 <= c < w
-                                             and r * w + c not in taken and still[r][c] not in solid
-                                             and still[r][c] not in links):
-                    taken.discard(fr * w + fc)
+                if (r == pr and c == pc) or (0 <= r < h and 0 <= c < w and r * w + c not in taken
+                                             and still[r][c] not in solid and still[r][c] not in links):
+                    taken.discard(at)
                     taken.add(r * w + c)
                     foe.r, foe.c, foe.dr, foe.dc = r, c, sr, sc
                     break
@@ -260,7 +304,7 @@ class DungeonTask(ArenaTask):
         self.prowler, self.entered = None, self.tick
 
     def _below(self):
-        return [(b.r, b.c, CORPSE) for b in self.corpses]
+        return [(b.r, b.c, CORPSE) for b in self.corpses] if self.corpses else ()
 
     def _above(self):
         return () if self.prowler is None else ((self.prowler[0], self.prowler[1], HUNTER),)

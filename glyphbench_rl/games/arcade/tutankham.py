@@ -91,11 +91,17 @@ class Tutankham(DungeonTask):
             for r in range(3, h - 2, 3):                         # gaps in each bar between corridors
                 for c in rng.choice(w - 2, size=2 + int(rng.integers(2)), replace=False):
                     grid[r][int(c) + 1] = EMPTY
+            for r in range(1, h - 2, 3):                         # pillars that make the corridors wind
+                for c in rng.choice(range(3, w - 3, 3), size=2, replace=False):
+                    c = int(c)
+                    if grid[r - 1][c] == WALL and (r + 2 >= h or grid[r + 2][c] == WALL):
+                        grid[r + int(rng.integers(2))][c] = WALL
             if k:
                 grid[links[k]][0] = PASS
             grid[links[k + 1]][w - 1] = PASS if k < n - 1 else DOOR
             walls = [(r, c) for r in range(3, h - 2, 3) for c in range(2, w - 2)
-                     if grid[r][c] == WALL and grid[r][c - 1] == WALL and grid[r][c + 1] == WALL]
+                     if grid[r][c] == WALL and grid[r][c - 1] == WALL and grid[r][c + 1] == WALL
+                     and EMPTY in (grid[r - 1][c], grid[r + 1][c])]
             r, c = walls[int(rng.integers(len(walls)))]
             grid[r][c] = NEST
             self.nests.append((r, c, CREATURES[(k + self.zone) % 3][1]))
@@ -179,10 +185,11 @@ class Tutankham(DungeonTask):
         self.flashes, self.born = 1, self.tick
 
     def _extra_hud(self) -> str:
-        state = (self.clock.left if self.clock else 0, self.zone, self.room, self.key, self.flashes)
+        left = self.clock.left if self.clock else 0
+        state = (left, self.zone, self.room, self.key, self.flashes)
         if state != self._state:
             self._state = state
-            self._text = (f"{super()._extra_hud()} | Key {'yes' if self.key else 'no'} | "
+            self._text = (f"{self.map.hud()} | Time {left} | Key {'yes' if self.key else 'no'} | "
                           f"Flash {self.flashes}")
         return self._text
 

@@ -298,3 +298,27 @@ def test_tutankham_passages_join_neighbouring_chambers_and_creatures_come_from_n
         env.step(NOOP)
     assert env.foes and abs(env.foes[0].r - nest[0]) + abs(env.foes[0].c - nest[1]) <= 2
     assert env.foes[0].glyph == nest[2]
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_tutankham_every_zone_can_be_walked_from_its_entry_to_the_loot_key_and_door(seed):
+    env = make(TUT)
+    env.reset(seed=seed)
+    for _ in range(3):
+        tomb = ["".join(rows[r] for rows in env.plan) for r in range(env.params.height)]  # side by side
+        reach = {(env.entry, 1)}
+        queue = deque(reach)
+        while queue:
+            r, c = queue.popleft()
+            for dr, dc in MOVE:
+                cell = (r + dr, c + dc)
+                if cell not in reach and 0 <= cell[1] < len(tomb[0]) and tomb[cell[0]][cell[1]] not in "#O":
+                    reach.add(cell)
+                    queue.append(cell)
+        wanted = {(r, c) for r, row in enumerate(tomb) for c, ch in enumerate(row) if ch in "$kD"}
+        assert len(wanted) == env.params.treasures + 2 and wanted <= reach
+        for k, (r, c, _) in enumerate(env.nests):
+            c += k * env.params.width
+            assert tomb[r][c] == "O" and "." in (tomb[r - 1][c], tomb[r + 1][c])
+        env.zone += 1
+        env._zone()
