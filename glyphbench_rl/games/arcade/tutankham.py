@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 from ...core.actions import ActionSet
 from ...core.params import param
+from ..common.lanes import Draws
 from .arena import EMPTY, MOVES4, SHOT, WALL
 from .dungeon import DungeonParams, DungeonTask
 from .engine import register_atari
@@ -79,9 +80,9 @@ class Tutankham(DungeonTask):
         """Lay out the zone's chambers: corridors between barred rows, passages, nests, loot."""
         p = self.params
         h, w, n = p.height, p.width, p.chambers
-        rng = self.stream("zone", self.zone)
+        draws = Draws(self.stream("zone", self.zone), 512)
         bands = [r for r in range(1, h - 1) if r % 3]            # corridor rows
-        links = [bands[int(rng.integers(len(bands)))] for _ in range(n + 1)]
+        links = [bands[draws.below(len(bands))] for _ in range(n + 1)]
         self.entry = links[0]
         self.plan, self.nests = [], []
         for k in range(n):
@@ -89,28 +90,27 @@ class Tutankham(DungeonTask):
             for r in bands:
                 grid[r][1:w - 1] = [EMPTY] * (w - 2)
             for r in range(3, h - 2, 3):                         # gaps in each bar between corridors
-                for c in rng.choice(w - 2, size=2 + int(rng.integers(2)), replace=False):
-                    grid[r][int(c) + 1] = EMPTY
+                for c in distinct(draws, w - 2, 2 + draws.below(2)):
+                    grid[r][c + 1] = EMPTY
             for r in range(1, h - 2, 3):                         # pillars that make the corridors wind
-                for c in rng.choice(range(3, w - 3, 3), size=2, replace=False):
-                    c = int(c)
-                    if grid[r - 1][c] == WALL and (r + 2 >= h or grid[r + 2][c] == WALL):
-                        grid[r + int(rng.integers(2))][c] = WALL
+                for c in distinct(draws, (w - 4) // 3, 2):
+                    c = 3 + 3 * c
+                    if grid[r - 1][c] == WALL and grid[r + 2][c] == WALL:
+                        grid[r + draws.below(2)][c] = WALL
             if k:
                 grid[links[k]][0] = PASS
             grid[links[k + 1]][w - 1] = PASS if k < n - 1 else DOOR
             walls = [(r, c) for r in range(3, h - 2, 3) for c in range(2, w - 2)
                      if grid[r][c] == WALL and grid[r][c - 1] == WALL and grid[r][c + 1] == WALL
                      and EMPTY in (grid[r - 1][c], grid[r + 1][c])]
-            r, c = walls[int(rng.integers(len(walls)))]
+            r, c = walls[draws.below(len(walls))]
             grid[r][c] = NEST
             self.nests.append((r, c, CREATURES[(k + self.zone) % 3][1]))
             self.plan.append(grid)
         floor = [(k, r, c) for k in range(n) for r in bands for c in range(2, w - 2)
                  if self.plan[k][r][c] == EMPTY and (k, r) != (0, self.entry)]
-        picks = rng.choice(len(floor), size=p.treasures + 1, replace=False)
-        for i, pick in enumerate(picks):
-            k, r, c = floor[int(pick)]
+        for i, pick in enumerate(distinct(draws, len(floor), p.treasures + 1)):
+            k, r, c = floor[pick]
             self.plan[k][r][c] = GOLD if i else KEY
         self.plan = [["".join(row) for row in grid] for grid in self.plan]
 
@@ -194,6 +194,16 @@ class Tutankham(DungeonTask):
         return self._text
 
     _state = None
+
+
+def distinct(draws: Draws, n: int, k: int) -> list[int]:
+    """``k`` different numbers below ``n`` (all of them when ``k >= n``), at random."""
+    picked: list[int] = []
+    while len(picked) < min(k, n):
+        x = draws.below(n)
+        if x not in picked:
+            picked.append(x)
+    return picked
 
 
 register_atari(Tutankham, "tutankham", width=20, height=16, lives=3, goal=8, unit=1000.0,
