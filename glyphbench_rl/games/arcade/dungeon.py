@@ -5,21 +5,23 @@ and a bow or gun (venture, tutankham).
 one room of a world laid out on a ``RoomMap``: ``go(room, r, c)`` shows that room (its rows are
 built once by the game's ``_room(room)`` and kept, so a treasure taken with ``set_still`` stays
 taken) with the monsters it held when you left (or those ``_populate(room)`` adds on a first
-visit), and
-the HUD carries the map of rooms. Monsters (``self.foes``) step every ``every`` ticks: down the
-shortest way toward you when within ``sense`` steps, else wandering (on along their heading,
-turning at random or when blocked, back only at a dead end). Touching one, or walking into one, costs a life. A slain monster
-may leave a corpse (``corpse`` ticks) that is as deadly to touch. ``clock`` puts a countdown in the
-HUD (``_time_up()`` when it runs out); ``SIDEWAYS`` games shoot only left or right (the way
-last moved sideways); ``flash()`` slays every monster in the room. ``linger``: after that many
-ticks in a room where ``_haunted(room)``, a hunter (``HUNTER``, not to be harmed) comes in through
-the walls at the far corner and floats a cell toward you every other tick.
+visit), and the HUD carries the map of rooms. Monsters (``self.foes``) step every ``every``
+ticks: down the shortest way toward you when within ``sense`` steps, else wandering (on along
+their heading, turning at random or when blocked, back only at a dead end). Touching one, or
+walking into one, costs a life. A slain monster may leave a corpse (``corpse`` ticks) that is as
+deadly to touch. ``clock`` puts a countdown in the HUD (``_time_up()`` when it runs out);
+``SIDEWAYS`` games shoot only left or right (the way last moved sideways); ``flash()`` slays
+every monster in the room. ``linger``: after that many ticks in a room where ``_haunted(room)``,
+a hunter (``HUNTER``, not to be harmed) comes in through the walls at the far corner and floats
+a cell toward you every other tick.
 
 Hooks, besides the arena's: ``_room``, ``_populate``, ``_cross(r, c)`` (you stepped on a
 ``LINKS`` cell: a door or passage to another room), ``_take(r, c, ch)`` (you stepped on any
 other cell that is not floor: pick-ups), ``_armed()`` (whether FIRE shoots now), ``worth(foe)``
-(native points for slaying it), ``_time_up()``. ``bonus(points)`` pays native points outside the
-goal's units (kills, keys): shown in the HUD score, not counted toward ``goal``.
+(native points for slaying it), ``_time_up()``. ``bonus(points)`` pays native points outside
+the goal's units (kills, keys): shown in the HUD score, not counted toward ``goal``. Helpers for
+laying rooms out: ``side_cell`` (a door in the middle of a box's side), ``free_near`` (the floor
+cell nearest a spot), ``distinct`` (different random picks from block draws).
 """
 
 from __future__ import annotations
@@ -28,6 +30,7 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 from ...core.params import param
+from ..common.lanes import Draws
 from .arena import EMPTY, FIRE, ArenaParams, ArenaTask
 from .bodies import Body, Countdown
 from .rooms import LEGEND, RoomMap
@@ -334,4 +337,15 @@ def free_near(grid, r: int, c: int) -> tuple[int, int]:
     return min(cells)[1:]
 
 
-__all__ = ["CORPSE", "HUNTER", "SIDES", "DungeonParams", "DungeonTask", "free_near", "side_cell"]
+def distinct(draws: Draws, n: int, k: int) -> list[int]:
+    """``k`` different numbers below ``n`` (all of them when ``k >= n``), at random."""
+    picked: list[int] = []
+    while len(picked) < min(k, n):
+        x = draws.below(n)
+        if x not in picked:
+            picked.append(x)
+    return picked
+
+
+__all__ = ["CORPSE", "HUNTER", "SIDES", "DungeonParams", "DungeonTask", "distinct", "free_near",
+           "side_cell"]

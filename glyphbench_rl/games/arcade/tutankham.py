@@ -17,7 +17,7 @@ from ...core.actions import ActionSet
 from ...core.params import param
 from ..common.lanes import Draws
 from .arena import EMPTY, MOVES4, SHOT, WALL
-from .dungeon import DungeonParams, DungeonTask
+from .dungeon import DungeonParams, DungeonTask, distinct
 from .engine import register_atari
 
 PASS, DOOR, KEY, GOLD, NEST = "+", "D", "k", "$", "O"
@@ -194,16 +194,6 @@ class Tutankham(DungeonTask):
         return self._text
 
     _state = None
-
-
-def distinct(draws: Draws, n: int, k: int) -> list[int]:
-    """``k`` different numbers below ``n`` (all of them when ``k >= n``), at random."""
-    picked: list[int] = []
-    while len(picked) < min(k, n):
-        x = draws.below(n)
-        if x not in picked:
-            picked.append(x)
-    return picked
 
 
 register_atari(Tutankham, "tutankham", width=20, height=16, lives=3, goal=8, unit=1000.0,
