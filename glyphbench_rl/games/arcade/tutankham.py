@@ -189,8 +189,8 @@ class Tutankham(DungeonTask):
         state = (left, self.zone, self.room, self.key, self.flashes)
         if state != self._state:
             self._state = state
-            self._text = (f"{self.map.hud()} | Time {left} | Key {'yes' if self.key else 'no'} | "
-                          f"Flash {self.flashes}")
+            self._text = (f"Zone {self.zone} | {self.map.hud()} | Time {left} | Key "
+                          f"{'yes' if self.key else 'no'} | Flash {self.flashes}")
         return self._text
 
     _state = None

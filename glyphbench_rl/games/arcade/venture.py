@@ -173,6 +173,14 @@ class Venture(DungeonTask):
     def _haunted(self, room) -> bool:
         return room != HALL
 
+    def _extra_hud(self) -> str:
+        text = self.map.hud()                 # (the same text while you stay in a room)
+        if text is not self._map_text:
+            self._map_text, self._level_text = text, f"Level {self.level} | {text}"
+        return self._level_text
+
+    _map_text = None
+
 
 def walls(kind: int, h: int, w: int) -> list[tuple[int, int]]:
     """The inner walls of a room of ``kind`` (0-7), never on a door's inner cell."""
