@@ -30,6 +30,7 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 from ...core.params import param
+from ..common.grid import bfs_layers
 from ..common.lanes import Draws
 from .arena import EMPTY, FIRE, ArenaParams, ArenaTask
 from .bodies import Body, Countdown
@@ -171,8 +172,8 @@ class DungeonTask(ArenaTask):
         return False
 
     def _field(self) -> dict:
-        """Steps from your cell to every cell a monster may walk within ``sense`` steps (a
-        breadth-first search over the room's walkways, kept per cell while you stay in the room)."""
+        """Steps from your cell to every cell a monster may walk (a breadth-first search over the
+        room's walkways, kept per room and cell of yours)."""
         p = self.params
         w = p.width
         here = self.r * w + self.c
@@ -186,16 +187,7 @@ class DungeonTask(ArenaTask):
             for i in range(n):
                 ways.append(tuple(j for j in (i - w, i + w, i - 1 if i % w else -1, i + 1 if (i + 1) % w else -1)
                                   if 0 <= j < n and open_[j]))
-        dist, frontier, d = {here: 0}, [here], 0
-        while frontier and d < p.sense:
-            d += 1
-            grown = []
-            for i in frontier:
-                for j in ways[i]:
-                    if j not in dist:
-                        dist[j] = d
-                        grown.append(j)
-            frontier = grown
+        dist = bfs_layers((here,), ways.__getitem__)
         if len(self._fields) >= 512:
             self._fields.clear()
         self._fields[here] = dist
@@ -221,8 +213,8 @@ class DungeonTask(ArenaTask):
             if (pr - fr if pr > fr else fr - pr) + (pc - fc if pc > fc else fc - pc) <= sense:
                 if dist is None:
                     dist, ways = self._field(), self._ways
-                d = dist.get(at)
-                if d is not None:                            # chasing: a step nearer, if one is free
+                d = dist.get(at, sense + 1)
+                if d <= sense:                               # chasing: a step nearer, if one is free
                     for j in ways[at]:
                         if dist.get(j, d) < d and (j == here or j not in taken):
                             taken.discard(at)
