@@ -22,7 +22,11 @@ Engine-level modules, which the games import (and nothing else of the family):
   ``deflect``, ``serve``, the scripted ``pursue``, ``Possession``, tennis-style ``Match``);
 - ``arena``: free-roam shooters (``ArenaTask``: facing fire with a reach, chasers that slide
   around walls, drifting foes, foe shells, wrap-around fields, an air or fuel countdown,
-  reinforcements).
+  reinforcements);
+- ``dungeon``: worlds of rooms seen one at a time on a ``rooms.RoomMap`` (``DungeonTask``, an
+  arena: rooms built once and kept, monsters that wander and come down the shortest way when
+  near, corpses, sideways-only fire, a zone clock, a flash that clears the room, a hunter for
+  lingering).
 """
 
 from . import alien  # noqa: F401
