@@ -185,8 +185,8 @@ class DungeonTask(ArenaTask):
             blocked, n = self.SOLID | set(self.LINKS), p.height * w
             open_ = [ch not in blocked for row in self.still for ch in row]
             for i in range(n):
-                ways.append(tuple(j for j in (i - w, i + w, i - 1 if i % w else -1, i + 1 if (i + 1) % w else -1)
-                                  if 0 <= j < n and open_[j]))
+                near = (i - w, i + w, i - 1 if i % w else -1, i + 1 if (i + 1) % w else -1)
+                ways.append(tuple(j for j in near if 0 <= j < n and open_[j]))
         dist = bfs_layers((here,), ways.__getitem__)
         if len(self._fields) >= 512:
             self._fields.clear()

@@ -25,7 +25,8 @@ CREATURES = (("snake", "S", 20), ("mummy", "M", 40), ("bat", "B", 60))
 WORTH = {g: points for _, g, points in CREATURES}
 FLASH = 6
 ACTIONS = ActionSet([("NOOP", "wait a turn"), ("UP", "move up a cell"), ("DOWN", "move down a cell"),
-                     ("LEFT", "move left a cell (and aim left)"), ("RIGHT", "move right a cell (and aim right)"),
+                     ("LEFT", "move left a cell (and aim left)"),
+                     ("RIGHT", "move right a cell (and aim right)"),
                      ("FIRE", "shoot the way you aim: left or right only"),
                      ("FLASH", "set off your flash bomb: every creature on the screen dies (once a life)")],
                     noop="NOOP")
@@ -48,12 +49,12 @@ class Tutankham(DungeonTask):
              "the locked door ({door}) in the zone's last chamber, and going through it starts "
              "the next zone. Snakes, mummies and bats come out of nests ({nest}) in the walls, one "
              "every {spawn} turns while fewer than {foes} are in your chamber. {wander_text} FIRE "
-             "shoots (*) {reach} cells left or right only, the way you last moved sideways, and "
+             "shoots ({shot}) {reach} cells left or right only, the way you last moved sideways, and "
              "slays the first creature it meets. FLASH slays every creature in the chamber, once a "
              "life. Each zone has {clock} turns on the clock (Time in the HUD); after that your gun "
              "no longer fires.{turn_text}{map_text}")
     rewards = ("+{unit} for each treasure and each zone's door gone through; +{key} for the key; "
-               "+20, +40 or +60 for each snake, mummy or bat slain; {death} when the game is lost.")
+               "{kills}; {death} when the game is lost.")
     ends = "when treasures and doors gone through number {goal} together, or the game is lost"
     Params = TutankhamParams
     ACTIONS = ACTIONS
@@ -68,7 +69,8 @@ class Tutankham(DungeonTask):
 
     def prompt_fields(self) -> dict:
         return {**super().prompt_fields(), "pass_": PASS, "gold": GOLD, "key_": KEY, "door": DOOR,
-                "nest": NEST}
+                "nest": NEST, "shot": SHOT, "kills": "; ".join(
+                    f"+{points} for each {name} slain" for name, _, points in CREATURES)}
 
     def _setup(self, rng) -> None:
         self.zone, self.key, self.flashes = 1, False, 1

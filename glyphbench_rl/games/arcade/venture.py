@@ -20,6 +20,7 @@ from .dungeon import CORPSE, HUNTER, SIDES, DungeonParams, DungeonTask, free_nea
 from .engine import register_atari
 
 HALL, DOOR, GOLD, INSIDE, HALLER = (1, 1), "D", "$", ":", HUNTER
+BACK = {"top": "bottom", "bottom": "top", "left": "right", "right": "left"}
 LAYOUT = ("#.#", ".#.", "#.#")            # the four rooms at the corners, the hallway between
 ROOMS = (("serpent", "S"), ("skeleton", "K"), ("goblin", "G"), ("spider", "X"),
          ("troll", "T"), ("dragon", "R"), ("bat", "B"), ("zombie", "Z"))
@@ -34,12 +35,12 @@ class VentureParams(DungeonParams):
 
 class Venture(DungeonTask):
     title = "Venture"
-    rules = ("You are Winky ({lives_text}) in a dungeon. The hallway view shows four rooms as boxes "
-             "of wall (#) with doors (D); a box with {gold} inside still holds its treasure. "
-             "Hallmonsters (H) roam the hallway; they cannot be harmed. Step into a door to enter "
-             "that room: it fills the screen, with its treasure ({gold}) guarded by monsters. Step "
+    rules = ("You are Winky ({lives_text}) in a dungeon. The hallway view shows {rooms} rooms as "
+             "boxes of wall ({wall}) with doors ({door}); a box with {gold} inside still holds its "
+             "treasure. Hallmonsters ({haller}) roam the hallway; they cannot be harmed. Step "
+             "into a door to enter that room: it fills the screen, with its treasure ({gold}) guarded by monsters. Step "
              "on the treasure to take it and leave by a door. {wander_text} FIRE shoots an arrow "
-             "(*) {reach} cells the way you face, one at a time, in rooms only; it slays the "
+             "({shot}) {reach} cells the way you face, one at a time, in rooms only; it slays the "
              "first monster it meets.{corpse_text}{turn_text}{linger_text}{level_text}{map_text} "
              "The hallway is the middle of the map, the rooms its corners.")
     rewards = ("+{unit} for each treasure; +{kill} times the level for each monster slain in a room "
@@ -55,9 +56,11 @@ class Venture(DungeonTask):
               **{g: name for name, g in ROOMS}, SHOT: "your arrow", **you_glyphs()}
 
     def prompt_fields(self) -> dict:
-        return {**super().prompt_fields(), "gold": GOLD, "level_text": (
-            " When the four treasures of a level are taken, leaving the room starts the next "
-            "level with four new rooms.") if self.params.goal > len(ROOMS) // 2 else ""}
+        rooms = len(ROOMS) // 2
+        return {**super().prompt_fields(), "gold": GOLD, "wall": WALL, "door": DOOR, "haller": HALLER,
+                "shot": SHOT, "rooms": rooms, "level_text": (
+                    f" When the {rooms} treasures of a level are taken, leaving the room starts the "
+                    f"next level with {rooms} new rooms.") if self.params.goal > rooms else ""}
 
     def _setup(self, rng) -> None:
         self.level = 1
@@ -76,10 +79,8 @@ class Venture(DungeonTask):
             top = 1 if room[0] == 0 else p.height - 1 - bh
             left = 1 if room[1] == 0 else p.width - 1 - bw
             box = self.boxes[room] = (top, left, top + bh - 1, left + bw - 1)
-            inner = self.level % 2
-            sides = (("bottom" if room[0] == 0 else "top") if inner else ("top" if room[0] == 0 else "bottom"),
-                     ("right" if room[1] == 0 else "left") if inner else ("left" if room[1] == 0 else "right"))
-            for side in sides:
+            inner = ("bottom" if room[0] == 0 else "top", "right" if room[1] == 0 else "left")
+            for side in (inner if self.level % 2 else [BACK[s] for s in inner]):   # odd levels: inward
                 self.doors[side_cell(box, side)] = (room, side)
             self.left.add(room)
 
