@@ -34,6 +34,10 @@ Engine-level modules, which the games import (and nothing else of the family):
 - ``sidescroll``: side-scrolling stages longer than the screen (``Course``: the stage's rows and
   the view that follows the player, forward or backward; ``Leap``: a jump off the ground line;
   ``fall``; ``ScrollTask``: the task drawn on a course's view);
+- ``dungeon``: worlds of rooms seen one at a time on a ``rooms.RoomMap`` (``DungeonTask``, an
+  arena: rooms built once and kept, monsters that wander and come down the shortest way when
+  near, corpses, sideways-only fire, a zone clock, a flash that clears the room, a hunter for
+  lingering);
 - ``rooms``: ``RoomMap``, the HUD's map of a many-room world's rooms, visited or not.
 """
 
@@ -85,7 +89,9 @@ from . import stargunner  # noqa: F401
 from . import surround  # noqa: F401
 from . import tennis  # noqa: F401
 from . import timepilot  # noqa: F401
+from . import tutankham  # noqa: F401
 from . import upndown  # noqa: F401
+from . import venture  # noqa: F401
 from . import videopinball  # noqa: F401
 from . import wizardofwor  # noqa: F401
 from . import yarsrevenge  # noqa: F401
