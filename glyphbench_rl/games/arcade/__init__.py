@@ -22,13 +22,13 @@ Engine-level modules, which the games import (and nothing else of the family):
   ``deflect``, ``serve``, the scripted ``pursue``, ``Possession``, tennis-style ``Match``);
 - ``pinball``: pinball tables (``PinballTask``: a ball under gravity, flippers that swing it up
   by the part struck, bumpers, drop-target banks, spinners, rollovers, rails, drains, a plunger,
-  the nudge and the tilt) and ``Points``, a score of events worth different native points;
+  the nudge and the tilt);
 - ``arena``: free-roam shooters (``ArenaTask``: facing fire with a reach, chasers that slide
   around walls, drifting foes, foe shells, wrap-around fields, an air or fuel countdown,
   reinforcements);
 - ``climbing``: vertical worlds seen a screen or a window at a time (``Tower``, ``ClimbTask``:
-  a mine shaft's screens with a ``RoomMap``, a facade that scrolls), native points beside the
-  tally (``Purse``), falling objects, a pack against gravity, critters that pace or climb;
+  a mine shaft's screens with a ``RoomMap``, a facade that scrolls), falling objects, a pack
+  against gravity, critters that pace or climb;
 - ``sectors``: space games flown over a map of places to enter (a ship that keeps its velocity
   under gravity, rotate-and-thrust ``FlightTask``, ``Sectors`` with the HUD's chart);
 - ``sidescroll``: side-scrolling stages longer than the screen (``Course``: the stage's rows and

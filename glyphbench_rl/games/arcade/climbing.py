@@ -9,8 +9,6 @@ a time (H.E.R.O.'s mine shaft, Crazy Climber's building).
 - ``ClimbTask``: an ``ArcadeTask`` whose field is the tower's window: ``_world_rows(top)`` gives
   the rows shown (the tower's, or a game's own rows such as windows that open and shut) and
   ``_movers()`` the movers in world rows, shifted into the field;
-- ``Purse``: pattern D's tally plus native points that count toward no unit (a critter shot, a
-  wall blown, a floor climbed), each paid as reward when scored;
 - ``Fallers``: things dropping a row a tick (flowerpots, rocks) that hit what they reach;
 - ``shaft`` and ``ledges``: a mine shaft's cells and its bands, each a rock floor with a gap
   and the way across to it (``ClimbTask.screens`` and ``paged``: its screens, a ``RoomMap``);
@@ -24,20 +22,9 @@ from __future__ import annotations
 from typing import Callable, Iterable, Iterator, NamedTuple
 
 from ..common.physics import move_vertical
-from .engine import ArcadeTask, Tally
+from .engine import ArcadeTask
 from .rooms import RoomMap
 from .scroller import Strip
-
-
-class Purse(Tally):
-    __slots__ = ()
-
-    def bonus(self, points: float) -> None:
-        """Native points that count toward no unit; paid at once."""
-        if points > 0 and not self.task.done:
-            self.shown = None
-            self.points += points
-            self.task.reward(points)
 
 
 class Tower(Strip):
@@ -187,13 +174,7 @@ def thrust(r: int, lifted: bool, fall: int, blocked: Callable[[int], bool]) -> i
 
 class ClimbTask(ArcadeTask):
     """An arcade task whose field is a ``Tower``'s window (``self.tower``, made in
-    ``_setup`` after ``climb_start``)."""
-
-    def climb_start(self, rng) -> None:
-        """``start`` with pattern D's tally able to pay native points (``self.score.bonus``)."""
-        self.start(rng)
-        p = self.params
-        self.score = Purse(self, p.goal, p.unit)
+    ``_setup`` after ``start``)."""
 
     def _still(self) -> list[str]:
         return []

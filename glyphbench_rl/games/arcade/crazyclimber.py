@@ -69,7 +69,7 @@ class CrazyClimber(ClimbTask):
               REACH: "you, a hand up", POT: "falling pot"}
 
     def _setup(self, rng) -> None:
-        self.climb_start(rng)
+        self.start(rng)
         self.building = 0
         self._build()
 

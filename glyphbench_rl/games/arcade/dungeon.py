@@ -251,7 +251,7 @@ class DungeonTask(ArenaTask):
         if self.params.corpse:
             self.corpses.append(Body(foe.r, foe.c, 0, 0, CORPSE, self.tick + self.params.corpse))
         self.say(f"You slew a {self.vocab().get(foe.glyph, self.foe_name)}.")
-        self.bonus(self.worth(foe))
+        self.score.bonus(self.worth(foe))
 
     def flash(self) -> int:
         """Slay every monster in the room that can be slain; how many."""
@@ -259,13 +259,6 @@ class DungeonTask(ArenaTask):
         for f in doomed:
             self.slay(f)
         return len(doomed)
-
-    def bonus(self, points: float) -> None:
-        """Native points outside the goal's units: in the HUD score and the reward."""
-        if points:
-            self.score.points += points
-            self.score.shown = None
-            self.reward(points)
 
     # -- hooks ---------------------------------------------------------------------------------------
     def _room(self, room) -> list[str]:

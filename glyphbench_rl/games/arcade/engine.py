@@ -32,6 +32,8 @@ rule's text (``Score 2/5`` on mini presets, native points then ``k/N`` on Atari 
 
 Score rules (specs section 0), ``self.score`` after ``start``:
 - ``Tally`` (A, and D with ``death``): +unit per credited unit, capped at ``goal`` (won there);
+  ``award(value)`` credits a unit worth ``value`` units, ``bonus(points)`` pays native points
+  that count toward no unit (Atari presets);
 - ``Milestones`` (B): ``reach(key)`` pays ``unit x share`` once per key;
 - ``Duel`` (C): ``point(mine)`` pays +unit or -unit; first side to ``goal`` ends the episode.
 Lives: ``lose_life()`` takes one; the last one pays ``death`` (pattern D; 0 for A) and ends the
@@ -83,6 +85,26 @@ class Tally:
             self.task.reward(k * self.unit)
             if self.done >= self.goal:
                 self.task.finish(won=True)
+
+    def award(self, value: float = 1) -> None:
+        """One unit worth ``value`` x ``unit`` (events of different native worth: a bumper, a
+        bank of targets, a shark shot deeper)."""
+        if self.done < self.goal:
+            self.shown = None
+            self.done += 1
+            pay = value * self.unit
+            self.points += pay
+            self.task.reward(pay)
+            if self.done >= self.goal:
+                self.task.finish(won=True)
+
+    def bonus(self, points: float) -> None:
+        """Native points that count toward no unit (a critter shot, a key taken, the power left
+        at a rescue): paid and shown in the score at once."""
+        if points:
+            self.shown = None
+            self.points += points
+            self.task.reward(points)
 
     def hud(self, native: bool) -> str:
         return f"Score {self.points:g} ({self.done}/{self.goal})" if native else f"Score {self.done}/{self.goal}"

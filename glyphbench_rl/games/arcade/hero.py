@@ -78,7 +78,7 @@ class Hero(ClimbTask):
         return {**super().prompt_fields(), "bands": BANDS, "dive": DIVE}
 
     def _setup(self, rng) -> None:
-        self.climb_start(rng)
+        self.start(rng)
         self.level = 0
         self._shaft()
 

@@ -13,7 +13,6 @@ from dataclasses import dataclass
 from ...core.params import param, require
 from .bodies import Body, Countdown
 from .engine import EMPTY, register_atari
-from .pinball import Points
 from .shooter import SHOT, Shooter, ShooterParams, bounce
 
 SURFACE, BOAT, LINE, OCTOPUS, ARM, TREASURE, DIVER = "~", "B", ":", "M", "&", "$", "D"
@@ -78,7 +77,6 @@ class NameThisGame(Shooter):
     def _setup(self, rng) -> None:
         p = self.params
         self.arm(rng, row=p.height - 2)
-        self.score = Points(self, p.goal, p.unit)
         self.air = Countdown(p.air)
         self.boat = Body(0, self.draws.below(p.width), dc=1, glyph=BOAT)
         self.line = 0                                 # rows of line lowered (0: none)

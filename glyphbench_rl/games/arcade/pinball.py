@@ -1,5 +1,5 @@
-"""Pinball machinery (video pinball) and ``Points``, a score of events worth different native
-points (pinball's bumpers and bonuses, the fish-guarding game's sharks by depth).
+"""Pinball machinery (video pinball): each scoring event is a unit of the goal worth its own
+native points (``Tally.award``).
 
 The table is still rows whose glyphs say what a cell does (``Table``): walls and posts reflect
 the ball, rails in the top corners turn it back down into the table, bumpers kick it away,
@@ -24,7 +24,7 @@ to its tip and off into the drain between them. ``Tilt`` counts nudges in a wind
 from __future__ import annotations
 
 from .duel import Ball, deflect, velocity_text
-from .engine import EMPTY, ArcadeTask, Tally
+from .engine import EMPTY, ArcadeTask
 
 WALL, TOP, POST = "|", "-", "#"
 RAIL_L, RAIL_R = "(", ")"        # top corners: send the ball down and inward
@@ -35,22 +35,6 @@ FLIP_L, FLIP_R, FLIP_UP = "\\", "/", "="
 PASSING = {SPINNER: "spinner", ROLL: "rollover", LIT: "rollover"}
 RAILS = {RAIL_L: (1, 1), RAIL_R: (1, -1)}
 HUDS: dict[tuple, str] = {}       # the extra HUD text per (state, nudges), made once
-
-
-class Points(Tally):
-    """A ``Tally`` whose units are events of different worth: ``award(value)`` credits one
-    event (toward ``goal``) and pays ``value`` x ``unit`` (the native points)."""
-    __slots__ = ()
-
-    def award(self, value: int = 1) -> None:
-        if self.done < self.goal:
-            self.shown = None
-            self.done += 1
-            pay = value * self.unit
-            self.points += pay
-            self.task.reward(pay)
-            if self.done >= self.goal:
-                self.task.finish(won=True)
 
 
 class PinBall(Ball):
@@ -119,7 +103,6 @@ class PinballTask(ArcadeTask):
         """Call first in ``_setup``: the score, the table, its flippers and a ball on the plunger."""
         self.start(rng)
         p = self.params
-        self.score = Points(self, p.goal, p.unit)
         self.frow = p.height - 2
         self.flippers = self._flippers()
         self.banks = self._banks()

@@ -171,7 +171,7 @@ class Tutankham(DungeonTask):
             self.set_still(r, c, EMPTY)
             self.key = True
             self.say("You have the key.")
-            self.bonus(self.params.key)
+            self.score.bonus(self.params.key)
 
     def _armed(self) -> bool:
         return self.clock is None or self.clock.left > 0

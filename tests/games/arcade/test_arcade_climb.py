@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 
 from glyphbench_rl import make
-from glyphbench_rl.games.arcade.climbing import Fallers, Purse, Tower, crawl, ledges, shaft, thrust
+from glyphbench_rl.games.arcade.climbing import Fallers, Tower, crawl, ledges, shaft, thrust
 from glyphbench_rl.games.common.lanes import Draws
 from arcade_play import play
 
@@ -82,10 +82,9 @@ def test_crawl_turns_back_at_rock_and_only_on_the_screen():
     assert spider[:3] == [0, 1, -1]
 
 
-def test_purse_pays_native_points_without_units():
+def test_bonus_pays_native_points_without_units():
     env = make(HERO)
     env.reset(seed=0)
-    assert isinstance(env.score, Purse)
     _, r, *_ = env.step(H_NOOP)
     env.score.bonus(50)
     assert env.score.points == 50 and env.score.done == 0 and env._step_reward == 50

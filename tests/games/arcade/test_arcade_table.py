@@ -7,7 +7,8 @@ from __future__ import annotations
 import pytest
 
 from glyphbench_rl import make
-from glyphbench_rl.games.arcade.pinball import (BUMPER, EMPTY, FLIP_UP, LIT, ROLL, TARGET, Flipper, Points,
+from glyphbench_rl.games.arcade.engine import Tally
+from glyphbench_rl.games.arcade.pinball import (BUMPER, EMPTY, FLIP_UP, LIT, ROLL, TARGET, Flipper,
                                                 Tilt)
 from arcade_play import play
 
@@ -59,7 +60,7 @@ def test_tilt_counts_nudges_in_a_window():
 
 def test_points_count_events_and_pay_their_worth():
     _, t = table()
-    score = Points(t, goal=3, unit=100.0)
+    score = Tally(t, goal=3, unit=100.0)
     score.award(1)
     score.award(10)
     assert (score.done, score.points) == (2, 1100.0) and not t.done
