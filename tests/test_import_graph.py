@@ -20,7 +20,7 @@ GAMES = Path(glyphbench_rl.__file__).parent / "games"
 
 # The modules of each family that its game modules may import. A new family declares its own.
 ENGINE_LEVEL = {
-    "arcade": {"engine", "bodies", "arena", "chase", "duel", "hopping", "scroller", "shooter", "rooms"},
+    "arcade": {"engine", "bodies", "arena", "chase", "duel", "hopping", "scroller", "shooter", "rooms", "platform"},
     "classics": {"versus"},
     "minigrid": {"engine", "world", "grid", "rooms", "solver"},
     "procgen": {"engine", "mazes", "platforms", "scrolling", "shooting"},

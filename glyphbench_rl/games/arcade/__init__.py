@@ -22,7 +22,9 @@ Engine-level modules, which the games import (and nothing else of the family):
   ``deflect``, ``serve``, the scripted ``pursue``, ``Possession``, tennis-style ``Match``);
 - ``arena``: free-roam shooters (``ArenaTask``: facing fire with a reach, chasers that slide
   around walls, drifting foes, foe shells, wrap-around fields, an air or fuel countdown,
-  reinforcements).
+  reinforcements);
+- ``platform``: side-view platform rooms (``Platformer``: floors, gravity and deadly falls, a
+  jump arc, ladders, ropes, swinging vines, hazards; ``Walker`` monsters, ``Blink`` cells).
 """
 
 from . import alien  # noqa: F401
@@ -51,6 +53,7 @@ from . import gopher  # noqa: F401
 from . import icehockey  # noqa: F401
 from . import kangaroo  # noqa: F401
 from . import kungfumaster  # noqa: F401
+from . import montezumarevenge  # noqa: F401
 from . import mspacman  # noqa: F401
 from . import phoenix  # noqa: F401
 from . import pong  # noqa: F401
