@@ -56,6 +56,7 @@ from . import kungfumaster  # noqa: F401
 from . import montezumarevenge  # noqa: F401
 from . import mspacman  # noqa: F401
 from . import phoenix  # noqa: F401
+from . import pitfall  # noqa: F401
 from . import pong  # noqa: F401
 from . import qbert  # noqa: F401
 from . import riverraid  # noqa: F401

@@ -127,6 +127,7 @@ class Montezuma(Platformer):
             s["left"] = len(s["items"]) + len(s["doors"])
         self.rows_of: dict = {}
         self.start(rng)
+        self.face = 1
         self.keys, self._keys_text = "", None
         self.cleared = 0
         self._enter(START, p.height - 2, self.start_col)

@@ -12,7 +12,7 @@ still rows (``self.still``; a game keeps one list of rows per room and points ``
 - with nothing under you you fall a row a tick; landing after more than ``safe_fall`` rows costs
   a life (``lose_life``), as in both originals;
 - a jump follows ``ARC_UP`` or ``ARC_SIDE`` (up a row, across, down a row), stopping on what it
-  meets; a rope or a vine's tip met mid-jump is grabbed;
+  meets; a rope met mid-jump is grabbed, and a vine whose tip comes within a column;
 - a ``Swing`` (a vine) carries the one who holds its tip; DOWN lets go;
 - leaving the rows (an edge, or a ladder through the top or the bottom) calls ``_leave(dr, dc)``
   for the game to change rooms; a cell in ``HAZARD`` under you costs a life.
@@ -106,9 +106,9 @@ class Platformer(ArcadeTask):
     safe_fall: ClassVar[int] = 3
 
     def place(self, r: int, c: int) -> None:
-        """Put the player at (r, c), still."""
+        """Put the player at (r, c), still (facing as before: set ``face``, 1 or -1, in
+        ``_setup``)."""
         self.r, self.c, self.arc, self.ai, self.jd, self.fallen, self.held = r, c, None, 0, 0, 0, None
-        self.face = 1
         self.swings: list[Swing] = getattr(self, "swings", [])
 
     def pay(self, points: float) -> None:
@@ -153,7 +153,8 @@ class Platformer(ArcadeTask):
 
     def _grab(self) -> None:
         for s in self.swings:
-            if s.tip(self.tick) == (self.r, self.c):
+            r, c = s.tip(self.tick)
+            if r == self.r and -1 <= c - self.c <= 1:
                 self.held, self.arc = s, None
 
     def walk(self, intent: int) -> bool:

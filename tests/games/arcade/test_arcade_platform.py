@@ -9,6 +9,7 @@ import pytest
 
 from glyphbench_rl import make
 from glyphbench_rl.games.arcade import montezumarevenge as mz
+from glyphbench_rl.games.arcade import pitfall as pf
 from glyphbench_rl.games.arcade.platform import LADDER, ROPE, Blink, Swing, Walker
 
 from arcade_play import play
@@ -317,3 +318,140 @@ def test_montezuma_monsters_cost_lives_until_the_game_is_lost():
     env, info = play(MZ, into_the_skull, 0, 2000)
     assert env.done and env.won is False and env.lives == 0
     assert info["return"] <= env.score.points - 1000 + 1e-9
+
+
+# -- Pitfall! -----------------------------------------------------------------------------------------
+PF = "glyphbench/atari-pitfall-v0"
+P_NOOP, P_FIRE, P_UP, P_RIGHT, P_LEFT, P_DOWN = range(6)
+
+
+def leap(t):
+    """Jump right: FIRE when facing right, else turn right first (a step back left, then right)."""
+    return P_FIRE if t.face > 0 else P_RIGHT
+
+
+def pf_policy(t):
+    """Run right along the ground: leap holes, fire, snakes, logs and crocodiles, swing across
+    pits on the vine, wait out the quicksand; in the tunnel, run to a ladder and climb."""
+    p, rows, r, c, tick = t.params, t.still, t.r, t.c, t.tick
+    mid, kind = p.width // 2, t.kinds[t.screen]
+    if t.held is not None:
+        return P_DOWN if c >= mid + 6 else P_NOOP
+    if t.arc is not None:
+        return P_NOOP
+    if r > pf.SURFACE:                               # below: climb out
+        if rows[r][c] == LADDER:
+            return P_UP
+        sc = t.scorpion
+        if sc is not None and 0 < (sc.c - c) * t.face <= 2:
+            return P_FIRE
+        if kind == "ladder" and not any(rows[r][k] == pf.EARTH for k in range(min(c, mid), max(c, mid))):
+            return P_RIGHT if mid > c else P_LEFT
+        if rows[r][c + t.face] == pf.EARTH if 0 <= c + t.face < p.width else False:
+            return P_LEFT if t.face > 0 else P_RIGHT
+        return P_RIGHT if t.face > 0 else P_LEFT
+    if t.face < 0:
+        return P_RIGHT
+    nxt = c + 1
+    ahead = rows[7][nxt] if nxt < p.width else pf.GROUND
+    if kind in ("tar", "pond") and ahead in t.HAZARD:
+        return P_FIRE if any(abs(t.swings[0].tip(tick + k)[1] - (c + k)) <= 1 for k in (1, 2, 3)) else P_NOOP
+    if kind == "quicksand" and c == mid - 7:
+        return P_RIGHT if not any(t.blinks[0].lit_at(tick + k) for k in range(1, 16)) else P_NOOP
+    if kind == "swamp" and rows[7][c] in (pf.JAWS, pf.SHUT):
+        return P_FIRE                                # from a head straight on to the next
+    if kind == "swamp" and ahead in t.HAZARD:
+        return P_NOOP if any(t.blinks[0].lit_at(tick + k) for k in (4, 5, 8, 9)) else P_FIRE
+    if ahead == mz.EMPTY:                            # a hole by a ladder
+        return P_FIRE
+    for f in t.foes:
+        if f.glyph == "s" and 1 <= f.c - c <= 3:
+            return P_FIRE
+        if f.glyph == "o" and 1 <= f.c - c <= 2:
+            return P_FIRE
+    if pf.FIRE in rows[pf.SURFACE][c + 1:c + 4]:
+        return P_FIRE
+    return P_RIGHT
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_pitfall_scripted_runner_crosses_screens_and_finds_treasure(seed):
+    env, info = play(PF, pf_policy, seed, 1500)
+    assert len(env.map.visited) >= 15
+    assert env.score.done >= 1 and env.score.points >= 1000 and env.lives >= 2
+
+
+def screen_of(env, kind, start=1):
+    s = next(s for s in range(start, env.params.screens) if env.kinds[s] == kind)
+    env._enter(s, pf.SURFACE, 2)
+    return s
+
+
+def test_pitfall_vine_swings_you_over_the_tar_pit():
+    env = make(PF)
+    env.reset(seed=0)
+    screen_of(env, "tar")
+    mid = env.params.width // 2
+    env.place(pf.SURFACE, mid - 7)
+    while env.held is None:
+        a = pf_policy(env)
+        assert a in (P_NOOP, P_FIRE)
+        env.step(a)
+        assert env.lives == 3
+    for _ in range(40):
+        env.step(pf_policy(env))
+        if env.held is None and env.arc is None and env.r == pf.SURFACE:
+            break
+    assert env.c >= mid + 6 and env.lives == 3
+    env.place(pf.SURFACE, mid - 7)                   # running in: the tar takes a life
+    env.step(P_RIGHT)
+    env.step(P_NOOP)
+    assert env.lives == 2 and "sank" in env.frame.message
+
+
+def test_pitfall_hole_drops_into_the_tunnel_which_moves_three_screens():
+    env = make(PF)
+    env.reset(seed=0)
+    s = screen_of(env, "ladder")
+    mid, w = env.params.width // 2, env.params.width
+    env.place(pf.SURFACE, mid - 7)
+    env.step(P_RIGHT)
+    for _ in range(5):
+        env.step(P_NOOP)
+    assert (env.r, env.lives) == (pf.TUNNEL, 3)      # a hole's fall does no harm
+    env.place(pf.TUNNEL, 1 if s % 2 == 0 else w - 2)  # on the side away from the brick wall
+    env.step(P_LEFT if s % 2 == 0 else P_RIGHT)
+    env.step(P_LEFT if s % 2 == 0 else P_RIGHT)
+    assert env.screen == (s - 3 if s % 2 == 0 else s + 3) % env.params.screens and env.r == pf.TUNNEL
+    env._enter(s, pf.SURFACE, mid - 2)                # the ladder: down and back up
+    env.step(P_RIGHT)
+    env.step(P_RIGHT)
+    for _ in range(4):
+        env.step(P_DOWN)
+    assert (env.r, env.c) == (pf.TUNNEL, mid)
+    for _ in range(4):
+        env.step(P_UP)
+    assert (env.r, env.c) == (pf.SURFACE, mid)
+
+
+def test_pitfall_log_costs_points_once_a_hit_and_the_clock_ends_the_run():
+    env = make(PF)
+    env.reset(seed=0)
+    screen_of(env, "logs")
+    log = env.foes[0]
+    env.place(pf.SURFACE, log.c - 1)
+    rewards = [env.step(P_NOOP)[1] for _ in range(6)]
+    assert rewards.count(-100) == 1 and env.score.points == -100 and env.lives == 3
+    env = make(PF, clock=100)
+    env.reset(seed=0)
+    total, done = 0.0, False
+    while not done:
+        _, r, done, _, info = env.step(P_NOOP)
+        total += r
+    assert env.turn == 100 and info["won"] is False and total == -1000
+    assert "Time is up" in env.frame.message
+
+
+def test_pitfall_running_into_the_swamp_loses_every_life():
+    env, info = play(PF, lambda env: P_RIGHT, 0, 500)
+    assert env.done and env.won is False and env.lives == 0 and info["return"] <= -1000
