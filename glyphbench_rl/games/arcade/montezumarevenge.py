@@ -18,7 +18,7 @@ from ...core.actions import ActionSet
 from ...core.params import param
 from .engine import EMPTY, ArcadeParams, register_atari
 from .platform import (DOWN, JUMP, JUMP_LEFT, JUMP_RIGHT, JUMP_TEXT, LADDER, LEFT, RIGHT, ROPE,
-                       STAY, UP, Blink, Platformer, Walker)
+                       STAY, UP, Blink, Platformer, Walker, locks, paint, spanning_tree)
 from .rooms import LEGEND, RoomMap
 
 LAYOUT = ("---###---", "--#####--", "-#######-", "#########")
@@ -83,15 +83,9 @@ class Montezuma(Platformer):
         rooms = self.map.rooms
         near = {a: [b for b in ((a[0], a[1] - 1), (a[0], a[1] + 1), (a[0] - 1, a[1]), (a[0] + 1, a[1]))
                     if b in rooms] for a in rooms}
-        tree, seen, edge = [], {START}, [(START, b) for b in near[START]]
-        while edge:                                        # a random spanning tree of links
-            a, b = edge.pop(int(rng.integers(len(edge))))
-            if b not in seen:
-                seen.add(b)
-                tree.append((a, b))
-                edge += [(b, n) for n in near[b] if n not in seen]
+        tree = spanning_tree(near, START, rng)
         sides = list(range(2, 6)) + list(range(p.width - 6, p.width - 2))
-        self.plan = {room: {"items": [], "doors": [], "top": None, "bottom": None, "exits": set()} for room in rooms}
+        self.plan = {room: {"items": [], "doors": [], "top": None, "bottom": None, "exits": set()} for room in sorted(rooms)}
         for a, b in tree:
             if a[0] == b[0]:
                 self.plan[a]["exits"].add(b[1] - a[1])
@@ -100,20 +94,10 @@ class Montezuma(Platformer):
                 up, down = (a, b) if a[0] < b[0] else (b, a)
                 self.plan[up]["bottom"] = self.plan[down]["top"] = sides[int(rng.integers(len(sides)))]
         side = [e for e in tree if e[0][0] == e[1][0]]
-        locked = [side[int(i)] for i in rng.choice(len(side), min(p.doors, len(side)), replace=False)]
-        links = {a: [] for a in rooms}
-        for a, b in tree:
-            links[a].append(b)
-            links[b].append(a)
-        reach, k = self._grow({START}, links, locked), 0
-        while k < len(locked):                             # each key before its door
-            a, b = next(e for e in locked if (e[0] in reach) != (e[1] in reach))
-            inner, outer = (a, b) if a in reach else (b, a)
+        doors = [side[int(i)] for i in rng.choice(len(side), min(p.doors, len(side)), replace=False)]
+        for k, (inner, outer, keyroom) in enumerate(locks(tree, START, doors, rng)):
             self.plan[inner]["doors"].append((outer[1] - inner[1], DOORS[k]))
-            pool = sorted(reach)
-            self.plan[pool[int(rng.integers(len(pool)))]]["items"].append(KEYS[k])
-            locked.remove((a, b))
-            reach, k = self._grow(reach, links, locked), k + 1
+            self.plan[keyroom]["items"].append(KEYS[k])
         for room, s in self.plan.items():
             if not s["items"]:
                 s["items"].append(JEWEL)
@@ -125,48 +109,28 @@ class Montezuma(Platformer):
             s["spots"] = picks
             s["kind"] = "skull" if room == START else KINDS[int(rng.integers(len(KINDS)))]
             s["left"] = len(s["items"]) + len(s["doors"])
-        self.rows_of: dict = {}
         self.start(rng)
-        self.face = 1
         self.keys, self._keys_text = "", None
-        self.cleared = 0
         self._enter(START, p.height - 2, self.start_col)
-
-    @staticmethod
-    def _grow(reach, links, locked):
-        shut = {frozenset(e) for e in locked}
-        out, todo = set(reach), list(reach)
-        while todo:
-            a = todo.pop()
-            for b in links[a]:
-                if b not in out and frozenset((a, b)) not in shut:
-                    out.add(b)
-                    todo.append(b)
-        return out
 
     def _build(self, room) -> list[str]:
         """The still rows of a room, made on the first visit."""
         p, s = self.params, self.plan[room]
         w, h, mid = p.width, p.height, p.width // 2
         g = [[EMPTY] * w for _ in range(h)]
-        for c in range(w):
-            g[0][c], g[h - 1][c] = WALL, FLOOR
-        for r in range(h):
-            g[r][0] = g[r][w - 1] = WALL
+        paint(g, WALL, range(h), (0, w - 1))
+        paint(g, WALL, (0,), range(w))
+        paint(g, FLOOR, (h - 1,), range(w))
         for dc in s["exits"]:
-            for r in range(h - 5, h - 1):
-                g[r][0 if dc < 0 else w - 1] = EMPTY
+            paint(g, EMPTY, range(h - 5, h - 1), (0 if dc < 0 else w - 1,))
         for dc, door in s["doors"]:
-            for r in range(h - 4, h - 1):
-                g[r][1 if dc < 0 else w - 2] = door
+            paint(g, door, range(h - 4, h - 1), (1 if dc < 0 else w - 2,))
         items, spots = list(s["items"]), list(s["spots"])
-        if s["ledge"] is not None:
-            lc = s["ledge"]
+        lc = s["ledge"]
+        if lc is not None:
             span = range(1, 7) if lc < mid else range(w - 7, w - 1)
-            for c in span:
-                g[h - 6][c] = FLOOR
-            for r in range(h - 6, h - 1):
-                g[r][lc] = LADDER
+            paint(g, FLOOR, (h - 6,), span)
+            paint(g, LADDER, range(h - 6, h - 1), (lc,))
             on = [c for c in spots if c in span]
             if on:
                 g[h - 7][on[0]] = items.pop()
@@ -174,29 +138,21 @@ class Montezuma(Platformer):
         for item, c in zip(items, spots):
             g[h - 2][c] = item
         if s["top"] is not None:
-            for r in range(h - 1):
-                g[r][s["top"]] = LADDER
+            paint(g, LADDER, range(h - 1), (s["top"],))
         if s["bottom"] is not None:
             g[h - 1][s["bottom"]] = LADDER
-        kind = s["kind"]
-        if kind == "fire":
-            g[h - 1][mid - 1] = g[h - 1][mid] = FIRE
-        elif kind == "rope":
-            for c in range(mid - 2, mid + 3):
-                g[h - 1][c] = FIRE
-            for r in range(2, h - 2):
-                g[r][mid] = ROPE
+        if s["kind"] == "fire":
+            paint(g, FIRE, (h - 1,), (mid - 1, mid))
+        elif s["kind"] == "rope":
+            paint(g, FIRE, (h - 1,), range(mid - 2, mid + 3))
+            paint(g, ROPE, range(2, h - 2), (mid,))
         return ["".join(row) for row in g]
 
     def _enter(self, room, r: int, c: int) -> None:
         p, s = self.params, self.plan[room]
         self.room = room
         self.map.enter(*room)
-        rows = self.rows_of.get(room)
-        if rows is None:
-            rows = self.rows_of[room] = self._build(room)
-        self.still = rows
-        self.still_version += 1
+        self.show(room)
         self.entry = (r, c)
         self.place(r, c)
         mid, low = p.width // 2, p.height - 2
@@ -211,11 +167,7 @@ class Montezuma(Platformer):
         self.place(*self.entry)
 
     def _leave(self, dr: int, dc: int) -> None:
-        p = self.params
-        room = (self.room[0] + dr, self.room[1] + dc)
-        r = self.r if not dr else (p.height - 1 if dr < 0 else 0)
-        c = self.c if not dc else (p.width - 1 if dc < 0 else 0)
-        self._enter(room, r, c)
+        self._enter(*self.cross(self.room, dr, dc))
 
     def _bump(self, r: int, c: int, ch: str) -> bool:
         key = ch.lower()
@@ -254,10 +206,7 @@ class Montezuma(Platformer):
             self._took()
             if self.done:
                 return
-        tick = self.tick
-        for f in self.foes:
-            f.step(tick)
-        foe = self.touching(self.foes)
+        foe = self.meet(self.foes)
         if foe is not None:
             self.lose_life({"S": "A skull got you.", "s": "A snake bit you.", "X": "A spider bit you."}[foe.glyph])
 

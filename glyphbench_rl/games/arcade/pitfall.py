@@ -16,7 +16,7 @@ from ...core.actions import ActionSet
 from ...core.params import param
 from .engine import EMPTY, ArcadeParams, register_atari
 from .platform import (DOWN, JUMP, JUMP_LEFT, JUMP_RIGHT, JUMP_TEXT, LADDER, LEFT, RIGHT, ROPE, STAY,
-                       UP, Blink, Platformer, Swing, Walker)
+                       UP, Blink, Platformer, Swing, Walker, paint)
 from .rooms import LEGEND, RoomMap
 
 LEAVES, GROUND, EARTH, TAR, WATER, SAND, FIRE, GOLD, YOU = "%", "=", "#", ":", "~", ";", "^", "$", "@"
@@ -78,9 +78,7 @@ class Pitfall(Platformer):
         for s in self.gold:
             self.kinds[s] = "treasure"
         self.guard = {s: ("fire", "snake", "logs")[int(rng.integers(3))] for s in self.gold}
-        self.rows_of: dict = {}
         self.start(rng)
-        self.face = 1
         self.swings = []
         self._enter(0, SURFACE, 2)
 
@@ -88,23 +86,18 @@ class Pitfall(Platformer):
         p = self.params
         w, mid, kind = p.width, p.width // 2, self.kinds[s]
         g = [[EMPTY] * w for _ in range(p.height)]
-        g[0] = [LEAVES] * w
-        g[7], g[8], g[11] = [GROUND] * w, [EARTH] * w, [EARTH] * w
+        paint(g, LEAVES, (0,), range(w))
+        paint(g, GROUND, (7,), range(w))
+        paint(g, EARTH, (8, 11), range(w))
         if kind == "ladder":
-            for r in range(7, TUNNEL + 1):
-                g[r][mid] = LADDER
-            for c in (mid - 6, mid + 6):
-                g[7][c] = g[8][c] = EMPTY
-            wall = mid - 9 if s % 2 else mid + 9
-            g[9][wall] = g[TUNNEL][wall] = EARTH
-        elif kind in ("tar", "pond", "quicksand"):
-            for c in range(mid - 6, mid + 6):
-                g[7][c] = {"tar": TAR, "pond": WATER, "quicksand": SAND}[kind]
-        elif kind == "swamp":
-            for c in range(mid - 6, mid + 5):
-                g[7][c] = WATER
+            paint(g, LADDER, range(7, TUNNEL + 1), (mid,))
+            paint(g, EMPTY, (7, 8), (mid - 6, mid + 6))
+            paint(g, EARTH, (9, TUNNEL), (mid - 9 if s % 2 else mid + 9,))
+        elif kind in ("tar", "pond", "quicksand", "swamp"):
+            pit = {"tar": TAR, "pond": WATER, "quicksand": SAND, "swamp": WATER}[kind]
+            paint(g, pit, (7,), range(mid - 6, mid + (5 if kind == "swamp" else 6)))
         elif kind == "treasure":
-            g[SURFACE][w - 6] = GOLD if s in self.gold else EMPTY
+            g[SURFACE][w - 6] = GOLD
             if self.guard[s] == "fire":
                 g[SURFACE][mid] = FIRE
         return ["".join(row) for row in g]
@@ -113,11 +106,7 @@ class Pitfall(Platformer):
         p = self.params
         self.screen = s
         self.map.enter(0, s)
-        rows = self.rows_of.get(s)
-        if rows is None:
-            rows = self.rows_of[s] = self._build(s)
-        self.still = rows
-        self.still_version += 1
+        self.show(s)
         mid, kind = p.width // 2, self.kinds[s]
         self.swings = [Swing(1, mid, 4, 7)] if kind in ("tar", "pond") else []
         self.blinks = ([Blink([(7, c) for c in range(mid - 6, mid + 6)], SAND, GROUND, 12, 24)] if kind == "quicksand"
@@ -127,7 +116,8 @@ class Pitfall(Platformer):
         self.foes = [Walker(SURFACE, c, 0, 0, 2, "o", d=-1, wrap=p.width) for c in (mid, mid + 12)[:1 + s % 2]] if logs else []
         if kind == "treasure" and self.guard[s] == "snake":
             self.foes.append(Walker(SURFACE, mid, mid, mid, 0, "s"))
-        self.scorpion = None if kind == "ladder" else Walker(TUNNEL, mid, 1, p.width - 2, 2, "X", chase=True)
+        if kind != "ladder":
+            self.foes.append(Walker(TUNNEL, mid, 1, p.width - 2, 2, "X", chase=True))
         self.place(r, c)
         self.entry = (r, c)
 
@@ -167,19 +157,12 @@ class Pitfall(Platformer):
             self.score.gain()
             if self.done:
                 return
-        tick = self.tick
-        for f in self.foes:
-            f.step(tick)
-        if self.scorpion is not None:
-            self.scorpion.step(tick, self.c if self.r > SURFACE + 1 else self.scorpion.c)
-            if (self.scorpion.r, self.scorpion.c) == (self.r, self.c):
-                self.lose_life("A scorpion stung you.")
-                return
-        foe = self.touching(self.foes)
+        foe = self.meet(self.foes, self.c if self.r > SURFACE + 1 else None)
         if foe is not None:
-            if foe.glyph == "s":
-                self.lose_life("A snake bit you.")
-            elif foe is not self.hit_by:
+            if foe.glyph != "o":
+                self.lose_life("A snake bit you." if foe.glyph == "s" else "A scorpion stung you.")
+                return
+            if foe is not self.hit_by:
                 self.say("A log hit you.")
                 self.pay(-p.log)
         self.hit_by = foe
@@ -191,8 +174,6 @@ class Pitfall(Platformer):
     def _sprites(self):
         out = [cell for s in self.swings for cell in s.cells(self.tick)]
         out += [(f.r, f.c, f.glyph) for f in self.foes]
-        if self.scorpion is not None:
-            out.append((self.scorpion.r, self.scorpion.c, "X"))
         out.append((self.r, self.c, YOU))
         return out
 

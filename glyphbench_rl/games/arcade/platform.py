@@ -16,6 +16,10 @@ still rows (``self.still``; a game keeps one list of rows per room and points ``
 - a ``Swing`` (a vine) carries the one who holds its tip; DOWN lets go;
 - leaving the rows (an edge, or a ladder through the top or the bottom) calls ``_leave(dr, dc)``
   for the game to change rooms; a cell in ``HAZARD`` under you costs a life.
+A world of rooms keeps one list of rows per room, made by ``_build(room)`` on the first visit
+(``show(room)``); ``spanning_tree`` links a world's rooms at random from the start, and ``locks``
+puts doors on some links with each key in a room reachable before its door (so there is always
+a way through).
 ``Walker``: a monster pacing a floor between two columns (or rolling round a screen, or closing
 on the player). ``Blink``: cells that switch between two glyphs on a cycle (lasers, jaws,
 quicksand), written into the still rows when they switch.
@@ -23,7 +27,7 @@ quicksand), written into the still rows when they switch.
 
 from __future__ import annotations
 
-from typing import ClassVar
+from typing import ClassVar, Hashable, Iterable
 
 from .engine import EMPTY, ArcadeTask
 
@@ -35,10 +39,68 @@ JUMP_TEXT = ("A jump rises one row, and a sideways jump carries you four columns
              "across, down one row)")
 
 
+Room = Hashable
+Link = tuple[Room, Room]
+
+
+def spanning_tree(near: dict, start: Room, rng) -> list[Link]:
+    """A random spanning tree of the rooms from ``start`` (``near``: room -> its neighbours),
+    as (room, room it was reached from... to) links in the order they were made."""
+    tree, seen, edge = [], {start}, [(start, b) for b in near[start]]
+    while edge:
+        a, b = edge.pop(int(rng.integers(len(edge))))
+        if b not in seen:
+            seen.add(b)
+            tree.append((a, b))
+            edge += [(b, n) for n in near[b] if n not in seen]
+    return tree
+
+
+def reachable(rooms: Iterable[Room], tree: list[Link], shut: Iterable[Link]) -> set:
+    """The rooms reachable from ``rooms`` over the tree's links, not through the ``shut`` ones."""
+    closed = {frozenset(e) for e in shut}
+    links: dict = {}
+    for a, b in tree:
+        if frozenset((a, b)) not in closed:
+            links.setdefault(a, []).append(b)
+            links.setdefault(b, []).append(a)
+    out, todo = set(rooms), list(rooms)
+    while todo:
+        for b in links.get(todo.pop(), ()):
+            if b not in out:
+                out.add(b)
+                todo.append(b)
+    return out
+
+
+def locks(tree: list[Link], start: Room, doors: list[Link], rng) -> list[tuple[Room, Room, Room]]:
+    """Doors on the links ``doors``, in an order they can be opened: (room before the door,
+    room behind it, room its key lies in), each key in a room reachable before its door."""
+    shut, out = list(doors), []
+    reach = reachable([start], tree, shut)
+    while shut:
+        a, b = next(e for e in shut if (e[0] in reach) != (e[1] in reach))
+        pool = sorted(reach)
+        out.append((a, b, pool[int(rng.integers(len(pool)))]) if a in reach else
+                   (b, a, pool[int(rng.integers(len(pool)))]))
+        shut.remove((a, b))
+        reach = reachable(reach, tree, shut)
+    return out
+
+
+def paint(grid: list[list[str]], ch: str, rows: Iterable[int], cols: Iterable[int]) -> None:
+    """Set every cell of ``rows`` x ``cols`` of a room being built (lists of cells) to ``ch``."""
+    cols = tuple(cols)
+    for r in rows:
+        line = grid[r]
+        for c in cols:
+            line[c] = ch
+
+
 class Walker:
     """A monster on row ``r`` stepping every ``every`` ticks (0: never): between columns ``lo``
     and ``hi``, turning at the ends; round a screen ``wrap`` columns wide; or, with ``chase``,
-    toward the column it is given."""
+    toward the column it is given (standing still when given none)."""
     __slots__ = ("r", "c", "d", "lo", "hi", "every", "glyph", "wrap", "chase")
 
     def __init__(self, r: int, c: int, lo: int, hi: int, every: int, glyph: str, d: int = 1,
@@ -46,8 +108,8 @@ class Walker:
         self.r, self.c, self.lo, self.hi, self.every, self.glyph = r, c, lo, hi, every, glyph
         self.d, self.wrap, self.chase = d, wrap, chase
 
-    def step(self, tick: int, target: int = 0) -> None:
-        if not self.every or tick % self.every:
+    def step(self, tick: int, target: int | None = None) -> None:
+        if not self.every or tick % self.every or (self.chase and target is None):
             return
         if self.wrap:
             self.c = (self.c + self.d) % self.wrap
@@ -105,9 +167,33 @@ class Platformer(ArcadeTask):
     HAZARD: ClassVar[frozenset] = frozenset()
     safe_fall: ClassVar[int] = 3
 
+    def show(self, room) -> None:
+        """Make ``room``'s rows the still rows (built by ``_build`` on the first visit, then
+        kept, changes and all, in ``rows_of``)."""
+        rows_of = self.__dict__.setdefault("rows_of", {})
+        rows = rows_of.get(room)
+        if rows is None:
+            rows = rows_of[room] = self._build(room)
+        self.still = rows
+        self.still_version += 1
+
+    def _build(self, room) -> list[str]:
+        raise NotImplementedError
+
+    def cross(self, room: tuple[int, int], dr: int, dc: int) -> tuple[tuple[int, int], int, int]:
+        """For rooms on a grid: the room the player reaches leaving ``room`` by (dr, dc), and
+        the cell there (the opposite edge, the same row or column)."""
+        h, w = len(self.still), len(self.still[0])
+        return ((room[0] + dr, room[1] + dc), self.r if not dr else (h - 1 if dr < 0 else 0),
+                self.c if not dc else (w - 1 if dc < 0 else 0))
+
+    def start(self, rng) -> None:
+        self.rows_of: dict = {}
+        super().start(rng)
+        self.face = 1
+
     def place(self, r: int, c: int) -> None:
-        """Put the player at (r, c), still (facing as before: set ``face``, 1 or -1, in
-        ``_setup``)."""
+        """Put the player at (r, c), still (facing as before)."""
         self.r, self.c, self.arc, self.ai, self.jd, self.fallen, self.held = r, c, None, 0, 0, 0, None
         self.swings: list[Swing] = getattr(self, "swings", [])
 
@@ -236,3 +322,12 @@ class Platformer(ArcadeTask):
             if w.r == r and w.c == c:
                 return w
         return None
+
+    def meet(self, walkers: list[Walker], target: int | None = None) -> Walker | None:
+        """Step the walkers (chasers toward column ``target``) and return one the player met:
+        walked into, or that walked into the player (so the two cannot pass through each other)."""
+        met = self.touching(walkers)
+        tick = self.tick
+        for w in walkers:
+            w.step(tick, target)
+        return met or self.touching(walkers)

@@ -342,8 +342,7 @@ def pf_policy(t):
     if r > pf.SURFACE:                               # below: climb out
         if rows[r][c] == LADDER:
             return P_UP
-        sc = t.scorpion
-        if sc is not None and 0 < (sc.c - c) * t.face <= 2:
+        if any(f.glyph == "X" and 0 < (f.c - c) * t.face <= 2 for f in t.foes):
             return P_FIRE
         if kind == "ladder" and not any(rows[r][k] == pf.EARTH for k in range(min(c, mid), max(c, mid))):
             return P_RIGHT if mid > c else P_LEFT
