@@ -42,16 +42,21 @@ class PitfallParams(ArcadeParams):
     screens: int = param(255, 16, 255)
     clock: int = param(8000, 100, 100000)   # turns before time is up
     log: int = param(100, 0, 1000)       # points a rolling log's touch costs
+    sand_open: int = param(12, 1, 100)   # quicksand: open this many ticks, then shut
+    sand_shut: int = param(24, 14, 100)  # (long enough to run across)
+    jaws_open: int = param(8, 1, 100)    # crocodiles: jaws open, then shut
+    jaws_shut: int = param(12, 6, 100)
 
 
 class Pitfall(Platformer):
     title = "Pitfall!"
     rules = ("Pitfall Harry (@) runs a ring of {screens} jungle screens, {width}x{height}, seen one at "
-             "a time; " + LEGEND + ". Running off the side of a screen on the ground takes you to the "
+             "a time. " + LEGEND + ". Running off the side of a screen on the ground takes you to the "
              "next one; ladders (H) lead down to the tunnel below, where running off a side moves you "
              "three screens, and brick walls (#) block the way. " + JUMP_TEXT + ". Tar pits (:), "
-             "ponds (~), quicksand (;, open for a while, then shut), an open crocodile (C; a shut "
-             "one, c, you can stand on), fire (^), snakes (s) and scorpions (X) each cost a life; "
+             "ponds (~), quicksand (;, open {sand_open} ticks, then shut {sand_shut}), a crocodile "
+             "with its jaws open (C, {jaws_open} ticks, then shut {jaws_shut}: c, a head you can "
+             "stand on), fire (^), snakes (s) and scorpions (X) each cost a life; "
              "you have {lives_text}. A jump that comes within a column of a vine's tip (|) grabs it; it swings you over the pit, and DOWN lets go. "
              "Falling through an open hole beside a ladder drops you into the tunnel. Rolling logs "
              "(o) cost {log} points each time one hits you. {goal} treasures ($) lie on the screens.")
@@ -78,6 +83,8 @@ class Pitfall(Platformer):
         for s in self.gold:
             self.kinds[s] = "treasure"
         self.guard = {s: ("fire", "snake", "logs")[int(rng.integers(3))] for s in self.gold}
+        self.wall = rng.choice((-9, 9), size=p.screens).tolist()       # a tunnel's brick wall
+        self.logs = rng.integers(0, 3, size=p.screens).tolist()        # logs on a ladder screen
         self.start(rng)
         self.swings = []
         self._enter(0, SURFACE, 2)
@@ -92,7 +99,7 @@ class Pitfall(Platformer):
         if kind == "ladder":
             paint(g, LADDER, range(7, TUNNEL + 1), (mid,))
             paint(g, EMPTY, (7, 8), (mid - 6, mid + 6))
-            paint(g, EARTH, (9, TUNNEL), (mid - 9 if s % 2 else mid + 9,))
+            paint(g, EARTH, (9, TUNNEL), (mid + self.wall[s],))
         elif kind in ("tar", "pond", "quicksand", "swamp"):
             pit = {"tar": TAR, "pond": WATER, "quicksand": SAND, "swamp": WATER}[kind]
             paint(g, pit, (7,), range(mid - 6, mid + (5 if kind == "swamp" else 6)))
@@ -109,11 +116,13 @@ class Pitfall(Platformer):
         self.show(s)
         mid, kind = p.width // 2, self.kinds[s]
         self.swings = [Swing(1, mid, 4, 7)] if kind in ("tar", "pond") else []
-        self.blinks = ([Blink([(7, c) for c in range(mid - 6, mid + 6)], SAND, GROUND, 12, 24)] if kind == "quicksand"
-                       else [Blink([(7, mid - 3), (7, mid + 1)], JAWS, SHUT, 8, 12)] if kind == "swamp" else [])
+        self.blinks = ([Blink([(7, c) for c in range(mid - 6, mid + 6)], SAND, GROUND, p.sand_open, p.sand_shut)]
+                       if kind == "quicksand" else
+                       [Blink([(7, mid - 3), (7, mid + 1)], JAWS, SHUT, p.jaws_open, p.jaws_shut)] if kind == "swamp" else [])
         self.blink(self.blinks)
-        logs = kind == "logs" or (kind == "treasure" and self.guard[s] == "logs") or (kind == "ladder" and s % 3 == 0)
-        self.foes = [Walker(SURFACE, c, 0, 0, 2, "o", d=-1, wrap=p.width) for c in (mid, mid + 12)[:1 + s % 2]] if logs else []
+        logs = (2 if kind == "logs" else 1 if kind == "treasure" and self.guard[s] == "logs"
+                else self.logs[s] if kind == "ladder" else 0)
+        self.foes = [Walker(SURFACE, c, 0, 0, 2, "o", d=-1, wrap=p.width) for c in (mid, mid + 12)[:logs]]
         if kind == "treasure" and self.guard[s] == "snake":
             self.foes.append(Walker(SURFACE, mid, mid, mid, 0, "s"))
         if kind != "ladder":

@@ -418,10 +418,11 @@ def test_pitfall_hole_drops_into_the_tunnel_which_moves_three_screens():
     for _ in range(5):
         env.step(P_NOOP)
     assert (env.r, env.lives) == (pf.TUNNEL, 3)      # a hole's fall does no harm
-    env.place(pf.TUNNEL, 1 if s % 2 == 0 else w - 2)  # on the side away from the brick wall
-    env.step(P_LEFT if s % 2 == 0 else P_RIGHT)
-    env.step(P_LEFT if s % 2 == 0 else P_RIGHT)
-    assert env.screen == (s - 3 if s % 2 == 0 else s + 3) % env.params.screens and env.r == pf.TUNNEL
+    away = 1 if env.wall[s] > 0 else -1               # the side away from the brick wall
+    env.place(pf.TUNNEL, 1 if away < 0 else w - 2)
+    env.step(P_LEFT if away < 0 else P_RIGHT)
+    env.step(P_LEFT if away < 0 else P_RIGHT)
+    assert env.screen == (s + 3 * away) % env.params.screens and env.r == pf.TUNNEL
     env._enter(s, pf.SURFACE, mid - 2)                # the ladder: down and back up
     env.step(P_RIGHT)
     env.step(P_RIGHT)
