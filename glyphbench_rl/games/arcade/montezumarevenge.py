@@ -27,7 +27,8 @@ WALL, FLOOR, FIRE, LASER, JEWEL, YOU = "#", "=", "^", "!", "*", "@"
 KEYS, DOORS, COLOURS = "rbgy", "RBGY", ("red", "blue", "green", "yellow")
 FOES = {"skull": "S", "snake": "s", "spider": "X"}
 KINDS = ("fire", "rope", "laser", "skull", "snake", "spider")
-PAY = {JEWEL: 1000, **{k: 100 for k in KEYS}}
+KEY_PTS, DOOR_PTS, JEWEL_PTS = 100, 300, 1000
+PAY = {JEWEL: JEWEL_PTS, **{k: KEY_PTS for k in KEYS}}
 ACTIONS = ActionSet([("NOOP", "stand still (or hang on)"), ("FIRE", "jump straight up"),
                      ("UP", "climb up a ladder or rope"), ("RIGHT", "walk right"),
                      ("LEFT", "walk left"), ("DOWN", "climb down a ladder or rope"),
@@ -51,7 +52,7 @@ class MontezumaParams(ArcadeParams):
 
 class Montezuma(Platformer):
     title = "Montezuma's Revenge"
-    rules = ("A pyramid of 24 rooms, {width}x{height} each, seen one room at a time. " + LEGEND + ". "
+    rules = ("A pyramid of {rooms} rooms, {width}x{height} each, seen one room at a time. " + LEGEND + ". "
              "You (@) walk on floors (=), climb ladders (H) and ropes (|), and leave a room through a "
              "gap in its side wall (#) or by a ladder through its floor or ceiling. " + JUMP_TEXT + "; "
              "a jump that meets a rope grabs it. Falling more than {fall} rows, fire (^), a lit laser "
@@ -59,8 +60,8 @@ class Montezuma(Platformer):
              "each cost a life; you have {lives_text} and start again where you entered the room. "
              "A key (r, b, g, y) opens one door of its colour (R, B, G, Y: walk into it holding the key). "
              "A room is cleared when its keys and jewels (*) are taken and its doors opened.")
-    rewards = ("+100 a key, +300 a door opened, +1000 a jewel{room_text}; {death:g} when your last life "
-               "is lost.")
+    rewards = ("+{key_pts} a key, +{door_pts} a door opened, +{jewel_pts} a jewel{room_text}; {death:g} "
+               "when your last life is lost.")
     ends = "when you have cleared {goal} rooms, or you lose your last life"
     ACTIONS = ACTIONS
     Params = MontezumaParams
@@ -74,7 +75,9 @@ class Montezuma(Platformer):
 
     def prompt_fields(self) -> dict:
         unit = self.params.unit
-        return {**super().prompt_fields(), "room_text": f", +{unit:g} a room cleared" if unit else ""}
+        return {**super().prompt_fields(), "room_text": f", +{unit:g} a room cleared" if unit else "",
+                "rooms": "".join(LAYOUT).count("#"), "key_pts": KEY_PTS, "door_pts": DOOR_PTS,
+                "jewel_pts": JEWEL_PTS}
 
     def _setup(self, rng) -> None:
         p = self.params
@@ -176,7 +179,7 @@ class Montezuma(Platformer):
             for rr in range(self.params.height - 4, self.params.height - 1):
                 self.set_still(rr, c, EMPTY)
             self.say(f"The {COLOURS[DOORS.index(ch)]} door opens.")
-            self.pay(300)
+            self.pay(DOOR_PTS)
             self._took()
             return True
         return False

@@ -23,7 +23,7 @@ LEAVES, GROUND, EARTH, TAR, WATER, SAND, FIRE, GOLD, YOU = "%", "=", "#", ":", "
 JAWS, SHUT = "C", "c"
 KINDS = ("ladder", "ladder", "tar", "pond", "quicksand", "swamp", "logs")
 VALUES = (2000, 3000, 4000, 5000)
-SURFACE, TUNNEL = 6, 10
+SURFACE, TUNNEL, SPAN = 6, 10, 4
 ACTIONS = ActionSet([("NOOP", "stand still (or hang on to a vine)"),
                      ("FIRE", "jump the way you last ran"),
                      ("UP", "climb up a ladder"), ("RIGHT", "run right"), ("LEFT", "run left"),
@@ -51,7 +51,7 @@ class PitfallParams(ArcadeParams):
 class Pitfall(Platformer):
     title = "Pitfall!"
     rules = ("Pitfall Harry (@) runs a ring of {screens} jungle screens, {width}x{height}, seen one at "
-             "a time. " + LEGEND + ". Running off the side of a screen on the ground takes you to the "
+             "a time. " + LEGEND + " (it shows {span} screens either side of yours). Running off the side of a screen on the ground takes you to the "
              "next one; ladders (H) lead down to the tunnel below, where running off a side moves you "
              "three screens, and brick walls (#) block the way. " + JUMP_TEXT + ". Tar pits (:), "
              "ponds (~), quicksand (;, open {sand_open} ticks, then shut {sand_shut}), a crocodile "
@@ -60,7 +60,7 @@ class Pitfall(Platformer):
              "you have {lives_text}. A jump that comes within a column of a vine's tip (|) grabs it; it swings you over the pit, and DOWN lets go. "
              "Falling through an open hole beside a ladder drops you into the tunnel. Rolling logs "
              "(o) cost {log} points each time one hits you. {goal} treasures ($) lie on the screens.")
-    rewards = ("+2000 to +5000 a treasure (money bag, silver bar, gold bar, ring), -{log} a log's "
+    rewards = ("+{low} to +{high} a treasure (money bag, silver bar, gold bar, ring), -{log} a log's "
                "hit; {death:g} when your last life is lost or the clock ({clock} turns) runs out.")
     ends = "when you have collected {goal} treasures, lose your last life, or the clock runs out"
     ACTIONS = ACTIONS
@@ -74,9 +74,12 @@ class Pitfall(Platformer):
     HAZARD = frozenset(TAR + WATER + SAND + JAWS + FIRE)
     safe_fall = 4
 
+    def prompt_fields(self) -> dict:
+        return {**super().prompt_fields(), "low": min(VALUES), "high": max(VALUES), "span": SPAN}
+
     def _setup(self, rng) -> None:
         p = self.params
-        self.map = RoomMap(["#" * p.screens], span=4)
+        self.map = RoomMap(["#" * p.screens], span=SPAN)
         self.kinds = [KINDS[int(k)] for k in rng.integers(len(KINDS), size=p.screens)]
         picks = rng.choice(range(1, p.screens), size=min(p.goal, p.screens - 1), replace=False)
         self.gold = {int(s): VALUES[i % 4] for i, s in enumerate(picks)}
