@@ -216,6 +216,10 @@ def test_montezuma_pyramid_always_has_a_way_through():
                         opened.add(d)
                         grew = True
         assert len(reach) == 24, seed
+        for room, plan in env.plan.items():                # every treasure and door is drawn
+            text = "".join(env._build(room))
+            assert sum(text.count(g) for g in mz.PAY) == len(plan["items"])
+            assert sum(text.count(d) for _, d in plan["doors"]) == 3 * len(plan["doors"])
         assert {nxt for room in reach for nxt in links(env, room)} <= env.map.rooms
 
 
@@ -455,3 +459,27 @@ def test_pitfall_log_costs_points_once_a_hit_and_the_clock_ends_the_run():
 def test_pitfall_running_into_the_swamp_loses_every_life():
     env, info = play(PF, lambda env: P_RIGHT, 0, 500)
     assert env.done and env.won is False and env.lives == 0 and info["return"] <= -1000
+
+
+def test_pitfall_crocodile_heads_hold_you_only_while_shut_and_quicksand_opens_under_you():
+    env = make(PF)
+    env.reset(seed=0)
+    screen_of(env, "swamp")
+    mid, jaws = env.params.width // 2, env.blinks[0]
+    while jaws.lit_at(env.tick + 1):
+        env.step(P_NOOP)
+    env.place(pf.SURFACE, mid - 3)
+    held = 0
+    while env.lives == 3:
+        env.step(P_NOOP)
+        held += 1
+    assert held >= 2 and not jaws.lit_at(env.tick - 1) and jaws.lit_at(env.tick)
+    assert "crocodile" in env.frame.message
+    screen_of(env, "quicksand")
+    sand = env.blinks[0]
+    while sand.lit_at(env.tick + 1):
+        env.step(P_NOOP)
+    env.place(pf.SURFACE, mid)
+    while env.lives == 2:
+        env.step(P_NOOP)
+    assert sand.lit_at(env.tick) and "sank" in env.frame.message
