@@ -23,12 +23,12 @@ from .rooms import LEGEND, RoomMap
 
 LAYOUT = ("---###---", "--#####--", "-#######-", "#########")
 START = (0, 4)
-WALL, FLOOR, FIRE, LASER, JEWEL, YOU = "#", "=", "^", "!", "*", "@"
+WALL, FLOOR, FIRE, LASER, JEWEL, SWORD, YOU = "#", "=", "^", "!", "*", "/", "@"
 KEYS, DOORS, COLOURS = "rbgy", "RBGY", ("red", "blue", "green", "yellow")
 FOES = {"skull": "S", "snake": "s", "spider": "X"}
-KINDS = ("fire", "rope", "laser", "skull", "snake", "spider")
+KINDS = ("fire", "rope", "laser", "bridge", "skull", "snake", "spider")
 KEY_PTS, DOOR_PTS, JEWEL_PTS = 100, 300, 1000
-PAY = {JEWEL: JEWEL_PTS, **{k: KEY_PTS for k in KEYS}}
+PAY = {JEWEL: JEWEL_PTS, SWORD: KEY_PTS, **{k: KEY_PTS for k in KEYS}}
 ACTIONS = ActionSet([("NOOP", "stand still (or hang on)"), ("FIRE", "jump straight up"),
                      ("UP", "climb up a ladder or rope"), ("RIGHT", "walk right"),
                      ("LEFT", "walk left"), ("DOWN", "climb down a ladder or rope"),
@@ -47,6 +47,8 @@ class MontezumaParams(ArcadeParams):
     doors: int = param(4, 0, 4)          # locked doors (each of its own colour)
     pace: int = param(2, 1, 8)           # a skull rolls a cell every this many ticks
     laser: int = param(6, 1, 30)         # a laser gate is on this many ticks, then off as long
+    bridge: int = param(8, 7, 30)        # a vanishing floor is there this many ticks, then gone as long
+    swords: float = param(0.25, 0, 1)    # chance a room holds a sword
     fall: int = param(3, 1, 8)           # rows you may fall and live
 
 
@@ -56,18 +58,21 @@ class Montezuma(Platformer):
              "You (@) walk on floors (=), climb ladders (H) and ropes (|), and leave a room through a "
              "gap in its side wall (#) or by a ladder through its floor or ceiling. " + JUMP_TEXT + "; "
              "a jump that meets a rope grabs it. Falling more than {fall} rows, fire (^), a lit laser "
-             "gate (!, on {laser} ticks then off {laser}) and skulls (S), snakes (s) and spiders (X) "
-             "each cost a life; you have {lives_text} and start again where you entered the room. "
+             "gate (!, on {laser} ticks then off {laser}), fire under a vanishing floor (there {bridge} "
+             "ticks, then gone {bridge}) and skulls (S), snakes (s) and spiders (X) each cost a "
+             "life; you have {lives_text} and start again where you entered the room. A sword (/) "
+             "kills the next monster you touch, and is used up. "
              "A key (r, b, g, y) opens one door of its colour (R, B, G, Y: walk into it holding the key). "
-             "A room is cleared when its keys and jewels (*) are taken and its doors opened.")
-    rewards = ("+{key_pts} a key, +{door_pts} a door opened, +{jewel_pts} a jewel{room_text}; {death:g} "
+             "A room is cleared when its keys, swords and jewels (*) are taken and its doors opened. "
+             "The HUD's Items are the keys and swords you carry.")
+    rewards = ("+{key_pts} a key or a sword, +{door_pts} a door opened, +{jewel_pts} a jewel{room_text}; {death:g} "
                "when your last life is lost.")
     ends = "when you have cleared {goal} rooms, or you lose your last life"
     ACTIONS = ACTIONS
     Params = MontezumaParams
     pattern = "D"
     glyphs = {EMPTY: "air", WALL: "wall", FLOOR: "floor", LADDER: "ladder", ROPE: "rope",
-              FIRE: "fire", LASER: "laser", JEWEL: "jewel", **{k: f"{n} key" for k, n in zip(KEYS, COLOURS)},
+              FIRE: "fire", LASER: "laser", JEWEL: "jewel", SWORD: "sword", **{k: f"{n} key" for k, n in zip(KEYS, COLOURS)},
               **{d: f"{n} door" for d, n in zip(DOORS, COLOURS)}, "S": "skull", "s": "snake",
               "X": "spider", YOU: "you"}
     SOLID = frozenset(WALL + FLOOR + DOORS)
@@ -104,6 +109,8 @@ class Montezuma(Platformer):
         for room, s in self.plan.items():
             if not s["items"]:
                 s["items"].append(JEWEL)
+            if room != START and rng.random() < p.swords:
+                s["items"].append(SWORD)
             free = [c for c in sides if c not in (s["top"], s["bottom"])]
             picks = [free[int(i)] for i in rng.permutation(len(free))]
             s["ledge"] = picks.pop() if rng.random() < 0.6 else None
@@ -113,7 +120,7 @@ class Montezuma(Platformer):
             s["kind"] = "skull" if room == START else KINDS[int(rng.integers(len(KINDS)))]
             s["left"] = len(s["items"]) + len(s["doors"])
         self.start(rng)
-        self.keys, self._keys_text = "", None
+        self.items, self._items_text = "", None
         self._enter(START, p.height - 2, self.start_col)
 
     def _build(self, room) -> list[str]:
@@ -160,11 +167,13 @@ class Montezuma(Platformer):
         self.place(r, c)
         mid, low = p.width // 2, p.height - 2
         kind = s["kind"]
-        self.foes = ([Walker(low, mid - 3, mid - 3, mid + 2, p.pace if kind == "skull" else 1, FOES[kind])]
+        self.foes = [] if s.get("slain") else ([Walker(low, mid - 3, mid - 3, mid + 2, p.pace if kind == "skull" else 1, FOES[kind])]
                      if kind in ("skull", "spider") else [Walker(low, mid, mid, mid, 0, "s")] if kind == "snake" else [])
-        self.lasers = [Blink([(rr, mid) for rr in range(p.height - 5, p.height - 1)], LASER, EMPTY,
-                             p.laser, p.laser)] if kind == "laser" else []
-        self.blink(self.lasers)
+        self.blinks = ([Blink([(rr, mid) for rr in range(p.height - 5, p.height - 1)], LASER, EMPTY, p.laser, p.laser)]
+                       if kind == "laser" else
+                       [Blink([(p.height - 1, c) for c in range(mid - 2, mid + 3)], FLOOR, FIRE, p.bridge, p.bridge)]
+                       if kind == "bridge" else [])
+        self.blink(self.blinks)
 
     def _respawn(self) -> None:
         self.place(*self.entry)
@@ -174,8 +183,8 @@ class Montezuma(Platformer):
 
     def _bump(self, r: int, c: int, ch: str) -> bool:
         key = ch.lower()
-        if ch in DOORS and key in self.keys:
-            self.keys = self.keys.replace(key, "", 1)
+        if ch in DOORS and key in self.items:
+            self.items = self.items.replace(key, "", 1)
             for rr in range(self.params.height - 4, self.params.height - 1):
                 self.set_still(rr, c, EMPTY)
             self.say(f"The {COLOURS[DOORS.index(ch)]} door opens.")
@@ -195,15 +204,16 @@ class Montezuma(Platformer):
         self.score.gain()
 
     def _play(self, action: int) -> None:
-        if self.lasers:
-            self.blink(self.lasers)
+        if self.blinks:
+            self.blink(self.blinks)
         if not self.walk(INTENTS[action]) or self.done:
             return
         ch = self.still[self.r][self.c]
         if ch in PAY:
             self.set_still(self.r, self.c, EMPTY)
+            if ch in KEYS or ch == SWORD:
+                self.items += ch
             if ch in KEYS:
-                self.keys += ch
                 self.say(f"A {COLOURS[KEYS.index(ch)]} key.")
             self.pay(PAY[ch])
             self._took()
@@ -211,7 +221,14 @@ class Montezuma(Platformer):
                 return
         foe = self.meet(self.foes)
         if foe is not None:
-            self.lose_life({"S": "A skull got you.", "s": "A snake bit you.", "X": "A spider bit you."}[foe.glyph])
+            name = {"S": "skull", "s": "snake", "X": "spider"}[foe.glyph]
+            if SWORD in self.items:
+                self.items = self.items.replace(SWORD, "", 1)
+                self.foes.remove(foe)
+                self.plan[self.room]["slain"] = True
+                self.say(f"Your sword kills the {name}.")
+            else:
+                self.lose_life(f"A {name} got you.")
 
     def _hazard_text(self) -> str:
         return "You burned."
@@ -222,9 +239,10 @@ class Montezuma(Platformer):
         return out
 
     def _extra_hud(self) -> str:
-        if self._keys_text is None or self._keys_text[0] != self.keys or self._keys_text[1] != self.map.hud():
-            self._keys_text = (self.keys, self.map.hud(), f"Keys {self.keys or '-'} | {self.map.hud()}")
-        return self._keys_text[2]
+        text = self._items_text
+        if text is None or text[0] != self.items or text[1] != self.map.hud():
+            text = self._items_text = (self.items, self.map.hud(), f"Items {self.items or '-'} | {self.map.hud()}")
+        return text[2]
 
 
 register_atari(Montezuma, "montezumarevenge", max_turns=10000)

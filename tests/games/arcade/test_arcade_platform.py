@@ -52,7 +52,7 @@ def passable(t, room, nxt):
             if (a[0], a[1] + dc) == b:
                 rows = t.rows_of.get(a)
                 shut = rows is None or any(door in row for row in rows)
-                if shut and door.lower() not in t.keys:
+                if shut and door.lower() not in t.items:
                     return False
     return True
 
@@ -61,7 +61,7 @@ def doable(t, room):
     """Whether a room holds something to take now (a shut door counts only with its key)."""
     rows = t.rows_of.get(room)
     stuck = sum(1 for _, door in t.plan[room]["doors"]
-                if (rows is None or any(door in row for row in rows)) and door.lower() not in t.keys)
+                if (rows is None or any(door in row for row in rows)) and door.lower() not in t.items)
     return t.plan[room]["left"] > stuck
 
 
@@ -125,15 +125,18 @@ def corridor_step(t, d):
     low, rows = t.params.height - 2, t.still
     c = t.c
     nxt = c + d
-    if 0 <= nxt < t.params.width and rows[low + 1][nxt] == mz.FIRE:
-        return UP_RIGHT if d > 0 else UP_LEFT
-    if t.lasers and nxt == t.params.width // 2 and any(t.lasers[0].lit_at(t.tick + k) for k in (1, 2, 3)):
+    kind, mid = t.plan[t.room]["kind"], t.params.width // 2
+    if kind == "laser" and nxt == mid and any(t.blinks[0].lit_at(t.tick + k) for k in (1, 2, 3)):
         return NOOP
+    if kind == "bridge" and nxt == mid - 2 * d and not all(t.blinks[0].lit_at(t.tick + k) for k in range(1, 8)):
+        return NOOP
+    if kind != "bridge" and 0 <= nxt < t.params.width and rows[low + 1][nxt] == mz.FIRE:
+        return UP_RIGHT if d > 0 else UP_LEFT
     walk = [(low, c + d * k) for k in range(1, 4)]
     jump = [(low - 1, c + d), (low - 1, c + 2 * d), (low - 1, c + 3 * d), (low, c + 4 * d)]
     if not t.foes or safe(t, walk):
         return RIGHT if d > 0 else LEFT
-    if safe(t, jump) and rows[low + 1][min(max(c + 4 * d, 0), t.params.width - 1)] != mz.FIRE:
+    if safe(t, jump) and rows[low + 1][min(max(c + 4 * d, 0), t.params.width - 1)] not in (mz.FIRE, mz.EMPTY):
         return UP_RIGHT if d > 0 else UP_LEFT
     if safe(t, [(low, c)] * 3):
         return NOOP
@@ -150,7 +153,7 @@ def mz_policy(env):
     if rows[r][c] == ROPE:
         return UP_RIGHT if t.face > 0 else UP_LEFT
     goals = [(rr, cc) for rr in (top, low) for cc in range(w) if rows[rr][cc] in mz.PAY]
-    goals += [(low, cc) for cc in (1, w - 2) if rows[low][cc] in mz.DOORS and rows[low][cc].lower() in t.keys]
+    goals += [(low, cc) for cc in (1, w - 2) if rows[low][cc] in mz.DOORS and rows[low][cc].lower() in t.items]
     lc = s["ledge"]
     if goals:
         gr, gc = min(goals, key=lambda g: (g[0] != r, abs(g[1] - c)))
@@ -268,10 +271,10 @@ def test_montezuma_key_opens_one_door_of_its_colour():
     env._enter(room, low, col - dc)
     env.step(LEFT if dc < 0 else RIGHT)
     assert env.c == col - dc and env.still[low][col] == door          # shut without the key
-    env.keys = door.lower() + "x"
+    env.items = door.lower() + "x"
     before = env.score.points
     _, reward, *_ = env.step(LEFT if dc < 0 else RIGHT)
-    assert env.c == col and env.still[low][col] == mz.EMPTY and env.keys == "x"
+    assert env.c == col and env.still[low][col] == mz.EMPTY and env.items == "x"
     assert reward == 300 and env.score.points == before + 300
 
 
@@ -299,7 +302,7 @@ def test_montezuma_fall_from_a_ledge_costs_a_life_but_a_jump_does_not():
 def test_montezuma_laser_gate_burns_only_while_lit():
     env = fresh(0, "laser")
     mid, low = env.params.width // 2, env.params.height - 2
-    gate = env.lasers[0]
+    gate = env.blinks[0]
     while not gate.lit_at(env.tick + 1):
         env.step(NOOP)
     env.place(low, mid)
@@ -483,3 +486,32 @@ def test_pitfall_crocodile_heads_hold_you_only_while_shut_and_quicksand_opens_un
     while env.lives == 2:
         env.step(P_NOOP)
     assert sand.lit_at(env.tick) and "sank" in env.frame.message
+
+
+def test_montezuma_sword_kills_the_monster_it_meets_and_is_used_up():
+    env = fresh(0, "snake")
+    room, low, mid = env.room, env.params.height - 2, env.params.width // 2
+    env.place(low, mid - 1)
+    env.items = mz.SWORD + "r"
+    env.step(RIGHT)
+    assert env.lives == 5 and env.foes == [] and env.items == "r" and "sword kills the snake" in env.frame.message
+    env._enter(room, low, 3)
+    assert env.foes == []                              # it stays dead
+    env = fresh(0, "snake")
+    env.place(low, mid - 1)
+    env.step(RIGHT)
+    assert env.lives == 4 and "snake got you" in env.frame.message
+
+
+def test_montezuma_vanishing_floor_drops_you_into_the_fire():
+    env = fresh(0, "bridge")
+    low, mid = env.params.height - 2, env.params.width // 2
+    floor = env.blinks[0]
+    while not floor.lit_at(env.tick + 1):
+        env.step(NOOP)
+    env.place(low, mid)
+    steps = 0
+    while env.lives == 5:
+        env.step(NOOP)
+        steps += 1
+    assert steps >= 2 and floor.lit_at(env.tick - 1) and not floor.lit_at(env.tick) and "burned" in env.frame.message
