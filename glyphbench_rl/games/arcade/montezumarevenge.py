@@ -2,9 +2,11 @@
 seen one room at a time, the rooms visited mapped in the HUD). Kept from the original: rooms of
 floors, ledges and ladders, ladders through floors and ceilings to the rooms below and above,
 exits at the side walls to the next room of a level, ropes to leap onto over wide fire pits,
-fire pits, blinking laser gates, rolling skulls, snakes and spiders that kill on touch,
-coloured keys that each open one door of their colour, jewels, a jump arc, deadly falls from a
-ledge, five lives and the native points (key 100, door 300, jewel 1000). The pyramid is made
+fire pits, floors that vanish over fire, blinking laser gates, rolling skulls, snakes and
+spiders that kill on touch, swords that kill the monster they meet, coloured keys that each open
+one door of their colour, jewels, a jump arc, deadly falls from a ledge, five lives and the
+native points (key 100, door 300, jewel 1000; a sword is scored as a key, and a kill pays
+nothing: our choice). The pyramid is made
 from the seed: a random tree of links between neighbouring rooms, the doors on some side links
 and each door's key in a room reachable before it, so there is always a way through. A room is
 cleared when its treasures are taken and its doors opened; clearing ``goal`` rooms wins
@@ -18,7 +20,8 @@ from ...core.actions import ActionSet
 from ...core.params import param
 from .engine import EMPTY, ArcadeParams, register_atari
 from .platform import (DOWN, JUMP, JUMP_LEFT, JUMP_RIGHT, JUMP_TEXT, LADDER, LEFT, RIGHT, ROPE,
-                       STAY, UP, Blink, Platformer, Walker, locks, paint, spanning_tree)
+                       STAY, UP, Blink, Platformer, Walker, locks, paint, room_grid,
+                       spanning_tree)
 from .rooms import LEGEND, RoomMap
 
 LAYOUT = ("---###---", "--#####--", "-#######-", "#########")
@@ -127,12 +130,7 @@ class Montezuma(Platformer):
         """The still rows of a room, made on the first visit."""
         p, s = self.params, self.plan[room]
         w, h, mid = p.width, p.height, p.width // 2
-        g = [[EMPTY] * w for _ in range(h)]
-        paint(g, WALL, range(h), (0, w - 1))
-        paint(g, WALL, (0,), range(w))
-        paint(g, FLOOR, (h - 1,), range(w))
-        for dc in s["exits"]:
-            paint(g, EMPTY, range(h - 5, h - 1), (0 if dc < 0 else w - 1,))
+        g = room_grid(h, w, WALL, FLOOR, s["exits"], 4, s["top"], s["bottom"])
         for dc, door in s["doors"]:
             paint(g, door, range(h - 4, h - 1), (1 if dc < 0 else w - 2,))
         items, spots = list(s["items"]), list(s["spots"])
@@ -147,10 +145,8 @@ class Montezuma(Platformer):
                 spots.remove(on[0])
         for item, c in zip(items, spots):
             g[h - 2][c] = item
-        if s["top"] is not None:
+        if s["top"] is not None:               # (through a ledge in its way)
             paint(g, LADDER, range(h - 1), (s["top"],))
-        if s["bottom"] is not None:
-            g[h - 1][s["bottom"]] = LADDER
         if s["kind"] == "fire":
             paint(g, FIRE, (h - 1,), (mid - 1, mid))
         elif s["kind"] == "rope":

@@ -97,6 +97,25 @@ def paint(grid: list[list[str]], ch: str, rows: Iterable[int], cols: Iterable[in
             line[c] = ch
 
 
+def room_grid(h: int, w: int, wall: str, floor: str, exits: Iterable[int] = (), gap: int = 4,
+              top: int | None = None, bottom: int | None = None) -> list[list[str]]:
+    """A room's cells (lists, for ``paint``): walls round it, a floor along the bottom, a gap
+    ``gap`` rows high above the floor in the side wall for each exit (-1 left, 1 right), a
+    ladder from the ceiling down to the floor at column ``top`` and one through the floor at
+    column ``bottom``."""
+    g = [[EMPTY] * w for _ in range(h)]
+    paint(g, wall, range(h), (0, w - 1))
+    paint(g, wall, (0,), range(w))
+    paint(g, floor, (h - 1,), range(1, w - 1))
+    for dc in exits:
+        paint(g, EMPTY, range(h - 1 - gap, h - 1), (0 if dc < 0 else w - 1,))
+    if top is not None:
+        paint(g, LADDER, range(h - 1), (top,))
+    if bottom is not None:
+        g[h - 1][bottom] = LADDER
+    return g
+
+
 class Walker:
     """A monster on row ``r`` stepping every ``every`` ticks (0: never): between columns ``lo``
     and ``hi``, turning at the ends; round a screen ``wrap`` columns wide; or, with ``chase``,
