@@ -17,9 +17,11 @@ still rows (``self.still``; a game keeps one list of rows per room and points ``
 - leaving the rows (an edge, or a ladder through the top or the bottom) calls ``_leave(dr, dc)``
   for the game to change rooms; a cell in ``HAZARD`` under you costs a life.
 A world of rooms keeps one list of rows per room, made by ``_build(room)`` on the first visit
-(``show(room)``); ``spanning_tree`` links a world's rooms at random from the start, and ``locks``
+(``show(room)``; ``room_grid`` and ``paint`` help draw one; ``cross`` finds the next room of a
+grid of rooms); ``spanning_tree`` links a world's rooms at random from the start, and ``locks``
 puts doors on some links with each key in a room reachable before its door (so there is always
-a way through).
+a way through). ``pay`` scores native points beside the score rule's units; ``meet`` steps the
+monsters and finds the one the player met.
 ``Walker``: a monster pacing a floor between two columns (or rolling round a screen, or closing
 on the player). ``Blink``: cells that switch between two glyphs on a cycle (lasers, jaws,
 quicksand), written into the still rows when they switch.
