@@ -60,7 +60,7 @@ class Pitfall(Platformer):
              "you have {lives_text}. A jump that comes within a column of a vine's tip (|) grabs it; it swings you over the pit, and DOWN lets go. "
              "Falling through an open hole beside a ladder drops you into the tunnel. Rolling logs "
              "(o) cost {log} points each time one hits you. {goal} treasures ($) lie on the screens.")
-    rewards = ("+{low} to +{high} a treasure (money bag, silver bar, gold bar, ring), -{log} a log's "
+    rewards = ("+{low} to +{high} a treasure (money bag, silver bar, gold bar, ring){unit_text}, -{log} a log's "
                "hit; {death:g} when your last life is lost or the clock ({clock} turns) runs out.")
     ends = "when you have collected {goal} treasures, lose your last life, or the clock runs out"
     ACTIONS = ACTIONS
@@ -75,7 +75,9 @@ class Pitfall(Platformer):
     safe_fall = 4
 
     def prompt_fields(self) -> dict:
-        return {**super().prompt_fields(), "low": min(VALUES), "high": max(VALUES), "span": SPAN}
+        unit = self.params.unit
+        return {**super().prompt_fields(), "low": min(VALUES), "high": max(VALUES), "span": SPAN,
+                "unit_text": f" (and +{unit:g} more)" if unit else ""}
 
     def _setup(self, rng) -> None:
         p = self.params
