@@ -20,7 +20,7 @@ GAMES = Path(glyphbench_rl.__file__).parent / "games"
 
 # The modules of each family that its game modules may import. A new family declares its own.
 ENGINE_LEVEL = {
-    "arcade": {"engine", "bodies", "arena", "chase", "climbing", "dungeon", "duel", "hopping", "pinball", "rooms", "scroller", "sectors", "shooter", "sidescroll"},
+    "arcade": {"engine", "bodies", "arena", "chase", "climbing", "dungeon", "duel", "hopping", "pinball", "platform", "rooms", "scroller", "sectors", "shooter", "sidescroll"},
     "classics": {"versus"},
     "minigrid": {"engine", "world", "grid", "rooms", "solver"},
     "procgen": {"engine", "mazes", "platforms", "scrolling", "shooting"},

@@ -38,6 +38,8 @@ Engine-level modules, which the games import (and nothing else of the family):
   arena: rooms built once and kept, monsters that wander and come down the shortest way when
   near, corpses, sideways-only fire, a zone clock, a flash that clears the room, a hunter for
   lingering);
+- ``platform``: side-view platform rooms (``Platformer``: floors, gravity and deadly falls, a
+  jump arc, ladders, ropes, swinging vines, hazards; ``Walker`` monsters, ``Blink`` cells);
 - ``rooms``: ``RoomMap``, the HUD's map of a many-room world's rooms, visited or not.
 """
 
@@ -72,9 +74,11 @@ from . import jamesbond  # noqa: F401
 from . import kangaroo  # noqa: F401
 from . import krull  # noqa: F401
 from . import kungfumaster  # noqa: F401
+from . import montezumarevenge  # noqa: F401
 from . import mspacman  # noqa: F401
 from . import namethisgame  # noqa: F401
 from . import phoenix  # noqa: F401
+from . import pitfall  # noqa: F401
 from . import pong  # noqa: F401
 from . import privateeye  # noqa: F401
 from . import qbert  # noqa: F401
