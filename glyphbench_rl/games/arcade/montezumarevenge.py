@@ -46,7 +46,7 @@ class MontezumaParams(ArcadeParams):
     lives: int = param(5, 1, 9)
     goal: int = param(24, 1, 24)
     unit: float = param(0.0, 0, 1000)
-    death: float = param(-1000.0, -10000, 0)
+    death: float = param(-1.0, -10000, 0)
     doors: int = param(4, 0, 4)          # locked doors (each of its own colour)
     pace: int = param(2, 1, 8)           # a skull rolls a cell every this many ticks
     laser: int = param(6, 1, 30)         # a laser gate is on this many ticks, then off as long
@@ -184,7 +184,7 @@ class Montezuma(Platformer):
             for rr in range(self.params.height - 4, self.params.height - 1):
                 self.set_still(rr, c, EMPTY)
             self.say(f"The {COLOURS[DOORS.index(ch)]} door opens.")
-            self.pay(DOOR_PTS)
+            self.score.bonus(DOOR_PTS)
             self._took()
             return True
         return False
@@ -211,7 +211,7 @@ class Montezuma(Platformer):
                 self.items += ch
             if ch in KEYS:
                 self.say(f"A {COLOURS[KEYS.index(ch)]} key.")
-            self.pay(PAY[ch])
+            self.score.bonus(PAY[ch])
             self._took()
             if self.done:
                 return

@@ -38,7 +38,7 @@ class PitfallParams(ArcadeParams):
     lives: int = param(3, 1, 9)
     goal: int = param(32, 1, 64)         # treasures that win (at most one a screen)
     unit: float = param(0.0, 0, 1000)
-    death: float = param(-1000.0, -10000, 0)
+    death: float = param(-1.0, -10000, 0)
     screens: int = param(255, 16, 255)
     clock: int = param(8000, 100, 100000)   # turns before time is up
     log: int = param(100, 0, 1000)       # points a rolling log's touch costs
@@ -167,7 +167,7 @@ class Pitfall(Platformer):
         if self.still[self.r][self.c] == GOLD:
             self.set_still(self.r, self.c, EMPTY)
             self.say("Treasure!")
-            self.pay(self.gold[self.screen])
+            self.score.bonus(self.gold[self.screen])
             self.score.gain()
             if self.done:
                 return
@@ -178,7 +178,7 @@ class Pitfall(Platformer):
                 return
             if foe is not self.hit_by:
                 self.say("A log hit you.")
-                self.pay(-p.log)
+                self.score.bonus(-p.log)
         self.hit_by = foe
 
     def place(self, r: int, c: int) -> None:

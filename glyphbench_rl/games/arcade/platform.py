@@ -20,8 +20,7 @@ A world of rooms keeps one list of rows per room, made by ``_build(room)`` on th
 (``show(room)``; ``room_grid`` and ``paint`` help draw one; ``cross`` finds the next room of a
 grid of rooms); ``spanning_tree`` links a world's rooms at random from the start, and ``locks``
 puts doors on some links with each key in a room reachable before its door (so there is always
-a way through). ``pay`` scores native points beside the score rule's units; ``meet`` steps the
-monsters and finds the one the player met.
+a way through); ``meet`` steps the monsters and finds the one the player met.
 ``Walker``: a monster pacing a floor between two columns (or rolling round a screen, or closing
 on the player). ``Blink``: cells that switch between two glyphs on a cycle (lasers, jaws,
 quicksand), written into the still rows when they switch.
@@ -217,14 +216,6 @@ class Platformer(ArcadeTask):
         """Put the player at (r, c), still (facing as before)."""
         self.r, self.c, self.arc, self.ai, self.jd, self.fallen, self.held = r, c, None, 0, 0, 0, None
         self.swings: list[Swing] = getattr(self, "swings", [])
-
-    def pay(self, points: float) -> None:
-        """Native points outside the score rule's unit (treasures of several values, a log's
-        penalty): shown in the HUD score and paid as reward."""
-        score = self.score
-        score.points += points
-        score.shown = None
-        self.reward(points)
 
     def _bump(self, r: int, c: int, ch: str) -> bool:
         """Walking into solid ``ch`` at (r, c): True when it gave way (a door opened)."""
