@@ -3,6 +3,7 @@
 
     python scripts/random_baseline.py                 # writes tasks/baselines/random.tsv
     python scripts/random_baseline.py --episodes 50 --out runs/random-baseline   # keep the jobs
+    python scripts/random_baseline.py --only glyphbench/atari-hero-v0   # a game added: its row only
 
 Each task is one ordinary held-out evaluation job with the ``random`` backend, so a row is what
 ``glyphbench-eval --tasks ID --backend random --episodes 25`` reports. One job per task because
@@ -45,13 +46,41 @@ def tsv_text(rows: list[dict], episodes: int) -> str:
     return "\n".join(lines) + "\n"
 
 
+def read_rows(path: Path) -> list[dict]:
+    """The rows of a TSV this script wrote, as the job summaries' fields ``tsv_text`` reads."""
+    rows = []
+    for line in path.read_text(encoding="utf-8").splitlines():
+        if line.startswith("#") or line.startswith("task_id\t") or not line.strip():
+            continue
+        task_id, suite, episodes, mean, ci, length = line.split("\t")
+        rows.append({"task_id": task_id, "suite": suite, "episodes": int(episodes),
+                     "return_mean": float(mean), "return_ci95": float(ci) if ci else None,
+                     "length_mean": float(length)})
+    return rows
+
+
 def main() -> int:
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--episodes", type=int, default=25)
     p.add_argument("--out", help="keep the per-task jobs under this directory (default: temporary)")
     p.add_argument("--tsv", default=str(TSV))
+    p.add_argument("--only", nargs="+", metavar="TASK_ID",
+                   help="run just these tasks and keep the other rows of --tsv (a game added)")
     args = p.parse_args()
     tasks = list_tasks()
+    kept: dict[str, dict] = {}
+    if args.only:
+        unknown = sorted(set(args.only) - set(tasks))
+        if unknown:
+            print(f"--only: {unknown[0]} is not a registered task", file=sys.stderr)
+            return 2
+        kept = {r["task_id"]: r for r in read_rows(Path(args.tsv)) if r["task_id"] in tasks}
+        missing = [t for t in tasks if t not in kept and t not in args.only]
+        if missing:
+            print(f"--only: {args.tsv} has no row for {missing[0]} (and {len(missing) - 1} more); "
+                  f"run without --only", file=sys.stderr)
+            return 2
+        tasks = [t for t in tasks if t in args.only]
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         root = Path(args.out or tmp)
@@ -65,6 +94,9 @@ def main() -> int:
                 return 1
             rows += result.summary["tasks"]
             print(f"[{n}/{len(tasks)}] {task_id}: {rows[-1]['return_mean']:+.3f}", file=sys.stderr)
+    if kept:
+        fresh = {r["task_id"]: r for r in rows}
+        rows = [fresh.get(t) or kept[t] for t in list_tasks()]
     Path(args.tsv).parent.mkdir(parents=True, exist_ok=True)
     Path(args.tsv).write_text(tsv_text(rows, args.episodes), encoding="utf-8")
     print(f"wrote {args.tsv} ({len(tasks)} tasks, {args.episodes} episodes each)")

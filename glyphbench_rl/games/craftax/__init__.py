@@ -15,3 +15,5 @@ from .task import CraftaxTask
 for _name, _scenario in SCENARIOS.items():
     register_variants(CraftaxTask, "Craftax",
                       {f"glyphbench/craftax-{_name}-v0": dict(scenario=_name, max_turns=_scenario.horizon)})
+
+from . import full  # noqa: F401,E402  (glyphbench/craftaxfull-v0, the extended full game)
