@@ -173,7 +173,8 @@ class ArcadeTask(GlyphTask):
 
     def prompt_fields(self) -> dict:
         p = self.params
-        return {**super().prompt_fields(), "unit": round(p.unit, 4), "lives_text":
+        unit = round(p.unit, 4)
+        return {**super().prompt_fields(), "unit": int(unit) if unit == int(unit) else unit, "lives_text":
                 "one life" if p.lives == 1 else f"{p.lives} lives"}
 
     def start(self, rng: np.random.Generator) -> None:
