@@ -99,7 +99,7 @@ def main() -> int:
         rows = [fresh.get(t) or kept[t] for t in list_tasks()]
     Path(args.tsv).parent.mkdir(parents=True, exist_ok=True)
     Path(args.tsv).write_text(tsv_text(rows, args.episodes), encoding="utf-8")
-    print(f"wrote {args.tsv} ({len(tasks)} tasks, {args.episodes} episodes each)")
+    print(f"wrote {args.tsv} ({len(rows)} tasks, {len(tasks)} run now, {args.episodes} episodes each)")
     return 0
 
 
