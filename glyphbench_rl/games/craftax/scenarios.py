@@ -286,19 +286,25 @@ class Context:
         self.r0, self.c0 = (int(v) for v in state.player_position)
         self.floor = _floor_block(state)
         self.reserve: list[tuple[str, int, int]] = []
+        # draws owed to ``owed_rng`` ([their bound, how many]): made before its next used draw
+        self.owed, self.owed_rng = [0, 0], None
 
     def admit(self, state, rng) -> None:
         """Each waiting mob, in turn, takes a random free cell in its ring (one draw whenever the
         ring has a free cell, whether or not its class has a free slot). A ring's free cells are
         found once and found again only after a mob was placed. The draws of mobs with no free
         slot, whose values go unused, are made together (``integers(n, size=k)`` advances the
-        generator exactly as k calls of ``integers(n)``), in order, before the next used one."""
+        generator exactly as k calls of ``integers(n)``), in order, before the next used one,
+        which may be turns later (``settle`` makes them before anything else draws)."""
         from .mobs import MOB_BY_NAME, add_mob
         waiting = []
         rings: dict[tuple[int, int], tuple] = {}
         groups = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)
         level = state.player_level
-        unused = [0, 0]          # draws owed: [their bound, how many]
+        if self.owed_rng is not rng:
+            self.settle()
+            self.owed_rng = rng
+        unused = self.owed          # draws owed: [their bound, how many]
         for name, dmin, dmax in self.reserve:
             ring = rings.get((dmin, dmax))
             if ring is None:
@@ -321,8 +327,12 @@ class Context:
                 rings.clear()
             else:
                 waiting.append((name, dmin, dmax))
-        _draw_unused(rng, unused)
         self.reserve = waiting
+
+    def settle(self) -> None:
+        """Make the draws owed (before another use of their generator)."""
+        if self.owed[1]:
+            _draw_unused(self.owed_rng, self.owed)
 
 
 def _draw_unused(rng, unused: list) -> None:
@@ -423,6 +433,7 @@ class Scenario:
         ctx = Context(state)
         for edit in self.edits:
             edit.apply(state, rng, ctx)
+        ctx.settle()
         return state, ctx
 
     def run_events(self, task, state, tally) -> None:
@@ -435,6 +446,7 @@ class Scenario:
             if i not in task.fired and when(tally):
                 task.fired.add(i)
                 ctx.r0, ctx.c0 = (int(v) for v in state.player_position)
+                ctx.settle()
                 for edit in event.edits:
                     edit.apply(state, rng, ctx)
                 if event.says:
