@@ -20,6 +20,7 @@ projectiles are ``/ ) ' (`` and a few non-ASCII symbols; arrows (or ``@`` asleep
 
 from __future__ import annotations
 
+import sys
 from codecs import charmap_decode as _charmap_decode
 
 import numpy as np
@@ -172,6 +173,8 @@ _ITEM_CODES = (_item_codes(False), _item_codes(True))    # by whether the floor'
 _ROW_STARTS = tuple(range(0, ROWS * COLS, COLS))
 _OFF_MAP = bytes((int(BlockType.OUT_OF_BOUNDS),))
 _FULL_LIGHT = np.ones(ROWS * COLS, np.float32).tobytes()     # a fully lit window's light map
+_INT32 = np.dtype(np.int32)
+_LOW = 0 if sys.byteorder == "little" else 3      # (where an int32's low byte is)
 _MEMO_SIZE = 4096
 # a window's light map (float32 bytes) -> its unlit cells (a byte each, 1: unlit); the light map
 # changes only where a torch is placed, and windows recur as the player walks back and forth
@@ -183,15 +186,8 @@ _NECROMANCER_BYTES = bytes((_NECROMANCER,)), bytes((_NECROMANCER_VULNERABLE,))
 
 def _low_bytes(array: np.ndarray) -> bytes:
     """The values of a small non-negative integer array (each below 256), one byte each in row
-    order: the first byte of each little-endian element of its copy, a C slice (no numpy call
-    beyond the copy)."""
-    data = array.tobytes()
-    size = array.itemsize
-    if size == 1:
-        return data
-    if array.dtype.byteorder == ">":       # (never on the machines numpy runs on here)
-        return array.astype(np.uint8).tobytes()
-    return data[::size]
+    order (the slow path of ``_codes``, for arrays not kept as the state keeps them)."""
+    return array.astype(np.uint8).tobytes()
 
 
 def _mark(codes: bytearray, where: bytes, code) -> None:
@@ -243,8 +239,11 @@ def _codes(state: State) -> bytearray:
         # the part of the window on the map: blocks, items over them, darkness over all (a
         # cell is unlit at light <= LIGHT_VISIBLE); most windows have no item and no dark cell
         window = (level, slice(ra, rb), slice(ca, cb))
-        codes = _low_bytes(state.map[window])
-        items = _low_bytes(state.item_map[window])
+        blocks, items = state.map[window], state.item_map[window]
+        if blocks.dtype == _INT32 and items.dtype == _INT32:     # (as the state keeps them)
+            codes, items = blocks.tobytes()[_LOW::4], items.tobytes()[_LOW::4]
+        else:
+            codes, items = _low_bytes(blocks), _low_bytes(items)
         if items.count(0) != len(items):
             open_ = state.monsters_killed.item(level) >= KILLS_TO_OPEN_LADDER
             if not items.translate(None, _BELOW[4]) and not codes.translate(None, _BELOW[64]):
@@ -283,11 +282,9 @@ def _codes(state: State) -> bytearray:
         codes = codes.replace(*_NECROMANCER_BYTES)
     for k, mobs in enumerate((state.melee_mobs, state.passive_mobs, state.ranged_mobs,
                               state.mob_projectiles, state.player_projectiles)):
-        mask = mobs.mask
-        slots = mask.shape[1]
-        if 1 not in _low_bytes(mask)[level * slots:(level + 1) * slots]:
+        live = mobs.mask[level].tolist()
+        if True not in live:
             continue
-        live = mask[level].tolist()
         base = _MOB0 + 8 * k
         positions, types = mobs.position[level].tolist(), mobs.type_id[level].tolist()
         for slot, on in enumerate(live):
