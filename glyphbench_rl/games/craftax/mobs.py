@@ -226,11 +226,12 @@ class _Turn:
         level = self.level
         if new != old:
             group.position[level, slot, 0], group.position[level, slot, 1] = new
-        if not alive:
-            group.mask[level, slot] = False
-        self.occupied[old] = False
+            self.occupied[old] = False
         if alive:
             self.occupied[new] = True
+        else:
+            group.mask[level, slot] = False
+            self.occupied[old] = False
 
 
 def _move_melee(turn: _Turn, slot: int, row: int, col: int, type_id: int, cooldown: int) -> int:

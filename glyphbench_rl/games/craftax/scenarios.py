@@ -527,8 +527,11 @@ class Scenario:
         return "when the objective is complete or you die" if self.success else "when you die"
 
     def progress(self, tally) -> str:
-        return " ".join(f"{k.split('.')[-1].capitalize()} {_fmt(tally.value(k))}"
-                        for k in self.progress_keys)
+        labels = _LABELS.get(self.progress_keys)
+        if labels is None:
+            labels = _LABELS[self.progress_keys] = tuple(
+                (k, k.split('.')[-1].capitalize()) for k in self.progress_keys)
+        return " ".join([f"{label} {_fmt(tally.value(k))}" for k, label in labels])
 
     def check(self, tally) -> None:
         """Compile every test and counter of the scenario (a KeyError names a bad one)."""
@@ -537,6 +540,9 @@ class Scenario:
             parse_test(text, tally)
         for key in self.progress_keys:
             tally.getter(key)
+
+
+_LABELS: dict[tuple, tuple] = {}      # progress keys -> (key, its HUD label), ...
 
 
 def _amount(x: float) -> str:
