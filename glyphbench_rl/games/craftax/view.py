@@ -191,7 +191,7 @@ def _low_bytes(array: np.ndarray) -> bytes:
 
 
 def _mark(codes: bytearray, where: bytes, code) -> None:
-    """``codes[i] = code(where[i])`` wherever ``where[i]`` is not 0 (a few cells: found by
+    """``codes[i] = code[where[i]]`` wherever ``where[i]`` is not 0 (a few cells: found by
     ``bytes.find``, value by value)."""
     for value in set(where):
         if value:
