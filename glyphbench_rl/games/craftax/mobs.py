@@ -64,7 +64,8 @@ def is_boss_spawn_wave(state: State) -> bool:
 def is_boss_vulnerable(state: State) -> bool:
     """No melee or ranged mob alive on the player's level and the spawn wave is over."""
     level = state.player_level
-    return (not state.melee_mobs.mask[level].any() and not state.ranged_mobs.mask[level].any()
+    return (True not in state.melee_mobs.mask[level].tolist()
+            and True not in state.ranged_mobs.mask[level].tolist()
             and state.boss_timesteps_to_spawn_this_round <= 0)
 
 
@@ -225,11 +226,12 @@ class _Turn:
         level = self.level
         if new != old:
             group.position[level, slot, 0], group.position[level, slot, 1] = new
-        if not alive:
-            group.mask[level, slot] = False
-        self.occupied[old] = False
+            self.occupied[old] = False
         if alive:
             self.occupied[new] = True
+        else:
+            group.mask[level, slot] = False
+            self.occupied[old] = False
 
 
 def _move_melee(turn: _Turn, slot: int, row: int, col: int, type_id: int, cooldown: int) -> int:
@@ -396,24 +398,24 @@ def update(state: State, settings: Settings, draws) -> None:
     melee, ranged = state.melee_mobs, state.ranged_mobs
     melee_mask, ranged_mask = melee.mask[level].tolist(), ranged.mask[level].tolist()
     passive_mask = state.passive_mobs.mask[level].tolist()
-    shots = state.mob_projectiles.mask[level].tolist()
     arrows = state.player_projectiles.mask[level].tolist()
-    if not any(melee_mask + ranged_mask + passive_mask + shots + arrows):
+    if (True not in melee_mask and True not in ranged_mask and True not in passive_mask
+            and True not in arrows and True not in state.mob_projectiles.mask[level].tolist()):
         _count_down(melee, level)
         _count_down(ranged, level)
         return
     turn = _Turn(state, settings, draws)
-    if any(melee_mask):
+    if True in melee_mask:
         _move_monsters(turn, melee, melee_mask, _move_melee)
     else:
         _count_down(melee, level)
-    if any(passive_mask):
+    if True in passive_mask:
         passive = state.passive_mobs
         positions, types = passive.position[level].tolist(), passive.type_id[level].tolist()
         for slot, alive in enumerate(passive_mask):
             if alive:
                 _move_passive(turn, slot, positions[slot][0], positions[slot][1], types[slot])
-    if any(ranged_mask):
+    if True in ranged_mask:
         _move_monsters(turn, ranged, ranged_mask, _move_ranged)
     else:
         _count_down(ranged, level)
@@ -469,10 +471,10 @@ def _add_mob(state: State, mobs: Mobs, kind: int, type_id: int, cell: tuple,
     has no free slot. The slot keeps its attack cooldown (upstream: a spawned mob inherits it)
     unless ``cooldown`` is given."""
     level = state.player_level
-    free = np.flatnonzero(~mobs.mask[level])
-    if free.size == 0:
+    live = mobs.mask[level].tolist()
+    if False not in live:
         return False
-    slot = int(free[0])
+    slot = live.index(False)
     mobs.position[level, slot] = cell
     mobs.health[level, slot] = MOB_TYPE_HEALTH_MAPPING[type_id][kind]
     mobs.mask[level, slot] = True

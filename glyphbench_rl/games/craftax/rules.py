@@ -336,7 +336,7 @@ def _spawn_player_projectile(state: State, kind: int) -> None:
 
 
 def _projectile_slot_free(state: State) -> bool:
-    return int(state.player_projectiles.mask[state.player_level].sum()) < MAX_PLAYER_PROJECTILES
+    return state.player_projectiles.mask[state.player_level].tolist().count(True) < MAX_PLAYER_PROJECTILES
 
 
 def shoot_arrow(state: State) -> None:
@@ -563,16 +563,35 @@ def clip_vitals(state: State, settings) -> None:
         state.player_mana = min(max(state.player_mana, 0), top)
 
 
-_INVENTORY_ACHIEVEMENTS = tuple((name, least, int(a)) for name, least, a in INVENTORY_ACHIEVEMENTS)
+_INVENTORY_NAMES = tuple(dict.fromkeys(name for name, _, _ in INVENTORY_ACHIEVEMENTS))
+# (index into the held counts, at least, achievement)
+_INVENTORY_ACHIEVEMENTS = tuple((_INVENTORY_NAMES.index(name), least, int(a))
+                                for name, least, a in INVENTORY_ACHIEVEMENTS)
+# the held counts of ``_INVENTORY_NAMES`` -> the achievements they earn (``inventory_achievements``)
+_EARNED: dict[tuple, tuple[int, ...]] = {}
 
 
 def inventory_achievements(state: State) -> None:
     """Collecting and crafting achievements read off the inventory (``INVENTORY_ACHIEVEMENTS``),
-    so a tool found in a chest counts as made."""
-    inv, ach = state.inventory, state.achievements
-    for name, least, achievement in _INVENTORY_ACHIEVEMENTS:
-        if getattr(inv, name) >= least:
+    so a tool found in a chest counts as made. (What a tuple of counts earns is remembered: the
+    inventory changes on few turns.)"""
+    inv = state.inventory
+    held = (inv.wood, inv.stone, inv.coal, inv.iron, inv.diamond, inv.ruby, inv.sapphire,
+            inv.sapling, inv.bow, inv.arrows, inv.torches, inv.pickaxe, inv.sword)
+    earned = _EARNED.get(held)
+    if earned is None:
+        if len(_EARNED) >= 4096:
+            _EARNED.clear()
+        earned = _EARNED[held] = tuple(a for i, least, a in _INVENTORY_ACHIEVEMENTS
+                                       if held[i] >= least)
+    if earned:
+        ach = state.achievements
+        for achievement in earned:
             ach[achievement] = True
+
+
+assert _INVENTORY_NAMES == ("wood", "stone", "coal", "iron", "diamond", "ruby", "sapphire",
+                            "sapling", "bow", "arrows", "torches", "pickaxe", "sword")
 
 
 _CRAFT = frozenset(RECIPE_BY_ACTION)

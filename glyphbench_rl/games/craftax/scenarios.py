@@ -17,6 +17,7 @@ the rest in as slots free up.
 from __future__ import annotations
 
 import re
+import sys
 from dataclasses import dataclass, field, replace
 from typing import Callable
 
@@ -286,23 +287,29 @@ class Context:
         self.r0, self.c0 = (int(v) for v in state.player_position)
         self.floor = _floor_block(state)
         self.reserve: list[tuple[str, int, int]] = []
+        # draws owed to ``owed_rng`` ([their bound, how many]): made before its next used draw
+        self.owed, self.owed_rng = [0, 0], None
 
     def admit(self, state, rng) -> None:
         """Each waiting mob, in turn, takes a random free cell in its ring (one draw whenever the
         ring has a free cell, whether or not its class has a free slot). A ring's free cells are
         found once and found again only after a mob was placed. The draws of mobs with no free
         slot, whose values go unused, are made together (``integers(n, size=k)`` advances the
-        generator exactly as k calls of ``integers(n)``), in order, before the next used one."""
+        generator exactly as k calls of ``integers(n)``), in order, before the next used one,
+        which may be turns later (``settle`` makes them before anything else draws)."""
         from .mobs import MOB_BY_NAME, add_mob
         waiting = []
         rings: dict[tuple[int, int], tuple] = {}
         groups = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)
         level = state.player_level
-        unused = [0, 0]          # draws owed: [their bound, how many]
+        if self.owed_rng is not rng:
+            self.settle()
+            self.owed_rng = rng
+        unused = self.owed          # draws owed: [their bound, how many]
         for name, dmin, dmax in self.reserve:
             ring = rings.get((dmin, dmax))
             if ring is None:
-                ring = rings[dmin, dmax] = _free_ring(state, dmin, dmax, self.floor)
+                ring = rings[dmin, dmax] = _free_cells(state, dmin, dmax, self.floor)
             ok, count, r0, c0, width = ring
             if not count:
                 waiting.append((name, dmin, dmax))
@@ -316,13 +323,17 @@ class Context:
                 unused[1] += 1
                 continue
             _draw_unused(rng, unused)
-            k = int(np.flatnonzero(ok)[int(rng.integers(count))])
+            k = int(np.flatnonzero(np.frombuffer(ok, np.uint8))[int(rng.integers(count))])
             if add_mob(state, name, (r0 + k // width, c0 + k % width)):
                 rings.clear()
             else:
                 waiting.append((name, dmin, dmax))
-        _draw_unused(rng, unused)
         self.reserve = waiting
+
+    def settle(self) -> None:
+        """Make the draws owed (before another use of their generator)."""
+        if self.owed[1]:
+            _draw_unused(self.owed_rng, self.owed)
 
 
 def _draw_unused(rng, unused: list) -> None:
@@ -348,6 +359,49 @@ def _free_ring(state, dmin: int, dmax: int, floor: int):
     if np.count_nonzero(items):
         ok &= items == 0
     return ok, np.count_nonzero(ok), r0, c0, c1 - c0
+
+
+def _free_cells(state, dmin: int, dmax: int, floor: int):
+    """``_free_ring`` with the mask as bytes (1: a free cell), found by byte operations on the
+    box's blocks, items and mob map (one copy of each, no numpy arithmetic):
+    ``(mask bytes, count, r0, c0, width)``."""
+    level = state.player_level
+    pr, pc = state.player_position.tolist()
+    rows, cols = state.map.shape[1:]
+    r0, r1 = max(0, pr - dmax), min(rows, pr + dmax + 1)
+    c0, c1 = max(0, pc - dmax), min(cols, pc + dmax + 1)
+    window = (level, slice(r0, r1), slice(c0, c1))
+    blocks, items, mobs = state.map[window], state.item_map[window], state.mob_map[window]
+    if not (blocks.dtype == _INT32 and items.dtype == _INT32 and mobs.dtype == np.bool_
+            and 0 <= floor < 256):
+        ok, count, r0, c0, width = _free_ring(state, dmin, dmax, floor)
+        return ok.astype(np.uint8).tobytes(), count, r0, c0, width
+    # each a byte per cell, 1 where: the floor block, no item, no mob, in the ring
+    parts = (blocks.tobytes()[_LOW::4].translate(_IS[floor]),
+             items.tobytes()[_LOW::4].translate(_IS[0]), mobs.tobytes().translate(_IS[0]),
+             _ring_bytes(dmin, dmax, r0 - pr + dmax, r1 - pr + dmax, c0 - pc + dmax,
+                         c1 - pc + dmax))
+    free = -1
+    for part in parts:
+        free &= int.from_bytes(part, "little")
+    size = len(parts[0])
+    return free.to_bytes(size, "little"), free.bit_count(), r0, c0, c1 - c0
+
+
+_INT32 = np.dtype(np.int32)
+_LOW = 0 if sys.byteorder == "little" else 3      # (where an int32's low byte is)
+# _IS[v]: a translation table giving 1 for the byte v, 0 for any other
+_IS = tuple(bytes(int(i == v) for i in range(256)) for v in range(256))
+_RING_BYTES: dict[tuple, bytes] = {}
+
+
+def _ring_bytes(dmin: int, dmax: int, a: int, b: int, c: int, d: int) -> bytes:
+    """``_ring(dmin, dmax)[a:b, c:d]`` as bytes (1 in the ring)."""
+    key = (dmin, dmax, a, b, c, d)
+    ring = _RING_BYTES.get(key)
+    if ring is None:
+        ring = _RING_BYTES[key] = _ring(dmin, dmax)[a:b, c:d].astype(np.uint8).tobytes()
+    return ring
 
 
 _RINGS: dict[tuple[int, int], np.ndarray] = {}
@@ -423,6 +477,7 @@ class Scenario:
         ctx = Context(state)
         for edit in self.edits:
             edit.apply(state, rng, ctx)
+        ctx.settle()
         return state, ctx
 
     def run_events(self, task, state, tally) -> None:
@@ -435,6 +490,7 @@ class Scenario:
             if i not in task.fired and when(tally):
                 task.fired.add(i)
                 ctx.r0, ctx.c0 = (int(v) for v in state.player_position)
+                ctx.settle()
                 for edit in event.edits:
                     edit.apply(state, rng, ctx)
                 if event.says:
@@ -471,8 +527,11 @@ class Scenario:
         return "when the objective is complete or you die" if self.success else "when you die"
 
     def progress(self, tally) -> str:
-        return " ".join(f"{k.split('.')[-1].capitalize()} {_fmt(tally.value(k))}"
-                        for k in self.progress_keys)
+        labels = _LABELS.get(self.progress_keys)
+        if labels is None:
+            labels = _LABELS[self.progress_keys] = tuple(
+                (k, k.split('.')[-1].capitalize()) for k in self.progress_keys)
+        return " ".join([f"{label} {_fmt(tally.value(k))}" for k, label in labels])
 
     def check(self, tally) -> None:
         """Compile every test and counter of the scenario (a KeyError names a bad one)."""
@@ -481,6 +540,9 @@ class Scenario:
             parse_test(text, tally)
         for key in self.progress_keys:
             tally.getter(key)
+
+
+_LABELS: dict[tuple, tuple] = {}      # progress keys -> (key, its HUD label), ...
 
 
 def _amount(x: float) -> str:

@@ -259,8 +259,8 @@ class CraftaxTask(GlyphTask):
             self.say(self.scenario.success_message)
             self.finish(won=True)
 
-    def _grid(self) -> list[str]:
-        return view.grid(self.state)
+    def _grid(self) -> tuple[str, ...]:
+        return view.rows(self.state)
 
     def _hud(self) -> str:
         goal = self.scenario.progress(self.tally)   # (a few counters, formatted)

@@ -20,6 +20,7 @@ projectiles are ``/ ) ' (`` and a few non-ASCII symbols; arrows (or ``@`` asleep
 
 from __future__ import annotations
 
+import sys
 from codecs import charmap_decode as _charmap_decode
 
 import numpy as np
@@ -160,25 +161,75 @@ _NECROMANCER_VULNERABLE = int(BlockType.NECROMANCER_VULNERABLE)
 _VISIBLE_LIGHT32 = np.float32(LIGHT_VISIBLE)      # (light_map is float32: compare as upstream)
 
 
-def _item_codes(ladder_open: bool) -> np.ndarray:
+def _item_codes(ladder_open: bool) -> bytes:
     """``codes[item]``: the code an item shows as (a closed floor's down ladder: blocked)."""
-    codes = np.arange(len(ItemType), dtype=np.uint8) + _ITEM0
+    codes = [_ITEM0 + i for i in range(len(ItemType))]
     if not ladder_open:
         codes[ItemType.LADDER_DOWN] = _ITEM0 + ItemType.LADDER_DOWN_BLOCKED
-    return codes
+    return bytes(codes)
 
 
 _ITEM_CODES = (_item_codes(False), _item_codes(True))    # by whether the floor's ladder is open
 _ROW_STARTS = tuple(range(0, ROWS * COLS, COLS))
 _OFF_MAP = bytes((int(BlockType.OUT_OF_BOUNDS),))
 _FULL_LIGHT = np.ones(ROWS * COLS, np.float32).tobytes()     # a fully lit window's light map
+_INT32 = np.dtype(np.int32)
+_LOW = 0 if sys.byteorder == "little" else 3      # (where an int32's low byte is)
+_MEMO_SIZE = 4096
+# a window's light map (float32 bytes) -> its unlit cells (a byte each, 1: unlit); the light map
+# changes only where a torch is placed, and windows recur as the player walks back and forth
+_DARKNESS: dict[bytes, bytes] = {}
+# cell codes -> the rows of glyphs (``rows``)
+_ROWS: dict[bytes, tuple[str, ...]] = {}
+_NECROMANCER_BYTES = bytes((_NECROMANCER,)), bytes((_NECROMANCER_VULNERABLE,))
+
+
+def _low_bytes(array: np.ndarray) -> bytes:
+    """The values of a small non-negative integer array (each below 256), one byte each in row
+    order (the slow path of ``_codes``, for arrays not kept as the state keeps them)."""
+    return array.astype(np.uint8).tobytes()
+
+
+def _mark(codes: bytearray, where: bytes, code) -> None:
+    """``codes[i] = code[where[i]]`` wherever ``where[i]`` is not 0 (a few cells: found by
+    ``bytes.find``, value by value)."""
+    for value in set(where):
+        if value:
+            to = code[value]
+            i = where.find(value)
+            while i >= 0:
+                codes[i] = to
+                i = where.find(value, i + 1)
+
+
+_DARK_CODE = bytes([0] + [_DARK] * 255)      # (``_mark``'s value -> code for a dark cell)
+
+
+def _overlay(ladder_open: bool) -> bytes:
+    """A translation table from ``item << 6 | block`` (an item below 4, a block below 64) to the
+    code the cell shows: the block, or the item over it."""
+    shown = _ITEM_CODES[ladder_open]
+    return bytes(block if item == 0 else shown[item] for item in range(4) for block in range(64))
+
+
+_OVERLAYS = (_overlay(False), _overlay(True))
+_BELOW = {n: bytes(range(n)) for n in (4, 64, 128)}     # (what ``translate`` deletes: values below n)
+# code | dark << 7 (a code below 128) -> the code, or darkness where dark
+_DARKEN = bytes(range(128)) + bytes((_DARK,)) * 128
+
+
+def _merge(low: bytes, high: bytes, shift: int) -> bytes:
+    """``low[i] | high[i] << shift`` for each byte (no bit carried into the next byte: the
+    caller keeps the sum below 256), as one big-int operation in C."""
+    return (int.from_bytes(low, "little") | int.from_bytes(high, "little") << shift).to_bytes(
+        len(low), "little")
 
 
 def _codes(state: State) -> bytearray:
     """The window as cell codes, ROWS * COLS bytes row by row. Few numpy calls (on arrays this
-    small each costs about as much as the work in it): blocks, then items and darkness where
-    the window has any; mobs and projectiles go over it in Python (not on unlit cells), then
-    the player."""
+    small each costs about as much as the work in it): the window's blocks, items and light are
+    each read as bytes once; items and darkness go over the blocks where the window has any,
+    then mobs and projectiles (not on unlit cells), then the player."""
     level = state.player_level
     pr, pc = state.player_position.tolist()
     r0, c0 = pr - HALF_R, pc - HALF_C
@@ -187,18 +238,37 @@ def _codes(state: State) -> bytearray:
     if ra < rb and ca < cb:
         # the part of the window on the map: blocks, items over them, darkness over all (a
         # cell is unlit at light <= LIGHT_VISIBLE); most windows have no item and no dark cell
-        codes = state.map[level, ra:rb, ca:cb].astype(np.uint8)
-        items = state.item_map[level, ra:rb, ca:cb]
-        if np.count_nonzero(items):
-            shown = _ITEM_CODES[state.monsters_killed.item(level) >= KILLS_TO_OPEN_LADDER]
-            np.copyto(codes, shown[items], where=items > 0)
-        light = state.light_map[level, ra:rb, ca:cb]
-        if light.dtype != np.float32 or light.tobytes() != _FULL_LIGHT[:light.nbytes]:
+        window = (level, slice(ra, rb), slice(ca, cb))
+        blocks, items = state.map[window], state.item_map[window]
+        if blocks.dtype == _INT32 and items.dtype == _INT32:     # (as the state keeps them)
+            codes, items = blocks.tobytes()[_LOW::4], items.tobytes()[_LOW::4]
+        else:
+            codes, items = _low_bytes(blocks), _low_bytes(items)
+        if items.count(0) != len(items):
+            open_ = state.monsters_killed.item(level) >= KILLS_TO_OPEN_LADDER
+            if not items.translate(None, _BELOW[4]) and not codes.translate(None, _BELOW[64]):
+                codes = _merge(codes, items, 6).translate(_OVERLAYS[open_])
+            else:
+                codes = bytearray(codes)
+                _mark(codes, items, _ITEM_CODES[open_])
+        light = state.light_map[window]
+        lit = light.tobytes()
+        if light.dtype != np.float32 or lit != _FULL_LIGHT[:len(lit)]:
             # (else the window is in full light: nothing dark)
-            dark = np.less_equal(light, _VISIBLE_LIGHT32)
-            if np.count_nonzero(dark):
-                np.putmask(codes, dark, _DARK)
-        inside = codes.tobytes()
+            dark = _DARKNESS.get(lit) if light.dtype == np.float32 else None
+            if dark is None:
+                dark = np.less_equal(light, _VISIBLE_LIGHT32).tobytes()
+                if light.dtype == np.float32:
+                    if len(_DARKNESS) >= _MEMO_SIZE:
+                        _DARKNESS.clear()
+                    _DARKNESS[lit] = dark
+            if 1 in dark:
+                if not codes.translate(None, _BELOW[128]):
+                    codes = _merge(codes, dark, 7).translate(_DARKEN)
+                else:
+                    codes = bytearray(codes)
+                    _mark(codes, dark, _DARK_CODE)
+        inside = codes
     else:
         inside = b""
     if len(inside) == ROWS * COLS:
@@ -209,7 +279,7 @@ def _codes(state: State) -> bytearray:
         for j, r in enumerate(range(ra - r0, rb - r0)):
             codes[r * COLS + at:r * COLS + at + width] = inside[j * width:(j + 1) * width]
     if level == BOSS_LEVEL and _NECROMANCER in codes and is_boss_vulnerable(state):
-        codes = codes.replace(bytes((_NECROMANCER,)), bytes((_NECROMANCER_VULNERABLE,)))
+        codes = codes.replace(*_NECROMANCER_BYTES)
     for k, mobs in enumerate((state.melee_mobs, state.passive_mobs, state.ranged_mobs,
                               state.mob_projectiles, state.player_projectiles)):
         live = mobs.mask[level].tolist()
@@ -234,10 +304,21 @@ def cell_codes(state: State) -> np.ndarray:
     return np.frombuffer(bytes(_codes(state)), np.uint8).reshape(ROWS, COLS).copy()
 
 
+def rows(state: State) -> tuple[str, ...]:
+    """The 9 rows of 11 glyphs around the player, as a tuple (remembered by the cell codes)."""
+    codes = bytes(_codes(state))
+    shown = _ROWS.get(codes)
+    if shown is None:
+        text = _charmap_decode(codes, "strict", _DECODING)[0]
+        if len(_ROWS) >= _MEMO_SIZE:
+            _ROWS.clear()
+        shown = _ROWS[codes] = tuple([text[i:i + COLS] for i in _ROW_STARTS])
+    return shown
+
+
 def grid(state: State) -> list[str]:
     """The 9 rows of 11 glyphs around the player."""
-    text = _charmap_decode(_codes(state), "strict", _DECODING)[0]
-    return [text[i:i + COLS] for i in _ROW_STARTS]
+    return list(rows(state))
 
 
 # ---- the HUD -----------------------------------------------------------------------------

@@ -25,6 +25,8 @@ def test_free_ring_is_the_cell_list():
             ok, count, r0, c0, width = scenarios._free_ring(state, dmin, dmax, floor)
             got = [(r0 + k // width, c0 + k % width) for k in np.flatnonzero(ok).tolist()]
             assert got == want and count == len(want)
+            cells, n, *box = scenarios._free_cells(state, dmin, dmax, floor)
+            assert cells == ok.astype(np.uint8).tobytes() and n == count and box == [r0, c0, width]
 
 
 def test_unused_draws_batched_advance_the_generator_as_one_by_one():
