@@ -148,6 +148,11 @@ class ArcadeTask(GlyphTask):
     Params: ClassVar[type] = ArcadeParams
     pattern: ClassVar[str] = "A"
     default_max_turns = 200
+    _extra: ClassVar[bool] = False   # set per game class: it overrides _extra_hud
+
+    def __init_subclass__(cls, **kwargs) -> None:
+        super().__init_subclass__(**kwargs)
+        cls._extra = cls._extra_hud is not ArcadeTask._extra_hud
 
     def prompt_fields(self) -> dict:
         p = self.params
@@ -244,6 +249,24 @@ class ArcadeTask(GlyphTask):
                         rows[r] = drawn.get(key) or self._draw(key)
         return rows
 
+    def _paint(self, rows: list[str], bodies, glyph: str | None = None) -> None:
+        """Draw ``bodies`` (anything with ``r``, ``c`` and ``glyph``) on ``rows`` in order, each
+        as ``glyph`` or its own, as ``_grid`` draws sprites (no tuple per mover): for games
+        whose ``_grid`` draws their bodies straight (call ``_grids += 1`` once a grid)."""
+        h = len(rows)
+        drawn = self._drawn
+        for b in bodies:
+            r, c = b.r, b.c
+            if 0 <= r < h:
+                line = rows[r]
+                if 0 <= c < len(line):
+                    g = glyph or b.glyph
+                    if drawn is None:
+                        rows[r] = line[:c] + g + line[c + 1:]
+                    else:
+                        key = (line, c, g)
+                        rows[r] = drawn.get(key) or self._draw(key)
+
     def _draw(self, key: tuple[str, int, str]) -> str:
         """The row ``line`` with glyph ``g`` in column ``c`` (``key``), remembered: a mover over
         a still background makes the same few rows again and again, and finding one costs less
@@ -270,10 +293,12 @@ class ArcadeTask(GlyphTask):
             self._head = (f"{score.shown} | Lives {self.lives}" if self.params.lives > 1
                           else score.shown)
             self._tail = None
+        if not self._extra:   # (the game adds nothing: no call)
+            return self._head
         extra = self._extra_hud()
         if not extra:
             return self._head
-        if extra is not self._tail:   # (games that keep their extra text hand back the same object)
+        if extra != self._tail:   # (an equal text, remade or kept, costs a compare, not a join)
             self._tail, self._hud_text = extra, f"{self._head} | {extra}"
         return self._hud_text
 
