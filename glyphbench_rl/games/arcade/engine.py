@@ -251,21 +251,40 @@ class ArcadeTask(GlyphTask):
 
     def _paint(self, rows: list[str], bodies, glyph: str | None = None) -> None:
         """Draw ``bodies`` (anything with ``r``, ``c`` and ``glyph``) on ``rows`` in order, each
-        as ``glyph`` or its own, as ``_grid`` draws sprites (no tuple per mover): for games
-        whose ``_grid`` draws their bodies straight (call ``_grids += 1`` once a grid)."""
+        as ``glyph`` or its own, as ``_grid`` draws sprites, for games whose ``_grid`` draws
+        their bodies straight (no tuple per mover; count the grid: ``_grids += 1``). A run of
+        bodies on one row (a formation's row) is drawn in one go: its cells and the row under
+        them are the key of the row remembered, one lookup for the run."""
         h = len(rows)
         drawn = self._drawn
+        if drawn is None:
+            drawn = {}
+        run, cur = None, -1
         for b in bodies:
-            r, c = b.r, b.c
-            if 0 <= r < h:
-                line = rows[r]
-                if 0 <= c < len(line):
-                    g = glyph or b.glyph
-                    if drawn is None:
-                        rows[r] = line[:c] + g + line[c + 1:]
-                    else:
-                        key = (line, c, g)
-                        rows[r] = drawn.get(key) or self._draw(key)
+            r = b.r
+            if r == cur:
+                run.append(b.c)
+                run.append(glyph or b.glyph)
+                continue
+            if run is not None and 0 <= cur < h:
+                run.append(rows[cur])
+                key = tuple(run)
+                rows[cur] = drawn.get(key) or self._draw_run(key)
+            cur, run = r, [b.c, glyph or b.glyph]
+        if run is not None and 0 <= cur < h:
+            run.append(rows[cur])
+            key = tuple(run)
+            rows[cur] = drawn.get(key) or self._draw_run(key)
+
+    def _draw_run(self, key: tuple) -> str:
+        """The row ``key[-1]`` with glyph ``key[i + 1]`` in column ``key[i]`` for each even
+        ``i`` in turn (columns off the row skipped), remembered as ``_draw`` remembers."""
+        row, w = key[-1], len(key[-1])
+        for i in range(0, len(key) - 1, 2):
+            c = key[i]
+            if 0 <= c < w:
+                row = row[:c] + key[i + 1] + row[c + 1:]
+        return self._keep(key, row)
 
     def _draw(self, key: tuple[str, int, str]) -> str:
         """The row ``line`` with glyph ``g`` in column ``c`` (``key``), remembered: a mover over
@@ -273,7 +292,9 @@ class ArcadeTask(GlyphTask):
         than making it. A task that makes new rows at more than one a grid (a sliding or filling
         background) stops remembering them."""
         line, c, g = key
-        row = line[:c] + g + line[c + 1:]
+        return self._keep(key, line[:c] + g + line[c + 1:])
+
+    def _keep(self, key: tuple, row: str) -> str:
         drawn = self._drawn
         if drawn is not None:
             if len(drawn) >= DRAWN:

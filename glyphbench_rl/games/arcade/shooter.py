@@ -317,22 +317,14 @@ class Shooter(ArcadeTask):
         if type(self)._sprites is not Shooter._sprites:
             return super()._grid()
         rows = self._rows()
-        h = len(rows)
         self._grids += 1
-        drawn, draw = self._drawn, self._draw
+        paint = self._paint
+        paint(rows, self.pack.bodies)
+        if self.gun.shots:
+            paint(rows, self.gun.shots, SHOT)
+        if self.bombs.shots:
+            paint(rows, self.bombs.shots, BOMB)
         me = self._me
-        me.r, me.c, me.glyph = self.row, self.col, self.cannon
-        for group, glyph in ((self.pack.bodies, None), (self.gun.shots, SHOT), (self.bombs.shots, BOMB),
-                             ((me,), None)):
-            for b in group:
-                r, c = b.r, b.c
-                if 0 <= r < h:
-                    line = rows[r]
-                    if 0 <= c < len(line):
-                        g = glyph or b.glyph
-                        if drawn is None:
-                            rows[r] = line[:c] + g + line[c + 1:]
-                        else:
-                            key = (line, c, g)
-                            rows[r] = drawn.get(key) or draw(key)
+        me.r, me.c = self.row, self.col
+        paint(rows, (me,), self.cannon)
         return rows
