@@ -53,6 +53,7 @@ from ..common.lanes import Draws
 EMPTY = "."
 EPS = 1e-9
 DRAWN = 2048   # rows with a mover drawn in that a task remembers (see ArcadeTask._draw)
+NONE: dict = {}   # (what a task that stopped remembering rows looks them up in: always empty)
 
 
 @dataclass(frozen=True)
@@ -235,56 +236,40 @@ class ArcadeTask(GlyphTask):
 
     def _grid(self) -> list[str]:
         rows = self._rows()
-        h = len(rows)
         self._grids += 1
+        inside = range(len(rows))
         drawn = self._drawn
+        get = drawn.get if drawn is not None else NONE.get
         for r, c, g in self._sprites():   # a few movers: one cell each into its row
-            if 0 <= r < h:
+            if r in inside:
                 line = rows[r]
-                if 0 <= c < len(line):
-                    if drawn is None:
-                        rows[r] = line[:c] + g + line[c + 1:]
-                    else:
-                        key = (line, c, g)
-                        rows[r] = drawn.get(key) or self._draw(key)
+                key = (line, c, g)
+                row = get(key)            # (a remembered row had its column inside)
+                if row is None:
+                    if not 0 <= c < len(line):
+                        continue
+                    row = self._draw(key)
+                rows[r] = row
         return rows
 
     def _paint(self, rows: list[str], bodies, glyph: str | None = None) -> None:
         """Draw ``bodies`` (anything with ``r``, ``c`` and ``glyph``) on ``rows`` in order, each
         as ``glyph`` or its own, as ``_grid`` draws sprites, for games whose ``_grid`` draws
-        their bodies straight (no tuple per mover; count the grid: ``_grids += 1``). A run of
-        bodies on one row (a formation's row) is drawn in one go: its cells and the row under
-        them are the key of the row remembered, one lookup for the run."""
-        h = len(rows)
+        their bodies straight (no tuple per mover; count the grid: ``_grids += 1``)."""
+        inside = range(len(rows))
         drawn = self._drawn
-        if drawn is None:
-            drawn = {}
-        run, cur = None, -1
+        get = drawn.get if drawn is not None else NONE.get
         for b in bodies:
             r = b.r
-            if r == cur:
-                run.append(b.c)
-                run.append(glyph or b.glyph)
-                continue
-            if run is not None and 0 <= cur < h:
-                run.append(rows[cur])
-                key = tuple(run)
-                rows[cur] = drawn.get(key) or self._draw_run(key)
-            cur, run = r, [b.c, glyph or b.glyph]
-        if run is not None and 0 <= cur < h:
-            run.append(rows[cur])
-            key = tuple(run)
-            rows[cur] = drawn.get(key) or self._draw_run(key)
-
-    def _draw_run(self, key: tuple) -> str:
-        """The row ``key[-1]`` with glyph ``key[i + 1]`` in column ``key[i]`` for each even
-        ``i`` in turn (columns off the row skipped), remembered as ``_draw`` remembers."""
-        row, w = key[-1], len(key[-1])
-        for i in range(0, len(key) - 1, 2):
-            c = key[i]
-            if 0 <= c < w:
-                row = row[:c] + key[i + 1] + row[c + 1:]
-        return self._keep(key, row)
+            if r in inside:
+                line = rows[r]
+                key = (line, b.c, glyph or b.glyph)
+                row = get(key)
+                if row is None:
+                    if not 0 <= key[1] < len(line):
+                        continue
+                    row = self._draw(key)
+                rows[r] = row
 
     def _draw(self, key: tuple[str, int, str]) -> str:
         """The row ``line`` with glyph ``g`` in column ``c`` (``key``), remembered: a mover over
