@@ -26,7 +26,7 @@ from dataclasses import dataclass
 from ...core.actions import ActionSet
 from ...core.params import param
 from .bodies import Body, Gun, sweep
-from .engine import ArcadeParams, ArcadeTask
+from .engine import NONE, ArcadeParams, ArcadeTask
 
 NOOP, LEFT, RIGHT, FIRE = 0, 1, 2, 3
 CANNON, SHOT, BOMB = "A", "|", "!"
@@ -142,7 +142,6 @@ class Shooter(ArcadeTask):
         self.gun = Gun(cooldown=p.cooldown, speed=p.shot_speed, reach=p.height, limit=p.shots)
         self.bombs = Gun(cooldown=0, speed=1, reach=p.height, limit=p.bombs)
         self.pack = Pack()
-        self._me = Body(0, 0)              # the cannon, as _grid draws it
         # _blocks, or None where the game keeps the default (nothing blocks: no call per cell)
         self._blocking = None if type(self)._blocks is Shooter._blocks else self._blocks
 
@@ -318,13 +317,31 @@ class Shooter(ArcadeTask):
             return super()._grid()
         rows = self._rows()
         self._grids += 1
-        paint = self._paint
-        paint(rows, self.pack.bodies)
+        inside = range(len(rows))
+        drawn = self._drawn
+        get = drawn.get if drawn is not None else NONE.get
+        for b in self.pack.bodies:   # (ArcadeTask._paint written out: this runs every turn)
+            r = b.r
+            if r in inside:
+                line = rows[r]
+                key = (line, b.c, b.glyph)
+                row = get(key)
+                if row is None:
+                    if not 0 <= key[1] < len(line):
+                        continue
+                    row = self._draw(key)
+                rows[r] = row
         if self.gun.shots:
-            paint(rows, self.gun.shots, SHOT)
+            self._paint(rows, self.gun.shots, SHOT)
         if self.bombs.shots:
-            paint(rows, self.bombs.shots, BOMB)
-        me = self._me
-        me.r, me.c = self.row, self.col
-        paint(rows, (me,), self.cannon)
+            self._paint(rows, self.bombs.shots, BOMB)
+        r, c = self.row, self.col
+        if r in inside:
+            line = rows[r]
+            key = (line, c, self.cannon)
+            row = get(key)
+            if row is None and 0 <= c < len(line):
+                row = self._draw(key)
+            if row is not None:
+                rows[r] = row
         return rows
