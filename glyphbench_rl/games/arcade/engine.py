@@ -271,6 +271,19 @@ class ArcadeTask(GlyphTask):
                     row = self._draw(key)
                 rows[r] = row
 
+    def _put(self, rows: list[str], r: int, c: int, g: str) -> None:
+        """Draw one mover, glyph ``g`` at (r, c), on ``rows`` as ``_grid`` draws a sprite."""
+        if 0 <= r < len(rows):
+            line = rows[r]
+            key = (line, c, g)
+            drawn = self._drawn
+            row = drawn.get(key) if drawn is not None else None
+            if row is None:
+                if not 0 <= c < len(line):
+                    return
+                row = self._draw(key)
+            rows[r] = row
+
     def _draw(self, key: tuple[str, int, str]) -> str:
         """The row ``line`` with glyph ``g`` in column ``c`` (``key``), remembered: a mover over
         a still background makes the same few rows again and again, and finding one costs less
