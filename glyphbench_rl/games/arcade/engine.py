@@ -53,7 +53,6 @@ from ..common.lanes import Draws
 EMPTY = "."
 EPS = 1e-9
 DRAWN = 2048   # rows with a mover drawn in that a task remembers (see ArcadeTask._draw)
-NONE: dict = {}   # (what a task that stopped remembering rows looks them up in: always empty)
 
 
 @dataclass(frozen=True)
@@ -239,7 +238,14 @@ class ArcadeTask(GlyphTask):
         self._grids += 1
         inside = range(len(rows))
         drawn = self._drawn
-        get = drawn.get if drawn is not None else NONE.get
+        if drawn is None:   # (rows too varied to remember: drawn afresh)
+            for r, c, g in self._sprites():
+                if r in inside:
+                    line = rows[r]
+                    if 0 <= c < len(line):
+                        rows[r] = line[:c] + g + line[c + 1:]
+            return rows
+        get = drawn.get
         for r, c, g in self._sprites():   # a few movers: one cell each into its row
             if r in inside:
                 line = rows[r]
@@ -258,7 +264,15 @@ class ArcadeTask(GlyphTask):
         their bodies straight (no tuple per mover; count the grid: ``_grids += 1``)."""
         inside = range(len(rows))
         drawn = self._drawn
-        get = drawn.get if drawn is not None else NONE.get
+        if drawn is None:   # (rows too varied to remember: drawn afresh)
+            for b in bodies:
+                r, c = b.r, b.c
+                if r in inside:
+                    line = rows[r]
+                    if 0 <= c < len(line):
+                        rows[r] = line[:c] + (glyph or b.glyph) + line[c + 1:]
+            return
+        get = drawn.get
         for b in bodies:
             r = b.r
             if r in inside:
@@ -275,9 +289,13 @@ class ArcadeTask(GlyphTask):
         """Draw one mover, glyph ``g`` at (r, c), on ``rows`` as ``_grid`` draws a sprite."""
         if 0 <= r < len(rows):
             line = rows[r]
-            key = (line, c, g)
             drawn = self._drawn
-            row = drawn.get(key) if drawn is not None else None
+            if drawn is None:
+                if 0 <= c < len(line):
+                    rows[r] = line[:c] + g + line[c + 1:]
+                return
+            key = (line, c, g)
+            row = drawn.get(key)
             if row is None:
                 if not 0 <= c < len(line):
                     return

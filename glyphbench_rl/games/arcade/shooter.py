@@ -26,7 +26,7 @@ from dataclasses import dataclass
 from ...core.actions import ActionSet
 from ...core.params import param
 from .bodies import Body, Gun, sweep
-from .engine import NONE, ArcadeParams, ArcadeTask
+from .engine import ArcadeParams, ArcadeTask
 
 NOOP, LEFT, RIGHT, FIRE = 0, 1, 2, 3
 CANNON, SHOT, BOMB = "A", "|", "!"
@@ -317,9 +317,18 @@ class Shooter(ArcadeTask):
             return super()._grid()
         rows = self._rows()
         self._grids += 1
-        inside = range(len(rows))
         drawn = self._drawn
-        get = drawn.get if drawn is not None else NONE.get
+        if drawn is None:   # (rows too varied to remember: ArcadeTask._paint draws them afresh)
+            paint = self._paint
+            paint(rows, self.pack.bodies)
+            if self.gun.shots:
+                paint(rows, self.gun.shots, SHOT)
+            if self.bombs.shots:
+                paint(rows, self.bombs.shots, BOMB)
+            self._put(rows, self.row, self.col, self.cannon)
+            return rows
+        inside = range(len(rows))
+        get = drawn.get
         for b in self.pack.bodies:   # (ArcadeTask._paint written out: this runs every turn)
             r = b.r
             if r in inside:
