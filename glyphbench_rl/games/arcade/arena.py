@@ -366,7 +366,7 @@ class ArenaTask(ArcadeTask):
         """``_sprites()`` drawn on ``_rows()`` straight from the bodies: no (row, col, glyph)
         tuple per mover (that cost as much as the drawing) and no bounds test (every mover of an
         arena stays inside the field)."""
-        rows = self._rows()
+        rows = self._rows() if self._slides else self.still[:]
         if self._own_movers:
             for r, c, g in self._below():
                 line = rows[r]

@@ -190,7 +190,7 @@ class Centipede(Shooter):
 
     def _grid(self) -> list[str]:
         """``_sprites`` drawn straight from the bodies, in the same order."""
-        rows = self._rows()
+        rows = self._rows() if self._slides else self.still[:]
         self._grids += 1
         bug = self.bug
         if bug is not None:

@@ -150,9 +150,12 @@ class ArcadeTask(GlyphTask):
     default_max_turns = 200
     _extra: ClassVar[bool] = False   # set per game class: it overrides _extra_hud
 
+    _slides: ClassVar[bool] = False   # set per game class: it overrides _rows
+
     def __init_subclass__(cls, **kwargs) -> None:
         super().__init_subclass__(**kwargs)
         cls._extra = cls._extra_hud is not ArcadeTask._extra_hud
+        cls._slides = cls._rows is not ArcadeTask._rows
 
     def prompt_fields(self) -> dict:
         p = self.params
@@ -234,7 +237,7 @@ class ArcadeTask(GlyphTask):
         return rows[:]
 
     def _grid(self) -> list[str]:
-        rows = self._rows()
+        rows = self._rows() if self._slides else self.still[:]
         self._grids += 1
         inside = range(len(rows))
         drawn = self._drawn

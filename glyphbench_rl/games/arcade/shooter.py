@@ -315,7 +315,7 @@ class Shooter(ArcadeTask):
         a game that draws other sprites goes through ``ArcadeTask._grid``."""
         if type(self)._sprites is not Shooter._sprites:
             return super()._grid()
-        rows = self._rows()
+        rows = self._rows() if self._slides else self.still[:]
         self._grids += 1
         drawn = self._drawn
         if drawn is None:   # (rows too varied to remember: ArcadeTask._paint draws them afresh)
