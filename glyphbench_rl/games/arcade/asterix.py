@@ -26,9 +26,6 @@ class AsterixParams(ArcadeParams):
     faster: int = param(0, 0, 100)       # every this many potions things move a cell a turn more (0: never)
 
 
-LINES: dict[str, dict] = {}   # an empty lane row -> its rows with one thing on it
-
-
 class Asterix(ArcadeTask):
     title = "Asterix"
     rules = ("{height} lanes, one per row, {width} cells long. Along each lane one thing at a time "
@@ -104,19 +101,13 @@ class Asterix(ArcadeTask):
     def _grid(self) -> list[str]:
         """``_sprites()`` drawn straight from the things (all inside the field)."""
         rows = self.still[:]
-        blank = EMPTY * self.params.width
-        lines = LINES.get(blank)
-        if lines is None:   # a lane row with one thing on it, by (glyph, column): made once
-            lines = LINES[blank] = {(g, c): blank[:c] + g + blank[c + 1:]
-                                    for g in (FOOD, LYRE) for c in range(len(blank))}
         for t in self.things:
             if t is not None:
-                r = t.r
-                line = rows[r]
-                rows[r] = (lines[t.glyph, t.c] if line is blank or line == blank
-                           else line[:t.c] + t.glyph + line[t.c + 1:])
-        self._grids += 1
-        self._put(rows, self.r, self.c, YOU)
+                c, line = t.c, rows[t.r]
+                rows[t.r] = line[:c] + t.glyph + line[c + 1:]
+        r, c = self.r, self.c
+        line = rows[r]
+        rows[r] = line[:c] + YOU + line[c + 1:]
         return rows
 
 
