@@ -60,6 +60,8 @@ class ArenaTask(ArcadeTask):
     arrows: ClassVar[bool] = True         # draw the player as the arrow it faces (else SHIP)
     drift: ClassVar[bool] = False         # foes keep their own velocity instead of chasing
     _own_movers: ClassVar[bool] = False   # set per game class: it draws movers of its own
+    _own_enter: ClassVar[bool] = False    # ... overrides _enter
+    _own_turn: ClassVar[bool] = False     # ... overrides _turn
 
     def prompt_fields(self) -> dict:
         p = self.params
@@ -123,7 +125,7 @@ class ArenaTask(ArcadeTask):
             if p.wrap:
                 r, c = r % p.height, c % p.width
             if 0 <= r < p.height and 0 <= c < p.width:
-                if self._enter(r, c) or self.done:
+                if self._own_enter and (self._enter(r, c) or self.done):   # (no call when a no-op)
                     return
                 if self.free(r, c):
                     self.r, self.c = r, c
@@ -141,7 +143,8 @@ class ArenaTask(ArcadeTask):
             return
         if p.reinforce and self.tick % p.reinforce == 0 and len(self.foes) < p.foes:
             self.stock(one=True)
-        self._turn()
+        if self._own_turn:
+            self._turn()
 
     air_out = "You ran out of air."
 
@@ -342,6 +345,8 @@ class ArenaTask(ArcadeTask):
         # whether the game draws movers of its own: else ``_grid`` skips asking (most turns of
         # most games, where two empty calls cost a tenth of the drawing)
         cls._own_movers = cls._below is not ArenaTask._below or cls._above is not ArenaTask._above
+        cls._own_enter = cls._enter is not ArenaTask._enter   # (likewise for the hooks)
+        cls._own_turn = cls._turn is not ArenaTask._turn
 
     def _below(self):
         """Movers of the game's own drawn under the foes: (row, col, glyph) each."""
