@@ -104,10 +104,14 @@ class Atlantis(Shooter):
         for gun in self.guns:
             if gun.shots:
                 self._fly(gun, w, bodies)
-        for b in [b for b in self.pack.bodies if b.r >= p.height - 1]:
-            self.pack.kill(b)
-            if self._wreck(b.c):
-                return
+        bottom = p.height - 1
+        for b in bodies:   # (the list of those down below is made only when there is one)
+            if b.r >= bottom:
+                for b in [b for b in bodies if b.r >= bottom]:
+                    self.pack.kill(b)
+                    if self._wreck(b.c):
+                        return
+                break
         if self.done:
             return
         if self.sent < p.wave and self.tick % p.gap == 1 % p.gap:

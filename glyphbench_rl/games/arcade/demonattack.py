@@ -94,8 +94,12 @@ class DemonAttack(Shooter):
                     if 0 <= c + dc < p.width:
                         self.pack.add(r, c + dc, DIVER)
         if divers:
-            for b in [b for b in self.pack.bodies if b.r > self.row]:
-                self.pack.kill(b)
+            row = self.row
+            for b in self.pack.bodies:   # (the list of those past you is made only when there is one)
+                if b.r > row:
+                    for b in [b for b in self.pack.bodies if b.r > row]:
+                        self.pack.kill(b)
+                    break
             if self.touches():
                 self.pack.kill(self.pack.at(self.row, self.col))
                 if self.lose_life("A diving demon hit you."):
