@@ -184,6 +184,33 @@ class Shooter(ArcadeTask):
                 if lanes is None or b.c in lanes:
                     cells[b.r, b.c] = b
             find = cells.get
+            if blocks is None and lanes is not None:
+                for shot in gun.shots:
+                    if shot.dr != -1:
+                        break
+                else:   # the usual volley: every shot straight up, nothing but enemies stops one
+                    for shot in gun.shots:
+                        r, c, cell = shot.r, shot.c, None
+                        for _ in range(speed):
+                            r -= 1
+                            if r < 0:
+                                cell = r, c
+                                break
+                            foe = find((r, c))
+                            if foe is not None:
+                                cell = r, c
+                                hits.append((foe, cell))
+                                break
+                            shot.r = r
+                        shot.data -= speed
+                        if cell is not None:
+                            shot.alive = False
+                        elif shot.data <= 0:
+                            shot.alive = False
+                        else:
+                            kept.append(shot)
+                    gun.shots = kept
+                    return hits
 
             def stops(r: int, c: int) -> bool:   # remembers the enemy it found for the hit below
                 nonlocal foe
