@@ -302,7 +302,7 @@ class Shooter(ArcadeTask):
         for bomb in bombs.shots:
             if speed == 1 and bomb.dr == 1 and not bomb.dc:
                 r, c = bomb.r + 1, bomb.c
-                if stops(r, c):
+                if r >= h or (r == row and c == col) or (blocks is not None and blocks(r, c)):   # stops
                     cell = r, c
                 else:
                     bomb.r, cell = r, None
