@@ -167,7 +167,7 @@ class ArenaTask(ArcadeTask):
         most ticks, where a generator and a hit callback per cell cost more than the flight)."""
         gun, p = self.gun, self.params
         speed, struck, kept = gun.speed, self._struck, []
-        h, w, still, solid = p.height, p.width, self.still, self.SOLID
+        h, w, still, solid, foes = p.height, p.width, self.still, self.SOLID, self.foes
         for shot in gun.shots:
             cell = None
             dr, dc = shot.dr, shot.dc
@@ -180,9 +180,16 @@ class ArenaTask(ArcadeTask):
                         if struck(r, c):
                             cell = r, c
                             break
-                    elif not (0 <= r < h and 0 <= c < w) or still[r][c] in solid or self.foe_at(r, c):
+                    elif not (0 <= r < h and 0 <= c < w) or still[r][c] in solid:
                         cell = r, c                        # (``_struck`` on a field that ends)
                         break
+                    else:
+                        for f in foes:                     # (``foe_at`` written out)
+                            if f.r == r and f.c == c:
+                                cell = r, c
+                                break
+                        if cell is not None:
+                            break
                     shot.r, shot.c = r, c
             shot.data -= speed
             if cell is not None:
