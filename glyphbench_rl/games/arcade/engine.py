@@ -238,27 +238,18 @@ class ArcadeTask(GlyphTask):
 
     def _grid(self) -> list[str]:
         rows = self._rows() if self._slides else self.still[:]
+        h = len(rows)
         self._grids += 1
-        inside = range(len(rows))
         drawn = self._drawn
-        if drawn is None:   # (rows too varied to remember: drawn afresh)
-            for r, c, g in self._sprites():
-                if r in inside:
-                    line = rows[r]
-                    if 0 <= c < len(line):
-                        rows[r] = line[:c] + g + line[c + 1:]
-            return rows
-        get = drawn.get
         for r, c, g in self._sprites():   # a few movers: one cell each into its row
-            if r in inside:
+            if 0 <= r < h:
                 line = rows[r]
-                key = (line, c, g)
-                row = get(key)            # (a remembered row had its column inside)
-                if row is None:
-                    if not 0 <= c < len(line):
-                        continue
-                    row = self._draw(key)
-                rows[r] = row
+                if 0 <= c < len(line):
+                    if drawn is None:
+                        rows[r] = line[:c] + g + line[c + 1:]
+                    else:
+                        key = (line, c, g)
+                        rows[r] = drawn.get(key) or self._draw(key)
         return rows
 
     def _paint(self, rows: list[str], bodies, glyph: str | None = None) -> None:
