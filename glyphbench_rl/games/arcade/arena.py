@@ -60,6 +60,8 @@ class ArenaTask(ArcadeTask):
     arrows: ClassVar[bool] = True         # draw the player as the arrow it faces (else SHIP)
     drift: ClassVar[bool] = False         # foes keep their own velocity instead of chasing
     _own_movers: ClassVar[bool] = False   # set per game class: it draws movers of its own
+    _own_enter: ClassVar[bool] = False    # ... overrides _enter
+    _own_turn: ClassVar[bool] = False     # ... overrides _turn
 
     def prompt_fields(self) -> dict:
         p = self.params
@@ -123,7 +125,7 @@ class ArenaTask(ArcadeTask):
             if p.wrap:
                 r, c = r % p.height, c % p.width
             if 0 <= r < p.height and 0 <= c < p.width:
-                if self._enter(r, c) or self.done:
+                if self._own_enter and (self._enter(r, c) or self.done):   # (no call when a no-op)
                     return
                 if self.free(r, c):
                     self.r, self.c = r, c
@@ -141,7 +143,8 @@ class ArenaTask(ArcadeTask):
             return
         if p.reinforce and self.tick % p.reinforce == 0 and len(self.foes) < p.foes:
             self.stock(one=True)
-        self._turn()
+        if self._own_turn:
+            self._turn()
 
     air_out = "You ran out of air."
 
@@ -164,7 +167,7 @@ class ArenaTask(ArcadeTask):
         most ticks, where a generator and a hit callback per cell cost more than the flight)."""
         gun, p = self.gun, self.params
         speed, struck, kept = gun.speed, self._struck, []
-        h, w, still, solid = p.height, p.width, self.still, self.SOLID
+        h, w, still, solid, foes = p.height, p.width, self.still, self.SOLID, self.foes
         for shot in gun.shots:
             cell = None
             dr, dc = shot.dr, shot.dc
@@ -177,9 +180,16 @@ class ArenaTask(ArcadeTask):
                         if struck(r, c):
                             cell = r, c
                             break
-                    elif not (0 <= r < h and 0 <= c < w) or still[r][c] in solid or self.foe_at(r, c):
+                    elif not (0 <= r < h and 0 <= c < w) or still[r][c] in solid:
                         cell = r, c                        # (``_struck`` on a field that ends)
                         break
+                    else:
+                        for f in foes:                     # (``foe_at`` written out)
+                            if f.r == r and f.c == c:
+                                cell = r, c
+                                break
+                        if cell is not None:
+                            break
                     shot.r, shot.c = r, c
             shot.data -= speed
             if cell is not None:
@@ -342,6 +352,8 @@ class ArenaTask(ArcadeTask):
         # whether the game draws movers of its own: else ``_grid`` skips asking (most turns of
         # most games, where two empty calls cost a tenth of the drawing)
         cls._own_movers = cls._below is not ArenaTask._below or cls._above is not ArenaTask._above
+        cls._own_enter = cls._enter is not ArenaTask._enter   # (likewise for the hooks)
+        cls._own_turn = cls._turn is not ArenaTask._turn
 
     def _below(self):
         """Movers of the game's own drawn under the foes: (row, col, glyph) each."""
@@ -366,7 +378,7 @@ class ArenaTask(ArcadeTask):
         """``_sprites()`` drawn on ``_rows()`` straight from the bodies: no (row, col, glyph)
         tuple per mover (that cost as much as the drawing) and no bounds test (every mover of an
         arena stays inside the field)."""
-        rows = self._rows()
+        rows = self._rows() if self._slides else self.still[:]
         if self._own_movers:
             for r, c, g in self._below():
                 line = rows[r]

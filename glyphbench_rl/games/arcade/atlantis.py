@@ -19,6 +19,7 @@ ACTIONS = ActionSet([("NOOP", "hold fire"), ("FIRE_LEFT", "the left turret shoot
                      ("FIRE_CENTER", "the centre turret shoots straight up"),
                      ("FIRE_RIGHT", "the right turret shoots up and to the left")], noop="NOOP")
 AIM = ((-1, 1), (-1, 0), (-1, -1))
+WAVE_TEXT: dict[int, str] = {}
 
 
 @dataclass(frozen=True)
@@ -92,27 +93,25 @@ class Atlantis(Shooter):
         if action:
             dr, dc = AIM[action - 1]
             self.guns[action - 1].fire(self.tick, p.height - 1, self._towers()[action - 1], dr, dc, SHOT)
-        for b in self.pack.bodies:
+        w, bodies = p.width, self.pack.bodies
+        for b in bodies:
             c = b.c + b.dc
-            if 0 <= c < p.width:
+            if 0 <= c < w:
                 b.c = c
             else:
                 b.dc, b.r = -b.dc, min(p.height - 1, b.r + p.drop)
                 b.glyph = EAST if b.dc > 0 else WEST
-        w, at = p.width, self.pack.at
         for gun in self.guns:
-            for _, cell in gun.advance(lambda r, c: r < 0 or not 0 <= c < w or at(r, c) is not None):
-                foe = cell and at(*cell)
-                if foe:
-                    self.pack.kill(foe)
-                    self.kills += 1
-                    self.say("Raider down!")
-                    if p.per_raider:
-                        self.score.gain()
-        for b in [b for b in self.pack.bodies if b.r >= p.height - 1]:
-            self.pack.kill(b)
-            if self._wreck(b.c):
-                return
+            if gun.shots:
+                self._fly(gun, w, bodies)
+        bottom = p.height - 1
+        for b in bodies:   # (the list of those down below is made only when there is one)
+            if b.r >= bottom:
+                for b in [b for b in bodies if b.r >= bottom]:
+                    self.pack.kill(b)
+                    if self._wreck(b.c):
+                        return
+                break
         if self.done:
             return
         if self.sent < p.wave and self.tick % p.gap == 1 % p.gap:
@@ -125,6 +124,43 @@ class Atlantis(Shooter):
                 self.score.gain()
             self.waves, self.sent = self.waves + 1, 0
 
+    def _fly(self, gun: Gun, w: int, bodies: list) -> None:
+        """``gun``'s shots fly a cell at a time (each a unit step) and stop off the field or on
+        a raider, who falls (Gun.advance and sweep written out, each hit dealt with before the
+        next shot moves)."""
+        p, speed, kept = self.params, gun.speed, []
+        for shot in gun.shots:
+            dr, dc, r, c = shot.dr, shot.dc, shot.r, shot.c
+            foe, stopped = None, False
+            for _ in range(speed):
+                r += dr
+                c += dc
+                if r < 0 or not 0 <= c < w:
+                    stopped = True
+                    break
+                for b in bodies:
+                    if b.c == c and b.r == r:
+                        foe = b
+                        break
+                if foe is not None:
+                    stopped = True
+                    break
+                shot.r, shot.c = r, c
+            shot.data -= speed
+            if stopped:
+                shot.alive = False
+                if foe is not None:
+                    self.pack.kill(foe)
+                    self.kills += 1
+                    self.say("Raider down!")
+                    if p.per_raider:
+                        self.score.gain()
+            elif shot.data <= 0:
+                shot.alive = False
+            else:
+                kept.append(shot)
+        gun.shots = kept
+
     def _wreck(self, c: int) -> bool:
         """A raider got down to the city at column ``c``: the nearest building falls (a life)."""
         homes = [k for k, ch in enumerate(self.still[-1]) if ch == BUILDING]
@@ -133,7 +169,20 @@ class Atlantis(Shooter):
         return self.lose_life("A raider reached the city.")
 
     def _extra_hud(self) -> str:
-        return f"Wave {self.waves}"
+        text = WAVE_TEXT.get(self.waves)
+        if text is None:
+            text = WAVE_TEXT[self.waves] = f"Wave {self.waves}"
+        return text
+
+    def _grid(self) -> list[str]:
+        """``_sprites`` drawn straight from the bodies, in the same order."""
+        rows = self.still[:]
+        self._grids += 1
+        self._paint(rows, self.pack.bodies)
+        for gun in self.guns:
+            if gun.shots:
+                self._paint(rows, gun.shots, SHOT)
+        return rows
 
     def _sprites(self):
         out = [(b.r, b.c, b.glyph) for b in self.pack.bodies]

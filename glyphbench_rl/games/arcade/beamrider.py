@@ -95,8 +95,12 @@ class BeamRider(Shooter):
             self.pack.kill(self.pack.at(self.row, self.col))
             if self.lose_life("A saucer rammed you."):
                 return
-        for b in [b for b in self.pack.bodies if b.r >= self.row]:
-            self.pack.kill(b)
+        row = self.row
+        for b in self.pack.bodies:   # (the list of those past you is made only when there is one)
+            if b.r >= row:
+                for b in [b for b in self.pack.bodies if b.r >= row]:
+                    self.pack.kill(b)
+                break
         if self.tick % p.spawn == 0 and len(self.pack) < p.saucers:
             self.pack.add(0, lanes[d.below(len(lanes))], SAUCER)
         if p.bomb_chance:

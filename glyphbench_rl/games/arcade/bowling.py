@@ -46,6 +46,9 @@ def rack(width: int) -> list[tuple[int, int]]:
     return [(1 + k, mid - (3 - k) + 2 * j) for k in range(4) for j in range(4 - k)]
 
 
+HUD_TEXT: dict[tuple, str] = {}   # the HUD note by its values
+
+
 class Bowling(ArcadeTask):
     title = "Bowling"
     rules = ("A {width}x{height} lane seen from above; ten pins (i) stand in a triangle at the top, "
@@ -133,9 +136,16 @@ class Bowling(ArcadeTask):
         return out
 
     def _extra_hud(self) -> str:
-        hud = f"Frame {self.frame_no}/{self.params.frames} Roll {self.roll}/{self.params.rolls}"
-        if self.ball and self.drift:
-            hud += f" | Ball curving {'left' if self.drift < 0 else 'right'}"
+        curve = (self.drift < 0) - (self.drift > 0) if self.ball and self.drift else 0
+        key = (self.frame_no, self.params.frames, self.roll, self.params.rolls, curve)
+        hud = HUD_TEXT.get(key)
+        if hud is None:   # (made once per value)
+            if len(HUD_TEXT) >= 4096:
+                HUD_TEXT.clear()
+            hud = f"Frame {self.frame_no}/{self.params.frames} Roll {self.roll}/{self.params.rolls}"
+            if curve:
+                hud += f" | Ball curving {'left' if curve > 0 else 'right'}"
+            HUD_TEXT[key] = hud
         return hud
 
 

@@ -107,15 +107,37 @@ class Centipede(Shooter):
     def _play(self, action: int) -> None:
         p = self.params
         self.steer(action)
-        if self.tick % p.crawl == 0:
-            for b in self.pack.bodies:
-                self._crawl(b)
+        bodies = self.pack.bodies
+        if self.tick % p.crawl == 0:   # (_crawl written out for every segment)
+            w, h, top, still = p.width, p.height, p.height - p.zone - 1, self.still
+            for b in bodies:
+                c = b.c + b.dc
+                if 0 <= c < w and still[b.r][c] != MUSH:
+                    b.c = c
+                    continue
+                b.dc = -b.dc
+                r = b.r + b.dr
+                if r >= h or (b.dr < 0 and r < top):
+                    b.dr = -b.dr
+                    r = b.r + b.dr
+                b.r = r
         if p.land and self.pack.lowest() >= p.height - 1:
             self.lives = 1
             self.lose_life("The centipede reached the bottom.")
             return
         self._spider()
-        for foe, cell in self.volley(self._foe):
+        hits = ()
+        if self.gun.shots:   # (_foe on the pack indexed by cell: it holds still while shots fly)
+            cells = {}
+            for b in reversed(bodies):   # (the first body on a cell wins, as in Pack.at)
+                cells[b.r, b.c] = b
+            bug, find = self.bug, cells.get
+
+            def foe_at(r: int, c: int):
+                return bug if bug is not None and bug.r == r and bug.c == c else find((r, c))
+
+            hits = self.volley(foe_at)
+        for foe, cell in hits:
             if foe is self.bug:
                 self.bug = None
             else:
@@ -165,6 +187,21 @@ class Centipede(Shooter):
 
     def _respawn(self) -> None:
         self.row = self.params.height - 1
+
+    def _grid(self) -> list[str]:
+        """``_sprites`` drawn straight from the bodies, in the same order."""
+        rows = self._rows() if self._slides else self.still[:]
+        self._grids += 1
+        bug = self.bug
+        if bug is not None:
+            self._put(rows, bug.r, bug.c, SPIDER)
+        self._paint(rows, self.pack.bodies)
+        if self.gun.shots:
+            self._paint(rows, self.gun.shots, SHOT)
+        if self.bombs.shots:
+            self._paint(rows, self.bombs.shots, BOMB)
+        self._put(rows, self.row, self.col, self.cannon)
+        return rows
 
     def _sprites(self):
         out = super()._sprites()

@@ -218,7 +218,7 @@ class MazeTask(ArcadeTask):
     def _grid(self) -> list[str]:
         """``_sprites()`` drawn on ``_rows()`` straight from the bodies (no tuple per mover, no
         bounds test: everything walks the maze)."""
-        rows = self._rows()
+        rows = self._rows() if self._slides else self.still[:]
         if self._own_things:
             for r, c, ch in self._below():
                 line = rows[r]

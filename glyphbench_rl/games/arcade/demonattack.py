@@ -57,8 +57,15 @@ class DemonAttack(Shooter):
 
     def _fill(self) -> None:
         p, d = self.params, self.draws
-        while self.sent < p.wave and sum(b.glyph == DEMON for b in self.pack.bodies) < p.demons:
+        if self.sent >= p.wave:
+            return
+        demons = 0
+        for b in self.pack.bodies:   # (a loop, once: this runs most turns of a wave)
+            if b.glyph == DEMON:
+                demons += 1
+        while self.sent < p.wave and demons < p.demons:
             self.sent += 1
+            demons += 1
             self.pack.add(1 + d.below(p.band), 1 + d.below(p.width - 2), DEMON,
                           dc=1 if d.random() < 0.5 else -1)
 
@@ -87,8 +94,12 @@ class DemonAttack(Shooter):
                     if 0 <= c + dc < p.width:
                         self.pack.add(r, c + dc, DIVER)
         if divers:
-            for b in [b for b in self.pack.bodies if b.r > self.row]:
-                self.pack.kill(b)
+            row = self.row
+            for b in self.pack.bodies:   # (the list of those past you is made only when there is one)
+                if b.r > row:
+                    for b in [b for b in self.pack.bodies if b.r > row]:
+                        self.pack.kill(b)
+                    break
             if self.touches():
                 self.pack.kill(self.pack.at(self.row, self.col))
                 if self.lose_life("A diving demon hit you."):

@@ -36,6 +36,9 @@ class EnduroParams(ArcadeParams):
     day: int = param(60, 0, 100000)        # turns until nightfall ends the race (0: no clock)
 
 
+HUD_TEXT: dict[tuple, str] = {}   # the HUD note by its values
+
+
 class Enduro(ArcadeTask):
     title = "Enduro"
     rules = ("You drive the car (A) near the bottom of a road with {lanes} lanes (columns {lane_cols}). "
@@ -134,9 +137,15 @@ class Enduro(ArcadeTask):
         return ((self.car_r, self.cols[self.lane], PLAYER),)
 
     def _extra_hud(self) -> str:
-        hud = f"Speed {self.speed}"
-        if self.params.day:
-            hud += f" | Nightfall in {self.params.day - self.tick}"
+        key = (self.speed, self.params.day and self.params.day - self.tick)
+        hud = HUD_TEXT.get(key)
+        if hud is None:   # (made once per value: the values recur from episode to episode)
+            if len(HUD_TEXT) >= 4096:
+                HUD_TEXT.clear()
+            hud = f"Speed {self.speed}"
+            if self.params.day:
+                hud += f" | Nightfall in {self.params.day - self.tick}"
+            HUD_TEXT[key] = hud
         return hud
 
 

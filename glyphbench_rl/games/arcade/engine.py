@@ -170,6 +170,14 @@ class ArcadeTask(GlyphTask):
     Params: ClassVar[type] = ArcadeParams
     pattern: ClassVar[str] = "A"
     default_max_turns = 200
+    _extra: ClassVar[bool] = False   # set per game class: it overrides _extra_hud
+
+    _slides: ClassVar[bool] = False   # set per game class: it overrides _rows
+
+    def __init_subclass__(cls, **kwargs) -> None:
+        super().__init_subclass__(**kwargs)
+        cls._extra = cls._extra_hud is not ArcadeTask._extra_hud
+        cls._slides = cls._rows is not ArcadeTask._rows
 
     def prompt_fields(self) -> dict:
         p = self.params
@@ -252,7 +260,7 @@ class ArcadeTask(GlyphTask):
         return rows[:]
 
     def _grid(self) -> list[str]:
-        rows = self._rows()
+        rows = self._rows() if self._slides else self.still[:]
         h = len(rows)
         self._grids += 1
         drawn = self._drawn
@@ -267,13 +275,59 @@ class ArcadeTask(GlyphTask):
                         rows[r] = drawn.get(key) or self._draw(key)
         return rows
 
+    def _paint(self, rows: list[str], bodies, glyph: str | None = None) -> None:
+        """Draw ``bodies`` (anything with ``r``, ``c`` and ``glyph``) on ``rows`` in order, each
+        as ``glyph`` or its own, as ``_grid`` draws sprites, for games whose ``_grid`` draws
+        their bodies straight (no tuple per mover; count the grid: ``_grids += 1``)."""
+        inside = range(len(rows))
+        drawn = self._drawn
+        if drawn is None:   # (rows too varied to remember: drawn afresh)
+            for b in bodies:
+                r, c = b.r, b.c
+                if r in inside:
+                    line = rows[r]
+                    if 0 <= c < len(line):
+                        rows[r] = line[:c] + (glyph or b.glyph) + line[c + 1:]
+            return
+        get = drawn.get
+        for b in bodies:
+            r = b.r
+            if r in inside:
+                line = rows[r]
+                key = (line, b.c, glyph or b.glyph)
+                row = get(key)
+                if row is None:
+                    if not 0 <= key[1] < len(line):
+                        continue
+                    row = self._draw(key)
+                rows[r] = row
+
+    def _put(self, rows: list[str], r: int, c: int, g: str) -> None:
+        """Draw one mover, glyph ``g`` at (r, c), on ``rows`` as ``_grid`` draws a sprite."""
+        if 0 <= r < len(rows):
+            line = rows[r]
+            drawn = self._drawn
+            if drawn is None:
+                if 0 <= c < len(line):
+                    rows[r] = line[:c] + g + line[c + 1:]
+                return
+            key = (line, c, g)
+            row = drawn.get(key)
+            if row is None:
+                if not 0 <= c < len(line):
+                    return
+                row = self._draw(key)
+            rows[r] = row
+
     def _draw(self, key: tuple[str, int, str]) -> str:
         """The row ``line`` with glyph ``g`` in column ``c`` (``key``), remembered: a mover over
         a still background makes the same few rows again and again, and finding one costs less
         than making it. A task that makes new rows at more than one a grid (a sliding or filling
         background) stops remembering them."""
         line, c, g = key
-        row = line[:c] + g + line[c + 1:]
+        return self._keep(key, line[:c] + g + line[c + 1:])
+
+    def _keep(self, key: tuple, row: str) -> str:
         drawn = self._drawn
         if drawn is not None:
             if len(drawn) >= DRAWN:
@@ -293,10 +347,12 @@ class ArcadeTask(GlyphTask):
             self._head = (f"{score.shown} | Lives {self.lives}" if self.params.lives > 1
                           else score.shown)
             self._tail = None
+        if not self._extra:   # (the game adds nothing: no call)
+            return self._head
         extra = self._extra_hud()
         if not extra:
             return self._head
-        if extra is not self._tail:   # (games that keep their extra text hand back the same object)
+        if extra != self._tail:   # (an equal text, remade or kept, costs a compare, not a join)
             self._tail, self._hud_text = extra, f"{self._head} | {extra}"
         return self._hud_text
 

@@ -83,27 +83,35 @@ class FishingDerby(ArcadeTask):
             self._rise("you", me, 2 if action == REEL else 1)
         else:
             dr, dc = MOVES[action]
-            if dr or dc:
-                me[0], me[1] = clamp(me[0] + dr, 2, p.height - 1), clamp(me[1] + dc, 0, self.half - 1)
+            if dr or dc:   # (clamp written out)
+                r, c, top = me[0] + dr, me[1] + dc, p.height - 1
+                me[0] = 2 if r < 2 else top if r > top else r
+                me[1] = 0 if c < 0 else self.half - 1 if c > self.half - 1 else c
         if self.done:
             return
-        if self.caught["cpu"]:
+        caught = self.caught
+        if caught["cpu"]:
             self._rise("cpu", cpu, 2 if self.draws.random() < p.reel else 1)
         else:
-            near, best, r, c = None, 0, cpu[0], cpu[1]
+            near, best, r, c = None, w + p.height, cpu[0], cpu[1]
             for f in self.fish:   # the nearest fish not on your hook (the first on a tie)
                 if f is not mine:
-                    d = abs(f[0] - r) + abs(f[1] - c)
-                    if near is None or d < best:
+                    d = f[0] - r
+                    e = f[1] - c
+                    d = (d if d >= 0 else -d) + (e if e >= 0 else -e)
+                    if d < best:
                         near, best = f, d
-            dr, dc = pursue(cpu[0], cpu[1], near[0], clamp(near[1], self.half, p.width - 1), p.chance, self.draws)
+            c = near[1]
+            c = self.half if c < self.half else w - 1 if c > w - 1 else c
+            dr, dc = pursue(cpu[0], cpu[1], near[0], c, p.chance, self.draws)
             cpu[0], cpu[1] = cpu[0] + dr, cpu[1] + dc
-        caught, lane = self.caught, self.lane
-        for side, hook in (("you", me), ("cpu", cpu)):
-            f = lane.get(hook[0])
-            if (f and f[1] == hook[1] and f[0] == hook[0] and caught[side] is None
-                    and f is not caught["you"] and f is not caught["cpu"]):
-                caught[side] = f
+        lane = self.lane
+        f = lane.get(me[0])   # a fish on a free hook is hooked (yours first)
+        if f and f[1] == me[1] and f[0] == me[0] and caught["you"] is None and f is not caught["cpu"]:
+            caught["you"] = f
+        f = lane.get(cpu[0])
+        if f and f[1] == cpu[1] and f[0] == cpu[0] and caught["cpu"] is None and f is not caught["you"]:
+            caught["cpu"] = f
 
     def _hooked(self, f: list) -> bool:
         return f is self.caught["you"] or f is self.caught["cpu"]

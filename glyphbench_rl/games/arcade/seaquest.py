@@ -30,6 +30,9 @@ class SeaquestParams(ArenaParams):
         require(self.foes + self.divers <= self.height - 2, "foes", "leave a lane for each diver", self.foes)
 
 
+HUD_TEXT: dict[tuple, str] = {}   # the HUD note by its values
+
+
 class Seaquest(ArenaTask):
     title = "Seaquest"
     rules = ("You are a submarine ({lives_text}) in a {width}x{height} sea; the top row (~) is the "
@@ -110,7 +113,13 @@ class Seaquest(ArenaTask):
         return [(d.r, d.c, DIVER) for d in self.swimmers]
 
     def _extra_hud(self) -> str:
-        return f"{self.air_name} {self.air.left} | Divers {self.carried}/{self.params.divers}"
+        key = (self.air_name, self.air.left, self.carried, self.params.divers)
+        text = HUD_TEXT.get(key)
+        if text is None:   # (made once per value: the values recur from episode to episode)
+            if len(HUD_TEXT) >= 4096:
+                HUD_TEXT.clear()
+            text = HUD_TEXT[key] = f"{self.air_name} {self.air.left} | Divers {self.carried}/{self.params.divers}"
+        return text
 
 
 register_arcade(Seaquest, "seaquest",

@@ -142,7 +142,6 @@ class Shooter(ArcadeTask):
         self.gun = Gun(cooldown=p.cooldown, speed=p.shot_speed, reach=p.height, limit=p.shots)
         self.bombs = Gun(cooldown=0, speed=1, reach=p.height, limit=p.bombs)
         self.pack = Pack()
-        self._me = Body(0, 0)              # the cannon, as _grid draws it
         # _blocks, or None where the game keeps the default (nothing blocks: no call per cell)
         self._blocking = None if type(self)._blocks is Shooter._blocks else self._blocks
 
@@ -185,6 +184,33 @@ class Shooter(ArcadeTask):
                 if lanes is None or b.c in lanes:
                     cells[b.r, b.c] = b
             find = cells.get
+            if blocks is None and lanes is not None:
+                for shot in gun.shots:
+                    if shot.dr != -1:
+                        break
+                else:   # the usual volley: every shot straight up, nothing but enemies stops one
+                    for shot in gun.shots:
+                        r, c, cell = shot.r, shot.c, None
+                        for _ in range(speed):
+                            r -= 1
+                            if r < 0:
+                                cell = r, c
+                                break
+                            foe = find((r, c))
+                            if foe is not None:
+                                cell = r, c
+                                hits.append((foe, cell))
+                                break
+                            shot.r = r
+                        shot.data -= speed
+                        if cell is not None:
+                            shot.alive = False
+                        elif shot.data <= 0:
+                            shot.alive = False
+                        else:
+                            kept.append(shot)
+                    gun.shots = kept
+                    return hits
 
             def stops(r: int, c: int) -> bool:   # remembers the enemy it found for the hit below
                 nonlocal foe
@@ -276,7 +302,7 @@ class Shooter(ArcadeTask):
         for bomb in bombs.shots:
             if speed == 1 and bomb.dr == 1 and not bomb.dc:
                 r, c = bomb.r + 1, bomb.c
-                if stops(r, c):
+                if r >= h or (r == row and c == col) or (blocks is not None and blocks(r, c)):   # stops
                     cell = r, c
                 else:
                     bomb.r, cell = r, None
@@ -316,23 +342,42 @@ class Shooter(ArcadeTask):
         a game that draws other sprites goes through ``ArcadeTask._grid``."""
         if type(self)._sprites is not Shooter._sprites:
             return super()._grid()
-        rows = self._rows()
-        h = len(rows)
+        rows = self._rows() if self._slides else self.still[:]
         self._grids += 1
-        drawn, draw = self._drawn, self._draw
-        me = self._me
-        me.r, me.c, me.glyph = self.row, self.col, self.cannon
-        for group, glyph in ((self.pack.bodies, None), (self.gun.shots, SHOT), (self.bombs.shots, BOMB),
-                             ((me,), None)):
-            for b in group:
-                r, c = b.r, b.c
-                if 0 <= r < h:
-                    line = rows[r]
-                    if 0 <= c < len(line):
-                        g = glyph or b.glyph
-                        if drawn is None:
-                            rows[r] = line[:c] + g + line[c + 1:]
-                        else:
-                            key = (line, c, g)
-                            rows[r] = drawn.get(key) or draw(key)
+        drawn = self._drawn
+        if drawn is None:   # (rows too varied to remember: ArcadeTask._paint draws them afresh)
+            paint = self._paint
+            paint(rows, self.pack.bodies)
+            if self.gun.shots:
+                paint(rows, self.gun.shots, SHOT)
+            if self.bombs.shots:
+                paint(rows, self.bombs.shots, BOMB)
+            self._put(rows, self.row, self.col, self.cannon)
+            return rows
+        inside = range(len(rows))
+        get = drawn.get
+        for b in self.pack.bodies:   # (ArcadeTask._paint written out: this runs every turn)
+            r = b.r
+            if r in inside:
+                line = rows[r]
+                key = (line, b.c, b.glyph)
+                row = get(key)
+                if row is None:
+                    if not 0 <= key[1] < len(line):
+                        continue
+                    row = self._draw(key)
+                rows[r] = row
+        if self.gun.shots:
+            self._paint(rows, self.gun.shots, SHOT)
+        if self.bombs.shots:
+            self._paint(rows, self.bombs.shots, BOMB)
+        r, c = self.row, self.col
+        if r in inside:
+            line = rows[r]
+            key = (line, c, self.cannon)
+            row = get(key)
+            if row is None and 0 <= c < len(line):
+                row = self._draw(key)
+            if row is not None:
+                rows[r] = row
         return rows

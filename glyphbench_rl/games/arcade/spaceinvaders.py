@@ -105,13 +105,31 @@ class SpaceInvaders(ArcadeTask):
             return
         wave, still = self.wave, self.still   # (shields change in place: still stays this list)
 
-        def blocked(r: int, c: int) -> bool:   # off the field or on a shield: stops shots and bombs
-            return not 0 <= r < h or still[r][c] == SHIELD
-
-        if self.gun.shots:
-            for shot, cell in self.gun.advance(lambda r, c: blocked(r, c) or wave.member_at(r, c) is not None):
+        gun = self.gun
+        if gun.shots:   # (Gun.advance and sweep written out for shots flying straight up)
+            speed, kept = gun.speed, []
+            top, left, gap, alive = wave.top, wave.left, wave.gap, wave.alive
+            for shot in gun.shots:
+                r, c, cell = shot.r, shot.c, None
+                for _ in range(speed):
+                    r -= 1
+                    if not 0 <= r < h or still[r][c] == SHIELD:   # off the field or a shield
+                        cell = r, c
+                        break
+                    j, rem = divmod(c - left, gap)
+                    if not rem and (r - top, j) in alive:        # an invader
+                        cell = r, c
+                        break
+                    shot.r = r
+                shot.data -= speed
                 if cell is not None:
+                    shot.alive = False
                     self._strike(cell)
+                elif shot.data <= 0:
+                    shot.alive = False
+                else:
+                    kept.append(shot)
+            gun.shots = kept
         if p.bomb_every and self.wave.alive and self.bombs.ready_at(self.tick):
             front = self.wave.front()
             self.bombs.fire(self.tick, *front[self.draws.below(len(front))], 1, 0, BOMB)
@@ -168,6 +186,17 @@ class SpaceInvaders(ArcadeTask):
             if 0 <= r < len(rows):
                 rows[r] = line if rows[r] == blank else "".join(
                     a if a != EMPTY else b for a, b in zip(line, rows[r]))
+        return rows
+
+    def _grid(self) -> list[str]:
+        """``_sprites`` drawn straight from the bodies, in the same order."""
+        rows = self._rows()
+        self._grids += 1
+        if self.gun.shots:
+            self._paint(rows, self.gun.shots, SHOT)
+        if self.bombs.shots:
+            self._paint(rows, self.bombs.shots, BOMB)
+        self._put(rows, self.params.height - 1, self.col, CANNON)
         return rows
 
     def _sprites(self):

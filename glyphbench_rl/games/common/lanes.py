@@ -90,11 +90,16 @@ class Draws:
         self.stream, self.size, self.block, self.i = stream, block, [], 0
 
     def random(self) -> float:
-        if self.i == len(self.block):
-            self.block, self.i = self.stream.random(self.size).tolist(), 0
-        self.i += 1
-        return self.block[self.i - 1]
+        i = self.i
+        if i == len(self.block):
+            self.block, i = self.stream.random(self.size).tolist(), 0
+        self.i = i + 1
+        return self.block[i]
 
     def below(self, n: int) -> int:
         """A uniform int in [0, n)."""
-        return int(self.random() * n)
+        i = self.i   # (random's body: a draw per call of a few a turn)
+        if i == len(self.block):
+            self.block, i = self.stream.random(self.size).tolist(), 0
+        self.i = i + 1
+        return int(self.block[i] * n)
