@@ -286,14 +286,11 @@ class GlyphTask(gym.Env[str, int]):
                 self._messages.append(f"Reward {reward:+.3g}")
         if self.turn >= self.max_turns and not self._terminated:
             self._truncated = True
-        frame = self._frame = self._build_frame()
-        # (``_info`` and ``_observation`` written out: this runs every turn)
-        info = {"frame": frame, "turn": self.turn, "return": self.episode_return, "won": self.won,
-                "forfeit": forfeit, "clamped": self._clamped}
+        self._frame = self._build_frame()
+        info = self._info(forfeit=forfeit)
         if forfeit:
             info["forfeit_reason"] = reason
-        obs = render(frame, self._legend_text if frame.legend is self._legend else None)
-        return obs, float(reward), self._terminated, self._truncated, info
+        return self._observation(), float(reward), self._terminated, self._truncated, info
 
     def _build_frame(self) -> Frame:
         hud = self._hud()

@@ -366,7 +366,7 @@ def register_arcade(game: type, name: str, *, mini: dict, atari: dict) -> None:
     if lo < -1 - EPS or hi > 1 + EPS:
         raise ValueError(f"miniatari-{name}: its rule pays within [{lo}, {hi}], not [-1, 1]")
     register_variants(game, "MiniAtari", {f"glyphbench/miniatari-{name}-v0": mini})
-    register_variants(game, "Atari", {f"glyphbench/atari-{name}-v0": atari}, tier="extended")
+    register_atari(game, name, **atari)
 
 
 def register_atari(game: type, name: str, **atari) -> None:

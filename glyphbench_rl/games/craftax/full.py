@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from ...core import register_variants
 from ...core.task import NoParams
-from . import rules, view
+from . import view
 from .scenarios import Scenario
 from .state import Settings
 from .tables import (ACHIEVEMENT_REWARD, ADVANCED_WEIGHT, BASIC_WEIGHT, INTERMEDIATE_WEIGHT,
@@ -54,11 +54,8 @@ class CraftaxFull(CraftaxTask):
     def prompt_fields(self) -> dict:
         return {**super().prompt_fields(), "achievements": achievements_text()}
 
-    def _act(self, action: int) -> None:
-        state, tally = self.state, self.tally
-        tally.before_step(state, action)
-        self.reward(rules.step(state, action, self.settings, self.draws, after_mobs=tally.after_mobs))
-        tally.after_step(state, action)
+    def _score(self, state, tally, native: float) -> None:
+        self.reward(native)
         if state.player_health <= 0:
             self.say("You died.")
             self.finish(won=False)

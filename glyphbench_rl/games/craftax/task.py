@@ -235,12 +235,14 @@ class CraftaxTask(GlyphTask):
     def _act(self, action: int) -> None:
         state, tally = self.state, self.tally
         tally.before_step(state, action)
-        rules.step(state, action, self.settings, self.draws, after_mobs=tally.after_mobs)
+        native = rules.step(state, action, self.settings, self.draws, after_mobs=tally.after_mobs)
         tally.after_step(state, action)
         self.scenario.run_events(self, state, tally)
-        self._score(state, tally)
+        self._score(state, tally, native)
 
-    def _score(self, state, tally: Tally) -> None:
+    def _score(self, state, tally: Tally, native: float) -> None:
+        """Pay the scenario's terms (``native``, upstream's reward for the step, is not paid
+        here) and end the episode on death or success."""
         finished = False
         for entry in self._open:
             term, test, paid = entry
