@@ -1,5 +1,3 @@
-import dataclasses
-
 import numpy as np
 import pytest
 
@@ -50,8 +48,8 @@ def test_axes_rendering():
 
 
 def test_text_above_and_beside_the_board():
-    f = dataclasses.replace(build_frame(["●·", "··"], {"●": "lit", "·": "off"}, "Step 0/9", axes=True),
-                            above=("1", "12"), beside=("1", ""))
+    f = build_frame(["●·", "··"], {"●": "lit", "·": "off"}, "Step 0/9", axes=True)._replace(
+        above=("1", "12"), beside=("1", ""))
     assert f.render().splitlines()[1:6] == ["  1", "  12", "  AB", "1 ●· 1", "2 ··"]
     assert check_frame(f) == []
     assert "2 beside notes for 1 rows" in check_frame(Frame(("a",), (("a", "x"),), "S", beside=("1", "2")))

@@ -17,15 +17,14 @@ character per column) and ``beside`` (text right of each row), also outside ``Fr
 
 from __future__ import annotations
 
-import dataclasses
 import unicodedata
-from dataclasses import dataclass
 from functools import lru_cache
-from typing import Mapping, Sequence
+from typing import Mapping, NamedTuple, Sequence
 
 
-@dataclass(frozen=True, slots=True)
-class Frame:
+class Frame(NamedTuple):
+    """One turn's observation. A named tuple: a step makes one, and a tuple is made in one C
+    call (``new_frame``), several times faster than a frozen dataclass's ``__init__``."""
     grid: tuple[str, ...]
     legend: tuple[tuple[str, str], ...]
     hud: str
@@ -41,29 +40,19 @@ class Frame:
         return dict(self.legend)
 
 
+_tuple_new = tuple.__new__
+
+
 def new_frame(grid: tuple[str, ...], legend: tuple[tuple[str, str], ...], hud: str, message: str,
               axes: bool) -> Frame:
-    """``Frame(grid, legend, hud, message, axes)`` without the frozen dataclass's ``__init__``
-    (which sets each field through ``object.__setattr__``): a third of the cost, for the one
-    Frame every step makes. The fields are set through their slots, so the object is the same;
-    ``above`` and ``beside`` get their default, empty (checked against Frame's fields below)."""
-    frame = _new(Frame)
-    _set_grid(frame, grid)
-    _set_legend(frame, legend)
-    _set_hud(frame, hud)
-    _set_message(frame, message)
-    _set_axes(frame, axes)
-    _set_above(frame, ())
-    _set_beside(frame, ())
-    return frame
+    """``Frame(grid, legend, hud, message, axes)`` made by ``tuple.__new__`` directly (the
+    named tuple's own ``__new__`` is a Python function around that call): the one Frame every
+    step makes. ``above`` and ``beside`` get their default, empty (checked below)."""
+    return _tuple_new(Frame, (grid, legend, hud, message, axes, (), ()))
 
 
-_new = object.__new__
-_NAMED = ("grid", "legend", "hud", "message", "axes", "above", "beside")
-_set_grid, _set_legend, _set_hud, _set_message, _set_axes, _set_above, _set_beside = (
-    Frame.__dict__[f].__set__ for f in _NAMED)
-assert [f.name for f in dataclasses.fields(Frame)] == list(_NAMED) and all(
-    f.default == () for f in dataclasses.fields(Frame)[5:]), "new_frame sets every Frame field"
+assert Frame._fields[5:] == ("above", "beside") and Frame._field_defaults["above"] == () == \
+    Frame._field_defaults["beside"], "new_frame sets every Frame field"
 
 
 def build_frame(grid: Sequence[str], vocab: Mapping[str, str], hud: str, message: str = "",
@@ -128,30 +117,38 @@ class Legends:
     are made once (``legend``). Counting glyphs over the whole grid each turn cost a few times
     more. One Legends serves every task with the same entries; being a cache of facts about
     strings, it is shared, not copied, by ``copy`` and ``deepcopy``, and pickles empty."""
-    __slots__ = ("entries", "rows", "legends")
+    __slots__ = ("entries", "rows", "legends", "_bit")
 
     def __init__(self, entries: tuple[tuple[str, str], ...]) -> None:
         self.entries = entries
         self.rows: dict[str, int] = {}
         self.legends: dict[int, tuple[tuple[tuple[str, str], ...], str]] = {}
+        self._bit = {g: 1 << i for i, (g, _) in enumerate(entries)}
 
     def mask(self, row: str) -> int:
         """The bits of the entries whose glyph is in ``row`` (remembered); RuntimeError when
-        ``row`` holds a character no entry names."""
-        bits = counted = 0
-        size = len(row)
-        for i, (g, _) in enumerate(self.entries):
-            if g in row:
-                bits |= 1 << i
-                counted += row.count(g)
-                if counted == size:
-                    break
-        if counted != size:
-            missing = "".join(sorted(set(row).difference(g for g, _ in self.entries)))
-            raise RuntimeError(f"glyphs {missing!r} are on the grid but have no legend entry")
+        ``row`` holds a character no entry names. (Found from the row's distinct characters:
+        a row is short, a vocabulary can be long.)"""
+        bit = self._bit
+        bits = 0
+        for ch in set(row):
+            b = bit.get(ch)
+            if b is None:
+                missing = "".join(sorted(set(row).difference(bit)))
+                raise RuntimeError(f"glyphs {missing!r} are on the grid but have no legend entry")
+            bits |= b
         if len(self.rows) >= ROW_MEMO:
             self.rows.clear()
         self.rows[row] = bits
+        return bits
+
+    def grid_bits(self, grid: Sequence[str]) -> int:
+        """The union of the rows' bits (``mask`` for a row not seen yet)."""
+        known = self.rows
+        bits = 0
+        for row in grid:
+            b = known.get(row)
+            bits |= self.mask(row) if b is None else b
         return bits
 
     def legend(self, bits: int) -> tuple[tuple[tuple[str, str], ...], str]:

@@ -29,9 +29,11 @@ import gymnasium as gym
 import numpy as np
 
 from .actions import ActionSet
-from .frame import Frame, legend_line, legends_for, new_frame, render, vocab_entries
+from .frame import Frame, legend_line, legends_for, render, vocab_entries
 from .params import ParamError, check_params
 from .seeding import MAX_SEED, check_seed, derive
+
+_tuple_new = tuple.__new__   # (a Frame made in one C call: see frame.new_frame)
 
 STANDARD_TURN_CAP = 512
 _RETURN_EPS = 1e-9
@@ -67,6 +69,12 @@ class GlyphTask(gym.Env[str, int]):
     extra_chars: ClassVar[str] = ""            # non-ASCII characters used in HUD or messages
     axes: ClassVar[bool] = False
     default_max_turns: ClassVar[int] = 100
+
+    _plain_vocab: ClassVar[bool] = True   # the class keeps GlyphTask.vocab (its glyphs)
+
+    def __init_subclass__(cls, **kwargs) -> None:
+        super().__init_subclass__(**kwargs)
+        cls._plain_vocab = cls.vocab is GlyphTask.vocab
 
     def __init__(self, *, max_turns: int | None = None, tier: str = "standard",
                  task_id: str | None = None, render_mode: str | None = None, **params: Any) -> None:
@@ -258,6 +266,7 @@ class GlyphTask(gym.Env[str, int]):
 
     def _reset_counters(self) -> None:
         self.turn = 0
+        self._of_turns = f"/{self.max_turns}"     # (the HUD's "Step t/N" tail)
         self.episode_return = 0.0
         self.won: bool | None = None
         self._terminated = False
@@ -286,36 +295,37 @@ class GlyphTask(gym.Env[str, int]):
                 self._messages.append(f"Reward {reward:+.3g}")
         if self.turn >= self.max_turns and not self._terminated:
             self._truncated = True
-        self._frame = self._build_frame()
-        info = self._info(forfeit=forfeit)
+        frame = self._frame = self._build_frame()
+        # (``_info`` and the render written out: this runs every step)
+        info = {"frame": frame, "turn": self.turn, "return": self.episode_return, "won": self.won,
+                "forfeit": forfeit, "clamped": self._clamped}
         if forfeit:
             info["forfeit_reason"] = reason
-        return self._observation(), float(reward), self._terminated, self._truncated, info
+        return (render(frame, self._legend_text if frame.legend is self._legend else None),
+                float(reward), self._terminated, self._truncated, info)
 
     def _build_frame(self) -> Frame:
         hud = self._hud()
-        hud = f"Step {self.turn}/{self.max_turns} | {hud}" if hud else f"Step {self.turn}/{self.max_turns}"
+        hud = f"Step {self.turn}{self._of_turns} | {hud}" if hud else f"Step {self.turn}{self._of_turns}"
         grid = tuple(self._grid())
-        vocab = self.vocab()
+        vocab = self.glyphs if self._plain_vocab else self.vocab()
         if vocab is not self._legend_vocab:
             self._legend_vocab, self._legend_memo = vocab, legends_for(vocab_entries(vocab))
             self._legend_bits = -1
         memo = self._legend_memo
         known = memo.rows
         bits = 0
-        for row in grid:   # (the glyphs of a row seen before are remembered: most rows repeat)
-            b = known.get(row)
-            bits |= memo.mask(row) if b is None else b
+        try:   # (the glyphs of a row seen before are remembered: most rows repeat)
+            for row in grid:
+                bits |= known[row]
+        except KeyError:
+            bits = memo.grid_bits(grid)
         if bits != self._legend_bits:
             self._legend_bits = bits
             self._legend, self._legend_text = memo.legend(bits)
         messages = self._messages
-        return new_frame(grid, self._legend, hud, " ".join(messages) if messages else "", self.axes)
-
-    def _observation(self) -> str:
-        """The current frame's text (its legend line kept from the frame before when unchanged)."""
-        frame = self._frame
-        return render(frame, self._legend_text if frame.legend is self._legend else None)
+        return _tuple_new(Frame, (grid, self._legend, hud, " ".join(messages) if messages else "",
+                                  self.axes, (), ()))
 
     def _info(self, *, forfeit: bool) -> dict[str, Any]:
         return {"frame": self._frame, "turn": self.turn, "return": self.episode_return,
