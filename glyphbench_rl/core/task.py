@@ -71,10 +71,12 @@ class GlyphTask(gym.Env[str, int]):
     default_max_turns: ClassVar[int] = 100
 
     _plain_vocab: ClassVar[bool] = True   # the class keeps GlyphTask.vocab (its glyphs)
+    _plain_frame: ClassVar[bool] = True   # it keeps GlyphTask._build_frame, with no axes
 
     def __init_subclass__(cls, **kwargs) -> None:
         super().__init_subclass__(**kwargs)
         cls._plain_vocab = cls.vocab is GlyphTask.vocab
+        cls._plain_frame = cls._build_frame is GlyphTask._build_frame and not cls.axes
 
     def __init__(self, *, max_turns: int | None = None, tier: str = "standard",
                  task_id: str | None = None, render_mode: str | None = None, **params: Any) -> None:
@@ -211,14 +213,14 @@ class GlyphTask(gym.Env[str, int]):
         self._step_reward = 0.0
         self._messages = []
         self._act(index)
-        return self._finish_step(self._step_reward, forfeit=False)
+        return self._finish_step(self._step_reward, False, None)
 
     def forfeit(self, reason: str | None = None) -> tuple[str, float, bool, bool, dict]:
         """A turn without a valid action: the world is unchanged, the turn counter advances."""
         self._check_running()
         self.turn += 1
         self._messages = ["No valid action: nothing happened."]
-        return self._finish_step(0.0, forfeit=True, reason=reason)
+        return self._finish_step(0.0, True, reason)
 
     def render(self) -> str | None:
         if self.render_mode == "ansi":
@@ -283,7 +285,7 @@ class GlyphTask(gym.Env[str, int]):
             raise EpisodeEnded(f"{self.task_id}: the episode already ended ({how} at step "
                                f"{self.turn}/{self.max_turns}); call reset() to start another")
 
-    def _finish_step(self, reward: float, *, forfeit: bool, reason: str | None = None):
+    def _finish_step(self, reward: float, forfeit: bool, reason: str | None):
         if reward:   # (most turns pay nothing: the return, already in bounds, stays)
             if self.tier == "standard":
                 total = self.episode_return + reward
@@ -296,13 +298,15 @@ class GlyphTask(gym.Env[str, int]):
         if self.turn >= self.max_turns and not self._terminated:
             self._truncated = True
         frame = self._frame = self._build_frame()
-        # (``_info`` and the render written out: this runs every step)
+        # (``_info`` written out: this runs every step; the base ``_build_frame`` has just
+        # rendered its frame, a game's own ``_build_frame`` has not)
         info = {"frame": frame, "turn": self.turn, "return": self.episode_return, "won": self.won,
                 "forfeit": forfeit, "clamped": self._clamped}
         if forfeit:
             info["forfeit_reason"] = reason
-        return (render(frame, self._legend_text if frame.legend is self._legend else None),
-                float(reward), self._terminated, self._truncated, info)
+        text = self._obs_text if self._plain_frame else render(
+            frame, self._legend_text if frame.legend is self._legend else None)
+        return text, float(reward), self._terminated, self._truncated, info
 
     def _build_frame(self) -> Frame:
         hud = self._hud()
@@ -324,8 +328,11 @@ class GlyphTask(gym.Env[str, int]):
             self._legend_bits = bits
             self._legend, self._legend_text = memo.legend(bits)
         messages = self._messages
-        return _tuple_new(Frame, (grid, self._legend, hud, " ".join(messages) if messages else "",
-                                  self.axes, (), ()))
+        message = " ".join(messages) if messages else ""
+        if self._plain_frame:   # the observation text too (``render``'s, written out)
+            self._obs_text = "\n".join((hud, *grid, self._legend_text, message) if message
+                                   else (hud, *grid, self._legend_text))
+        return _tuple_new(Frame, (grid, self._legend, hud, message, self.axes, (), ()))
 
     def _info(self, *, forfeit: bool) -> dict[str, Any]:
         return {"frame": self._frame, "turn": self.turn, "return": self.episode_return,
