@@ -150,7 +150,7 @@ class GlyphTask(gym.Env[str, int]):
 
     def finish(self, won: bool | None = None) -> None:
         """End the episode this step (terminated); ``won`` is reported in info."""
-        self._terminated = True
+        self._terminated = self.done = True
         self.won = won
 
     def say(self, text: str) -> None:
@@ -205,7 +205,7 @@ class GlyphTask(gym.Env[str, int]):
         return self._frame.render(), self._info(forfeit=False) | {"seed": self.seed_value}
 
     def step(self, action: int | str) -> tuple[str, float, bool, bool, dict]:
-        if self._terminated or self._truncated or not self._started:
+        if self.done or not self._started:
             self._check_running()
         index = (action if type(action) is int and 0 <= action < self._n_actions   # the usual case
                  else self.actions.index(action))
@@ -228,9 +228,7 @@ class GlyphTask(gym.Env[str, int]):
         return None
 
     # -- state ------------------------------------------------------------------------------------------
-    @property
-    def done(self) -> bool:
-        return self._terminated or self._truncated
+    done: bool    # the episode has terminated or been truncated (set by finish() and the turn cap)
 
     @property
     def frame(self) -> Frame:
@@ -273,6 +271,8 @@ class GlyphTask(gym.Env[str, int]):
         self.won: bool | None = None
         self._terminated = False
         self._truncated = False
+        # terminated or truncated: a plain attribute, not a property (games read it often)
+        self.done = False
         self._step_reward = 0.0
         self._messages: list[str] = []
         self._clamped = False
@@ -296,7 +296,7 @@ class GlyphTask(gym.Env[str, int]):
             if abs(reward) > _RETURN_EPS:       # every paying turn says so, once, for every game
                 self._messages.append(f"Reward {reward:+.3g}")
         if self.turn >= self.max_turns and not self._terminated:
-            self._truncated = True
+            self._truncated = self.done = True
         frame = self._frame = self._build_frame()
         # (``_info`` written out: this runs every step; the base ``_build_frame`` has just
         # rendered its frame, a game's own ``_build_frame`` has not)
