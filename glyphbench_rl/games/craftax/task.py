@@ -123,15 +123,13 @@ class Tally:
         return get(self)
 
     def before_step(self, state, action: int) -> None:
-        """Remember what a step can change that the tally counts by difference."""
+        """Remember what a step can change that the tally counts by difference. (The mob masks
+        are kept as bytes, whole: a copy each, and ``after_mobs`` looks at slots only when one
+        changed, which few turns do.)"""
         self._vitals = (state.player_food, state.player_drink, state.player_mana)
-        level = self._level = state.player_level
-        live = self._live = []
-        for k, mobs in enumerate((state.passive_mobs, state.melee_mobs, state.ranged_mobs)):
-            mask = mobs.mask[level].tolist()
-            if True in mask:
-                types = mobs.type_id[level].tolist()
-                live += [(k, i, types[i]) for i, on in enumerate(mask) if on]
+        self._level = state.player_level
+        self._masks = (state.passive_mobs.mask.tobytes(), state.melee_mobs.mask.tobytes(),
+                       state.ranged_mobs.mask.tobytes())
         if action in PLACED:
             self._ahead = self._facing_block(state)
         elif action == Action.PLACE_TORCH:
@@ -149,16 +147,25 @@ class Tally:
     def after_mobs(self, state) -> None:
         """Called by the step after the mobs moved and before any spawn: a slot live before the
         step whose mob is now gone with no health left was a kill (a despawned mob keeps its
-        health; spawning could reuse the slot, which is why this runs before it)."""
-        level = self._level
-        for k, i, type_id in self._live:
-            mobs = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)[k]
-            if not mobs.mask.item(level, i) and mobs.health.item(level, i) <= 0:
-                name = MOB_NAMES[k][type_id]
-                self.kills[name] = self.kills.get(name, 0) + 1
-                self.kills["all"] += 1
-                if k:
-                    self.kills["monsters"] += 1
+        health; spawning could reuse the slot, which is why this runs before it). Until the
+        spawn no slot comes alive and no type changes, so the slots to look at are those whose
+        mask went from live to dead, and the type read now is the one before."""
+        for k, (mobs, before) in enumerate(zip((state.passive_mobs, state.melee_mobs,
+                                                state.ranged_mobs), self._masks)):
+            mask = mobs.mask
+            if mask.tobytes() != before:
+                level = self._level
+                was = np.frombuffer(before, bool).reshape(mask.shape)[level].tolist()
+                for i, (on, now) in enumerate(zip(was, mask[level].tolist())):
+                    if on and not now and mobs.health.item(level, i) <= 0:
+                        self._kill(k, mobs.type_id.item(level, i))
+
+    def _kill(self, kind: int, type_id: int) -> None:
+        name = MOB_NAMES[kind][type_id]
+        self.kills[name] = self.kills.get(name, 0) + 1
+        self.kills["all"] += 1
+        if kind:
+            self.kills["monsters"] += 1
 
     def after_step(self, state, action: int) -> None:
         counts = self.counts
