@@ -47,6 +47,8 @@ _DEEP_THING = 5   # the ranged type that spawns in water ("hack for deep thing" 
 # Upstream's DIRECTIONS[1:5]: left, right, up, down as (row, col) steps.
 _STEPS = ((0, -1), (0, 1), (-1, 0), (1, 0))
 _ARROWS = (int(ProjectileType.ARROW), int(ProjectileType.ARROW2))
+# the classes as plain ints: an enum member's lookup costs as much as a line of arithmetic
+_PASSIVE, _MELEE, _RANGED = int(MobType.PASSIVE), int(MobType.MELEE), int(MobType.RANGED)
 _SPELLS = (int(ProjectileType.FIREBALL), int(ProjectileType.ICEBALL))
 
 
@@ -255,12 +257,12 @@ def _move_melee(turn: _Turn, slot: int, row: int, col: int, type_id: int, cooldo
         step_row, step_col = _STEPS[draws.below(4)]
     new_row, new_col = row, col
     if distance == 1 and cooldown <= 0:
-        hurt_player(turn.state, MOB_TYPE_DAMAGE_MAPPING[type_id][MobType.MELEE], melee=True)
+        hurt_player(turn.state, MOB_TYPE_DAMAGE_MAPPING[type_id][_MELEE], melee=True)
         cooldown = MELEE_ATTACK_COOLDOWN
     else:
         cooldown -= 1
         if turn.can_enter(row + step_row, col + step_col,
-                          MOB_TYPE_COLLISION_MAPPING[type_id][MobType.MELEE]):
+                          MOB_TYPE_COLLISION_MAPPING[type_id][_MELEE]):
             new_row, new_col = row + step_row, col + step_col
     turn.relocate(turn.state.melee_mobs, slot, row, col, new_row, new_col,
                   turn.stays(distance, True))
@@ -274,7 +276,7 @@ def _move_passive(turn: _Turn, slot: int, row: int, col: int, type_id: int) -> N
     if choice < 4:
         step_row, step_col = _STEPS[choice]
         if turn.can_enter(row + step_row, col + step_col,
-                          MOB_TYPE_COLLISION_MAPPING[type_id][MobType.PASSIVE]):
+                          MOB_TYPE_COLLISION_MAPPING[type_id][_PASSIVE]):
             new_row, new_col = row + step_row, col + step_col
     distance = abs(turn.p_row - row) + abs(turn.p_col - col)
     turn.relocate(turn.state.passive_mobs, slot, row, col, new_row, new_col,
@@ -296,7 +298,7 @@ def _move_ranged(turn: _Turn, slot: int, row: int, col: int, type_id: int, coold
     else:
         step_row, step_col = _STEPS[draws.below(4)]
         new_row, new_col = row + step_row, col + step_col
-    can_move = turn.can_enter(new_row, new_col, MOB_TYPE_COLLISION_MAPPING[type_id][MobType.RANGED])
+    can_move = turn.can_enter(new_row, new_col, MOB_TYPE_COLLISION_MAPPING[type_id][_RANGED])
     if cooldown <= 0 and (4 <= distance <= 5 or (too_close and not can_move)):
         _shoot(turn, row, col, toward, RANGED_MOB_TYPE_TO_PROJECTILE_TYPE_MAPPING[type_id])
         cooldown = RANGED_ATTACK_COOLDOWN

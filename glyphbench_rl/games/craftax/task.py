@@ -50,8 +50,9 @@ ITEMS = ("wood", "stone", "coal", "iron", "diamond", "sapling", "ruby", "sapphir
          "torches", "books", "pickaxe", "sword", "bow")
 PLACED = {Action.PLACE_STONE: BlockType.STONE, Action.PLACE_TABLE: BlockType.CRAFTING_TABLE,
           Action.PLACE_FURNACE: BlockType.FURNACE, Action.PLACE_PLANT: BlockType.PLANT}
-CASTS = (Action.CAST_FIREBALL, Action.CAST_ICEBALL)
-DRINKS = tuple(range(Action.DRINK_POTION_RED, Action.DRINK_POTION_YELLOW + 1))
+CASTS = frozenset(int(a) for a in (Action.CAST_FIREBALL, Action.CAST_ICEBALL))
+DRINKS = frozenset(range(Action.DRINK_POTION_RED, Action.DRINK_POTION_YELLOW + 1))
+_PLACE_TORCH, _RED = int(Action.PLACE_TORCH), int(Action.DRINK_POTION_RED)   # (ints: read each step)
 POTION_EFFECTS = ("heal", "harm", "mana", "drain", "energy", "tire")   # upstream's effect order
 
 
@@ -132,7 +133,7 @@ class Tally:
                        state.ranged_mobs.mask.tobytes())
         if action in PLACED:
             self._ahead = self._facing_block(state)
-        elif action == Action.PLACE_TORCH:
+        elif action == _PLACE_TORCH:
             self._torches = state.inventory.torches
         elif action in DRINKS:
             self._potions = state.inventory.potions.copy()
@@ -150,14 +151,16 @@ class Tally:
         health; spawning could reuse the slot, which is why this runs before it). Until the
         spawn no slot comes alive and no type changes, so the slots to look at are those whose
         mask went from live to dead, and the type read now is the one before."""
-        for k, (mobs, before) in enumerate(zip((state.passive_mobs, state.melee_mobs,
-                                                state.ranged_mobs), self._masks)):
-            mask = mobs.mask
-            if mask.tobytes() != before:
-                level = self._level
-                was = np.frombuffer(before, bool).reshape(mask.shape)[level].tolist()
-                for i, (on, now) in enumerate(zip(was, mask[level].tolist())):
-                    if on and not now and mobs.health.item(level, i) <= 0:
+        groups = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)
+        masks = (groups[0].mask.tobytes(), groups[1].mask.tobytes(), groups[2].mask.tobytes())
+        if masks == self._masks:
+            return
+        level = self._level
+        for k, (mobs, before, now) in enumerate(zip(groups, self._masks, masks)):
+            if now != before:
+                was = np.frombuffer(before, bool).reshape(mobs.mask.shape)[level].tolist()
+                for i, (on, alive) in enumerate(zip(was, mobs.mask[level].tolist())):
+                    if on and not alive and mobs.health.item(level, i) <= 0:
                         self._kill(k, mobs.type_id.item(level, i))
 
     def _kill(self, kind: int, type_id: int) -> None:
@@ -187,11 +190,11 @@ class Tally:
             block = PLACED[action]
             if self._ahead != block and self._facing_block(state) == block:
                 self.placed[block.name.lower()] += 1
-        elif action == Action.PLACE_TORCH:
+        elif action == _PLACE_TORCH:
             if state.inventory.torches < self._torches:
                 self.placed["torch"] += 1
         elif action in DRINKS:
-            colour = action - Action.DRINK_POTION_RED
+            colour = action - _RED
             if state.inventory.potions[colour] < self._potions[colour]:
                 self.potions[POTION_EFFECTS[int(state.potion_mapping[colour])]] += 1
         if state.player_level == 0 and state.light_level < NIGHT_LIGHT:
