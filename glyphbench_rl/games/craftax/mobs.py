@@ -460,15 +460,19 @@ def update(state: State, settings: Settings, draws) -> None:
 # ---------------------------------------------------------------------------------------------
 # Spawning (game_logic.spawn_mobs)
 
-_OFFSETS: dict[int, tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
+_RINGS: dict[tuple[int, int], np.ndarray] = {}
 
 
-def _window(radius: int):
-    """(row offsets, col offsets, squared distances) of the square of half-side ``radius``."""
-    if radius not in _OFFSETS:
+def _ring(near: int, far: int) -> np.ndarray:
+    """The cells of a square around its centre (half-side ceil(sqrt(far)) + 1) whose squared
+    Euclidean distance d2 from it has near < d2 < far; made once per (near, far)."""
+    ring = _RINGS.get((near, far))
+    if ring is None:
+        radius = int(np.ceil(np.sqrt(far))) + 1
         d = np.arange(-radius, radius + 1)
-        _OFFSETS[radius] = (d, d, d[:, None] ** 2 + d[None, :] ** 2)
-    return _OFFSETS[radius]
+        d2 = d[:, None] ** 2 + d[None, :] ** 2
+        ring = _RINGS[near, far] = (d2 > near) & (d2 < far)
+    return ring
 
 
 def _spawn_cell(state: State, allowed: np.ndarray, near: int, far: int, draws):
@@ -476,15 +480,15 @@ def _spawn_cell(state: State, allowed: np.ndarray, near: int, far: int, draws):
     squared distance d2 from the player with near < d2 < far; None if there is none. Cells
     count in row-major order (upstream draws over the flattened map)."""
     level = state.player_level
-    radius = int(np.ceil(np.sqrt(far))) + 1
-    d, _, d2 = _window(radius)
-    p_row, p_col = int(state.player_position[0]), int(state.player_position[1])
+    ring = _ring(near, far)
+    radius = ring.shape[0] // 2
+    p_row, p_col = state.player_position.tolist()
     rows, cols = state.map.shape[1:]
     r0, r1 = max(0, p_row - radius), min(rows, p_row + radius + 1)
     c0, c1 = max(0, p_col - radius), min(cols, p_col + radius + 1)
-    window_d2 = d2[r0 - p_row + radius:r1 - p_row + radius, c0 - p_col + radius:c1 - p_col + radius]
-    ok = allowed[state.map[level, r0:r1, c0:c1]] & ~state.mob_map[level, r0:r1, c0:c1]
-    ok &= (window_d2 > near) & (window_d2 < far)
+    ok = allowed[state.map[level, r0:r1, c0:c1]]
+    ok &= ring[r0 - p_row + radius:r1 - p_row + radius, c0 - p_col + radius:c1 - p_col + radius]
+    np.greater(ok, state.mob_map[level, r0:r1, c0:c1], out=ok)      # (and no mob there)
     cells = np.flatnonzero(ok)
     if cells.size == 0:
         return None
@@ -551,7 +555,7 @@ def spawn(state: State, settings: Settings, draws) -> None:
     chances = FLOOR_MOB_SPAWN_CHANCE[level]
     boss = level == BOSS_LEVEL
     far = settings.mob_despawn_distance ** 2
-    coeff = 3.0 if state.monsters_killed[level] < MONSTERS_KILLED_TO_CLEAR_LEVEL else 1.0
+    coeff = 3.0 if state.monsters_killed.item(level) < MONSTERS_KILLED_TO_CLEAR_LEVEL else 1.0
     if boss:
         coeff *= 1000.0 if state.boss_timesteps_to_spawn_this_round >= 1 else 0.0
 

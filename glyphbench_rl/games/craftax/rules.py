@@ -74,10 +74,10 @@ def in_bounds(state: State, r: int, c: int) -> bool:
 
 def is_in_mob(state: State, level: int, r: int, c: int) -> bool:
     """A mob stands at (r, c) of ``level``, or the player does (upstream is_in_mob)."""
-    if state.mob_map[level, r, c]:
+    if state.mob_map.item(level, r, c):
         return True
-    pos = state.player_position
-    return level == state.player_level and r == pos[0] and c == pos[1]
+    p_row, p_col = state.player_position.tolist()
+    return level == state.player_level and r == p_row and c == p_col
 
 
 def is_free(state: State, level: int, pos) -> bool:
@@ -112,12 +112,13 @@ def unlock(state: State, achievement: int) -> None:
 
 def facing(state: State) -> tuple[int, int]:
     dr, dc = _DIR.get(state.player_direction, (0, 0))
-    return int(state.player_position[0]) + dr, int(state.player_position[1]) + dc
+    row, col = state.player_position.tolist()
+    return row + dr, col + dc
 
 
 def is_near_block(state: State, block: int) -> bool:
     """``block`` is in one of the eight cells around the player (crafting stations)."""
-    level, r, c = state.player_level, int(state.player_position[0]), int(state.player_position[1])
+    level, (r, c) = state.player_level, state.player_position.tolist()
     rows, cols = state.map.shape[1:]
     m = state.map
     for dr, dc in CLOSE_BLOCKS:
@@ -138,7 +139,7 @@ def change_floor(state: State, action: int, settings) -> None:
     achievement is missing unlocks it and gives 1 XP (whatever the action)."""
     level = state.player_level
     if action == _DESCEND or action == _ASCEND:
-        r, c = int(state.player_position[0]), int(state.player_position[1])
+        r, c = state.player_position.tolist()
         item = state.item_map.item(level, r, c)
         if action == _DESCEND and level < NUM_LEVELS - 1 and (settings.god_mode or (
                 item == ItemType.LADDER_DOWN
@@ -442,7 +443,8 @@ def move(state: State, action: int, settings) -> None:
     """Face the move's direction; step there if the player can enter the cell (not solid, no
     mob, not water or lava), or always in god mode."""
     dr, dc = MOVES[action]
-    r, c = int(state.player_position[0]) + dr, int(state.player_position[1]) + dc
+    row, col = state.player_position.tolist()
+    r, c = row + dr, col + dc
     if settings.god_mode or player_can_enter(state, r, c):
         state.player_position[0], state.player_position[1] = r, c
     state.player_direction = action

@@ -143,7 +143,7 @@ class Tally:
         r, c = rules.facing(state)
         if not rules.in_bounds(state, r, c):
             return -1
-        return int(state.map[state.player_level, r, c])
+        return state.map.item(state.player_level, r, c)
 
     def after_mobs(self, state) -> None:
         """Called by the step after the mobs moved and before any spawn: a slot live before the
