@@ -68,10 +68,19 @@ class Term:
     per: int = 1
 
     def units(self, tally, fn) -> int:
-        value = fn(tally)
-        if isinstance(value, bool):
-            return int(value)
-        return min(int(value) // self.per, self.cap)
+        """The units ``fn`` (the test compiled by ``parse_test``) gives now."""
+        return self.counter(fn)(tally)
+
+    def counter(self, fn) -> Callable:
+        """``units`` as one function of the tally, made once (the task pays every step)."""
+        per, cap = self.per, self.cap
+
+        def units(tally) -> int:
+            value = fn(tally)
+            if isinstance(value, bool):
+                return int(value)
+            return min(int(value) // per, cap)
+        return units
 
     @property
     def counts(self) -> bool:

@@ -236,8 +236,10 @@ class CraftaxTask(GlyphTask):
         self.state, self.ctx = self.scenario.build(rng)
         self.play_rng = self.stream("scenario")
         self.tally = Tally(self.state)
-        # (term, its test compiled, units paid); a term drops out once it can pay no more
-        self._open = [[term, parse_test(term.test, self.tally), 0] for term in self.scenario.terms]
+        # (term, its units as a function of the tally, units paid); a term drops out once it
+        # can pay no more
+        self._open = [[term, term.counter(parse_test(term.test, self.tally)), 0]
+                      for term in self.scenario.terms]
         self._success = parse_test(self.scenario.success, self.tally) if self.scenario.success else None
         self.events = [(e, parse_test(e.when, self.tally)) for e in self.scenario.events]
         self.fired: set[int] = set()             # scenario events already run
@@ -255,8 +257,8 @@ class CraftaxTask(GlyphTask):
         here) and end the episode on death or success."""
         finished = False
         for entry in self._open:
-            term, test, paid = entry
-            units = term.units(tally, test)
+            term, count, paid = entry
+            units = count(tally)
             if units > paid:
                 entry[2] = units
                 self.reward(term.unit * (units - paid))
