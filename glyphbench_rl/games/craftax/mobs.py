@@ -224,14 +224,13 @@ class _Turn:
             return (d_row > 0) - (d_row < 0), 0
         return 0, (d_col > 0) - (d_col < 0)
 
-    def stays(self, distance: int, monster: bool) -> bool:
-        return (self.despawn is None or distance < self.despawn
-                or (monster and self.boss))
-
     def relocate(self, group: Mobs, slot: int, row: int, col: int, new_row: int, new_col: int,
-                 alive: bool) -> None:
+                 distance: int, monster: bool) -> None:
         """Write a mob's new cell (if it moved) and life, keeping the mob map exact: the cell
-        left is cleared, the cell stood on set (as upstream, even when it stayed)."""
+        left is cleared, the cell stood on set (as upstream, even when it stayed). A mob whose
+        ``distance`` from the player (before it moved) is beyond the despawn distance vanishes
+        (a monster on the boss level stays)."""
+        alive = (self.despawn is None or distance < self.despawn or (monster and self.boss))
         occupied = self.occupied
         if new_row != row or new_col != col:
             position = group.position
@@ -264,8 +263,7 @@ def _move_melee(turn: _Turn, slot: int, row: int, col: int, type_id: int, cooldo
         if turn.can_enter(row + step_row, col + step_col,
                           MOB_TYPE_COLLISION_MAPPING[type_id][_MELEE]):
             new_row, new_col = row + step_row, col + step_col
-    turn.relocate(turn.state.melee_mobs, slot, row, col, new_row, new_col,
-                  turn.stays(distance, True))
+    turn.relocate(turn.state.melee_mobs, slot, row, col, new_row, new_col, distance, True)
     return cooldown
 
 
@@ -279,8 +277,7 @@ def _move_passive(turn: _Turn, slot: int, row: int, col: int, type_id: int) -> N
                           MOB_TYPE_COLLISION_MAPPING[type_id][_PASSIVE]):
             new_row, new_col = row + step_row, col + step_col
     distance = abs(turn.p_row - row) + abs(turn.p_col - col)
-    turn.relocate(turn.state.passive_mobs, slot, row, col, new_row, new_col,
-                  turn.stays(distance, False))
+    turn.relocate(turn.state.passive_mobs, slot, row, col, new_row, new_col, distance, False)
 
 
 def _move_ranged(turn: _Turn, slot: int, row: int, col: int, type_id: int, cooldown: int) -> int:
@@ -307,8 +304,7 @@ def _move_ranged(turn: _Turn, slot: int, row: int, col: int, type_id: int, coold
         cooldown -= 1
         if not can_move:
             new_row, new_col = row, col
-    turn.relocate(turn.state.ranged_mobs, slot, row, col, new_row, new_col,
-                  turn.stays(distance, True))
+    turn.relocate(turn.state.ranged_mobs, slot, row, col, new_row, new_col, distance, True)
     return cooldown
 
 
