@@ -47,6 +47,8 @@ _DEEP_THING = 5   # the ranged type that spawns in water ("hack for deep thing" 
 # Upstream's DIRECTIONS[1:5]: left, right, up, down as (row, col) steps.
 _STEPS = ((0, -1), (0, 1), (-1, 0), (1, 0))
 _ARROWS = (int(ProjectileType.ARROW), int(ProjectileType.ARROW2))
+# the classes as plain ints: an enum member's lookup costs as much as a line of arithmetic
+_PASSIVE, _MELEE, _RANGED = int(MobType.PASSIVE), int(MobType.MELEE), int(MobType.RANGED)
 _SPELLS = (int(ProjectileType.FIREBALL), int(ProjectileType.ICEBALL))
 
 
@@ -175,6 +177,11 @@ def attack_mob(state: State, row: int, col: int, damage: tuple, can_eat: bool) -
 
 # ---------------------------------------------------------------------------------------------
 # Movement
+#
+# A numpy scalar read or write costs about as much as a dozen lines of Python arithmetic, so an
+# update reads each group's slots of the player's level once, as Python lists, moves the mobs in
+# Python and writes back only what changed: a mob's cell when it moved, its mask when it died,
+# the mob map where a mob left or stands.
 
 class _Turn:
     """What every mover of one update reads: the player's level, its map and mob map (views,
@@ -217,21 +224,24 @@ class _Turn:
             return (d_row > 0) - (d_row < 0), 0
         return 0, (d_col > 0) - (d_col < 0)
 
-    def stays(self, distance: int, monster: bool) -> bool:
-        return (self.despawn is None or distance < self.despawn
-                or (monster and self.boss))
-
-    def relocate(self, group: Mobs, slot: int, old: tuple, new: tuple, alive: bool) -> None:
-        """Write a mob's new cell and life, keeping the mob map exact."""
-        level = self.level
-        if new != old:
-            group.position[level, slot, 0], group.position[level, slot, 1] = new
-            self.occupied[old] = False
+    def relocate(self, group: Mobs, slot: int, row: int, col: int, new_row: int, new_col: int,
+                 distance: int, monster: bool) -> None:
+        """Write a mob's new cell (if it moved) and life, keeping the mob map exact: the cell
+        left is cleared, the cell stood on set (as upstream, even when it stayed). A mob whose
+        ``distance`` from the player (before it moved) is beyond the despawn distance vanishes
+        (a monster on the boss level stays)."""
+        alive = (self.despawn is None or distance < self.despawn or (monster and self.boss))
+        occupied = self.occupied
+        if new_row != row or new_col != col:
+            position = group.position
+            position[self.level, slot, 0] = new_row
+            position[self.level, slot, 1] = new_col
+            occupied[row, col] = False
         if alive:
-            self.occupied[new] = True
+            occupied[new_row, new_col] = True
         else:
-            group.mask[level, slot] = False
-            self.occupied[old] = False
+            group.mask[self.level, slot] = False
+            occupied[row, col] = False
 
 
 def _move_melee(turn: _Turn, slot: int, row: int, col: int, type_id: int, cooldown: int) -> int:
@@ -241,33 +251,33 @@ def _move_melee(turn: _Turn, slot: int, row: int, col: int, type_id: int, cooldo
     distance = abs(d_row) + abs(d_col)
     draws = turn.draws
     if (distance < 10 or turn.boss) and draws.random() < 0.75:
-        step = turn.toward(d_row, d_col)
+        step_row, step_col = turn.toward(d_row, d_col)
     else:
-        step = _STEPS[draws.below(4)]
-    target = (row, col)
+        step_row, step_col = _STEPS[draws.below(4)]
+    new_row, new_col = row, col
     if distance == 1 and cooldown <= 0:
-        hurt_player(turn.state, MOB_TYPE_DAMAGE_MAPPING[type_id][MobType.MELEE], melee=True)
+        hurt_player(turn.state, MOB_TYPE_DAMAGE_MAPPING[type_id][_MELEE], melee=True)
         cooldown = MELEE_ATTACK_COOLDOWN
     else:
         cooldown -= 1
-        if turn.can_enter(row + step[0], col + step[1],
-                          MOB_TYPE_COLLISION_MAPPING[type_id][MobType.MELEE]):
-            target = (row + step[0], col + step[1])
-    turn.relocate(turn.state.melee_mobs, slot, (row, col), target, turn.stays(distance, True))
+        if turn.can_enter(row + step_row, col + step_col,
+                          MOB_TYPE_COLLISION_MAPPING[type_id][_MELEE]):
+            new_row, new_col = row + step_row, col + step_col
+    turn.relocate(turn.state.melee_mobs, slot, row, col, new_row, new_col, distance, True)
     return cooldown
 
 
 def _move_passive(turn: _Turn, slot: int, row: int, col: int, type_id: int) -> None:
     """Wander: each of the four steps with 1/8, else stay (upstream's DIRECTIONS[1:9])."""
     choice = turn.draws.below(8)
-    target = (row, col)
+    new_row, new_col = row, col
     if choice < 4:
-        step = _STEPS[choice]
-        if turn.can_enter(row + step[0], col + step[1],
-                          MOB_TYPE_COLLISION_MAPPING[type_id][MobType.PASSIVE]):
-            target = (row + step[0], col + step[1])
+        step_row, step_col = _STEPS[choice]
+        if turn.can_enter(row + step_row, col + step_col,
+                          MOB_TYPE_COLLISION_MAPPING[type_id][_PASSIVE]):
+            new_row, new_col = row + step_row, col + step_col
     distance = abs(turn.p_row - row) + abs(turn.p_col - col)
-    turn.relocate(turn.state.passive_mobs, slot, (row, col), target, turn.stays(distance, False))
+    turn.relocate(turn.state.passive_mobs, slot, row, col, new_row, new_col, distance, False)
 
 
 def _move_ranged(turn: _Turn, slot: int, row: int, col: int, type_id: int, cooldown: int) -> int:
@@ -281,20 +291,20 @@ def _move_ranged(turn: _Turn, slot: int, row: int, col: int, type_id: int, coold
     too_close = distance <= 3
     if draws.random() > 0.85 and (distance >= 6 or too_close):
         sign = -1 if too_close else 1
-        target = (row + sign * toward[0], col + sign * toward[1])
+        new_row, new_col = row + sign * toward[0], col + sign * toward[1]
     else:
-        step = _STEPS[draws.below(4)]
-        target = (row + step[0], col + step[1])
-    can_move = turn.can_enter(*target, MOB_TYPE_COLLISION_MAPPING[type_id][MobType.RANGED])
+        step_row, step_col = _STEPS[draws.below(4)]
+        new_row, new_col = row + step_row, col + step_col
+    can_move = turn.can_enter(new_row, new_col, MOB_TYPE_COLLISION_MAPPING[type_id][_RANGED])
     if cooldown <= 0 and (4 <= distance <= 5 or (too_close and not can_move)):
         _shoot(turn, row, col, toward, RANGED_MOB_TYPE_TO_PROJECTILE_TYPE_MAPPING[type_id])
         cooldown = RANGED_ATTACK_COOLDOWN
-        target = (row, col)
+        new_row, new_col = row, col
     else:
         cooldown -= 1
         if not can_move:
-            target = (row, col)
-    turn.relocate(turn.state.ranged_mobs, slot, (row, col), target, turn.stays(distance, True))
+            new_row, new_col = row, col
+    turn.relocate(turn.state.ranged_mobs, slot, row, col, new_row, new_col, distance, True)
     return cooldown
 
 
@@ -312,13 +322,11 @@ def _shoot(turn: _Turn, row: int, col: int, direction: tuple, kind: int) -> None
     state.mob_projectile_directions[level, slot] = direction
 
 
-def _move_mob_projectile(turn: _Turn, slot: int) -> None:
+def _move_mob_projectile(turn: _Turn, slot: int, row: int, col: int, d_row: int, d_col: int,
+                         kind: int) -> None:
     """Fly one cell; hit the player (on its cell or the next), stop at solid blocks (not
     water or lava), mobs and the map's edge; break a table or furnace in its way."""
-    state, level = turn.state, turn.level
-    projectiles = state.mob_projectiles
-    row, col = projectiles.position[level, slot].tolist()
-    d_row, d_col = state.mob_projectile_directions[level, slot].tolist()
+    projectiles = turn.state.mob_projectiles
     new_row, new_col = row + d_row, col + d_col
     p_row, p_col = turn.p_row, turn.p_col
     hit_player = (row == p_row and col == p_col) or (new_row == p_row and new_col == p_col)
@@ -329,8 +337,10 @@ def _move_mob_projectile(turn: _Turn, slot: int) -> None:
         if block in _BREAKABLE:
             turn.map[new_row, new_col] = BlockType.PATH
     if hit_player:
-        hurt_player(state, PROJECTILE_DAMAGE[projectiles.type_id.item(level, slot)])
-    projectiles.position[level, slot, 0], projectiles.position[level, slot, 1] = new_row, new_col
+        hurt_player(turn.state, PROJECTILE_DAMAGE[kind])
+    level = turn.level
+    projectiles.position[level, slot, 0] = new_row
+    projectiles.position[level, slot, 1] = new_col
     if not flies_on:
         projectiles.mask[level, slot] = False
 
@@ -351,22 +361,23 @@ def player_projectile_damage(state: State, kind: int) -> tuple:
     return tuple(x * scale for x in damage)
 
 
-def _move_player_projectile(turn: _Turn, slot: int) -> None:
+def _move_player_projectile(turn: _Turn, slot: int, row: int, col: int, d_row: int, d_col: int,
+                            kind: int) -> None:
     """Strike a mob on its own cell (one stepped onto it), else on its next cell; fly on
     unless it struck, left the map or met a solid block (it crosses water and lava)."""
-    state, level = turn.state, turn.level
+    state = turn.state
     projectiles = state.player_projectiles
-    row, col = projectiles.position[level, slot].tolist()
-    d_row, d_col = state.player_projectile_directions[level, slot].tolist()
     new_row, new_col = row + d_row, col + d_col
-    damage = player_projectile_damage(state, projectiles.type_id.item(level, slot))
+    damage = player_projectile_damage(state, kind)
     hit = ((turn.occupied.item(row, col) and attack_mob(state, row, col, damage, False)[0])
            or (0 <= new_row < turn.rows and 0 <= new_col < turn.cols
                and turn.occupied.item(new_row, new_col)
                and attack_mob(state, new_row, new_col, damage, False)[0]))
     flies_on = (not hit and 0 <= new_row < turn.rows and 0 <= new_col < turn.cols
                 and not IS_SOLID[turn.map.item(new_row, new_col)])
-    projectiles.position[level, slot, 0], projectiles.position[level, slot, 1] = new_row, new_col
+    level = turn.level
+    projectiles.position[level, slot, 0] = new_row
+    projectiles.position[level, slot, 1] = new_col
     if not flies_on:
         projectiles.mask[level, slot] = False
 
@@ -376,31 +387,45 @@ def _move_monsters(turn: _Turn, group: Mobs, mask: list, mover) -> None:
     upstream (a mob spawned into a slot inherits its cooldown)."""
     level = turn.level
     positions, types = group.position[level].tolist(), group.type_id[level].tolist()
-    cooldowns = group.attack_cooldown[level].tolist()
-    for slot, alive in enumerate(mask):
-        if alive:
+    cooldowns = group.attack_cooldown[level]
+    for slot, cooldown in enumerate(cooldowns.tolist()):
+        if mask[slot]:
             row, col = positions[slot]
-            cooldowns[slot] = mover(turn, slot, row, col, types[slot], cooldowns[slot])
+            cooldown = mover(turn, slot, row, col, types[slot], cooldown)
         else:
-            cooldowns[slot] -= 1
-    group.attack_cooldown[level] = cooldowns
+            cooldown -= 1
+        cooldowns[slot] = cooldown
 
 
 def _count_down(group: Mobs, level: int) -> None:
     """Dead slots count their cooldown down too, as upstream (a spawned mob inherits it)."""
-    group.attack_cooldown[level] = [x - 1 for x in group.attack_cooldown[level].tolist()]
+    cooldowns = group.attack_cooldown[level]
+    for slot, cooldown in enumerate(cooldowns.tolist()):
+        cooldowns[slot] = cooldown - 1
+
+
+def _fly(turn: _Turn, projectiles: Mobs, directions, mask: list, mover) -> None:
+    """The live projectiles of one kind in slot order, their slots read once."""
+    level = turn.level
+    positions, kinds = projectiles.position[level].tolist(), projectiles.type_id[level].tolist()
+    steps = directions[level].tolist()
+    for slot, alive in enumerate(mask):
+        if alive:
+            row, col = positions[slot]
+            d_row, d_col = steps[slot]
+            mover(turn, slot, row, col, d_row, d_col, kinds[slot])
 
 
 def update(state: State, settings: Settings, draws) -> None:
     """Upstream's update_mobs on the player's level: melee, passive and ranged mobs in slot
     order, then mob projectiles, then the player's projectiles."""
     level = state.player_level
-    melee, ranged = state.melee_mobs, state.ranged_mobs
+    melee, passive, ranged = state.melee_mobs, state.passive_mobs, state.ranged_mobs
     melee_mask, ranged_mask = melee.mask[level].tolist(), ranged.mask[level].tolist()
-    passive_mask = state.passive_mobs.mask[level].tolist()
+    passive_mask = passive.mask[level].tolist()
+    shots = state.mob_projectiles.mask[level].tolist()
     arrows = state.player_projectiles.mask[level].tolist()
-    if (True not in melee_mask and True not in ranged_mask and True not in passive_mask
-            and True not in arrows and True not in state.mob_projectiles.mask[level].tolist()):
+    if True not in melee_mask + passive_mask + ranged_mask + shots + arrows:
         _count_down(melee, level)
         _count_down(ranged, level)
         return
@@ -410,36 +435,40 @@ def update(state: State, settings: Settings, draws) -> None:
     else:
         _count_down(melee, level)
     if True in passive_mask:
-        passive = state.passive_mobs
         positions, types = passive.position[level].tolist(), passive.type_id[level].tolist()
         for slot, alive in enumerate(passive_mask):
             if alive:
                 _move_passive(turn, slot, positions[slot][0], positions[slot][1], types[slot])
     if True in ranged_mask:
         _move_monsters(turn, ranged, ranged_mask, _move_ranged)
+        # (a projectile a ranged mob shot this turn flies this turn)
+        shots = state.mob_projectiles.mask[level].tolist()
     else:
         _count_down(ranged, level)
-    # (a projectile a ranged mob shot this turn flies this turn)
-    for slot, alive in enumerate(state.mob_projectiles.mask[level].tolist()):
-        if alive:
-            _move_mob_projectile(turn, slot)
-    for slot, alive in enumerate(arrows):
-        if alive:
-            _move_player_projectile(turn, slot)
+    if True in shots:
+        _fly(turn, state.mob_projectiles, state.mob_projectile_directions, shots,
+             _move_mob_projectile)
+    if True in arrows:
+        _fly(turn, state.player_projectiles, state.player_projectile_directions, arrows,
+             _move_player_projectile)
 
 
 # ---------------------------------------------------------------------------------------------
 # Spawning (game_logic.spawn_mobs)
 
-_OFFSETS: dict[int, tuple[np.ndarray, np.ndarray, np.ndarray]] = {}
+_RINGS: dict[tuple[int, int], np.ndarray] = {}
 
 
-def _window(radius: int):
-    """(row offsets, col offsets, squared distances) of the square of half-side ``radius``."""
-    if radius not in _OFFSETS:
+def _ring(near: int, far: int) -> np.ndarray:
+    """The cells of a square around its centre (half-side ceil(sqrt(far)) + 1) whose squared
+    Euclidean distance d2 from it has near < d2 < far; made once per (near, far)."""
+    ring = _RINGS.get((near, far))
+    if ring is None:
+        radius = int(np.ceil(np.sqrt(far))) + 1
         d = np.arange(-radius, radius + 1)
-        _OFFSETS[radius] = (d, d, d[:, None] ** 2 + d[None, :] ** 2)
-    return _OFFSETS[radius]
+        d2 = d[:, None] ** 2 + d[None, :] ** 2
+        ring = _RINGS[near, far] = (d2 > near) & (d2 < far)
+    return ring
 
 
 def _spawn_cell(state: State, allowed: np.ndarray, near: int, far: int, draws):
@@ -447,15 +476,15 @@ def _spawn_cell(state: State, allowed: np.ndarray, near: int, far: int, draws):
     squared distance d2 from the player with near < d2 < far; None if there is none. Cells
     count in row-major order (upstream draws over the flattened map)."""
     level = state.player_level
-    radius = int(np.ceil(np.sqrt(far))) + 1
-    d, _, d2 = _window(radius)
-    p_row, p_col = int(state.player_position[0]), int(state.player_position[1])
+    ring = _ring(near, far)
+    radius = ring.shape[0] // 2
+    p_row, p_col = state.player_position.tolist()
     rows, cols = state.map.shape[1:]
     r0, r1 = max(0, p_row - radius), min(rows, p_row + radius + 1)
     c0, c1 = max(0, p_col - radius), min(cols, p_col + radius + 1)
-    window_d2 = d2[r0 - p_row + radius:r1 - p_row + radius, c0 - p_col + radius:c1 - p_col + radius]
-    ok = allowed[state.map[level, r0:r1, c0:c1]] & ~state.mob_map[level, r0:r1, c0:c1]
-    ok &= (window_d2 > near) & (window_d2 < far)
+    ok = allowed[state.map[level, r0:r1, c0:c1]]
+    ok &= ring[r0 - p_row + radius:r1 - p_row + radius, c0 - p_col + radius:c1 - p_col + radius]
+    np.greater(ok, state.mob_map[level, r0:r1, c0:c1], out=ok)      # (and no mob there)
     cells = np.flatnonzero(ok)
     if cells.size == 0:
         return None
@@ -522,7 +551,7 @@ def spawn(state: State, settings: Settings, draws) -> None:
     chances = FLOOR_MOB_SPAWN_CHANCE[level]
     boss = level == BOSS_LEVEL
     far = settings.mob_despawn_distance ** 2
-    coeff = 3.0 if state.monsters_killed[level] < MONSTERS_KILLED_TO_CLEAR_LEVEL else 1.0
+    coeff = 3.0 if state.monsters_killed.item(level) < MONSTERS_KILLED_TO_CLEAR_LEVEL else 1.0
     if boss:
         coeff *= 1000.0 if state.boss_timesteps_to_spawn_this_round >= 1 else 0.0
 

@@ -61,6 +61,7 @@ _PLANT, _NECRO = int(BlockType.PLANT), int(BlockType.NECROMANCER)
 _TABLE, _FURNACE = int(BlockType.CRAFTING_TABLE), int(BlockType.FURNACE)
 _NOOP, _DO, _SLEEP, _REST = int(Action.NOOP), int(Action.DO), int(Action.SLEEP), int(Action.REST)
 _DESCEND, _ASCEND = int(Action.DESCEND), int(Action.ASCEND)
+_WAKE_UP = int(Achievement.WAKE_UP)
 
 # ------------------------------------------------------------------------------------------
 # helpers shared with the other modules
@@ -73,10 +74,10 @@ def in_bounds(state: State, r: int, c: int) -> bool:
 
 def is_in_mob(state: State, level: int, r: int, c: int) -> bool:
     """A mob stands at (r, c) of ``level``, or the player does (upstream is_in_mob)."""
-    if state.mob_map[level, r, c]:
+    if state.mob_map.item(level, r, c):
         return True
-    pos = state.player_position
-    return level == state.player_level and r == pos[0] and c == pos[1]
+    p_row, p_col = state.player_position.tolist()
+    return level == state.player_level and r == p_row and c == p_col
 
 
 def is_free(state: State, level: int, pos) -> bool:
@@ -111,12 +112,13 @@ def unlock(state: State, achievement: int) -> None:
 
 def facing(state: State) -> tuple[int, int]:
     dr, dc = _DIR.get(state.player_direction, (0, 0))
-    return int(state.player_position[0]) + dr, int(state.player_position[1]) + dc
+    row, col = state.player_position.tolist()
+    return row + dr, col + dc
 
 
 def is_near_block(state: State, block: int) -> bool:
     """``block`` is in one of the eight cells around the player (crafting stations)."""
-    level, r, c = state.player_level, int(state.player_position[0]), int(state.player_position[1])
+    level, (r, c) = state.player_level, state.player_position.tolist()
     rows, cols = state.map.shape[1:]
     m = state.map
     for dr, dc in CLOSE_BLOCKS:
@@ -137,7 +139,7 @@ def change_floor(state: State, action: int, settings) -> None:
     achievement is missing unlocks it and gives 1 XP (whatever the action)."""
     level = state.player_level
     if action == _DESCEND or action == _ASCEND:
-        r, c = int(state.player_position[0]), int(state.player_position[1])
+        r, c = state.player_position.tolist()
         item = state.item_map.item(level, r, c)
         if action == _DESCEND and level < NUM_LEVELS - 1 and (settings.god_mode or (
                 item == ItemType.LADDER_DOWN
@@ -441,7 +443,8 @@ def move(state: State, action: int, settings) -> None:
     """Face the move's direction; step there if the player can enter the cell (not solid, no
     mob, not water or lava), or always in god mode."""
     dr, dc = MOVES[action]
-    r, c = int(state.player_position[0]) + dr, int(state.player_position[1]) + dc
+    row, col = state.player_position.tolist()
+    r, c = row + dr, col + dc
     if settings.god_mode or player_can_enter(state, r, c):
         state.player_position[0], state.player_position[1] = r, c
     state.player_direction = action
@@ -473,31 +476,35 @@ def update_intrinsics(state: State, action: int, settings) -> None:
     drains: hunger, thirst and an awake player's fatigue no longer grow, so food, drink and
     energy never fall; sleep still restores energy (and so ends), health and mana still
     recover."""
-    dex = state.player_dexterity
-    if action == _SLEEP and state.player_energy < max_energy(dex):
-        state.is_sleeping = True
-    if state.is_sleeping and state.player_energy >= max_energy(dex):
-        state.is_sleeping = False
-        unlock(state, Achievement.WAKE_UP)
-    if action == _REST and state.player_health < max_health(state.player_strength):
+    # (the fields are read once into locals and written once: this runs every step)
+    dex, strength = state.player_dexterity, state.player_strength
+    top_energy, top_health = max_energy(dex), max_health(strength)
+    asleep = state.is_sleeping
+    if action == _SLEEP and state.player_energy < top_energy:
+        asleep = state.is_sleeping = True
+    if asleep and state.player_energy >= top_energy:
+        asleep = state.is_sleeping = False
+        unlock(state, _WAKE_UP)
+    food, drink = state.player_food, state.player_drink
+    if action == _REST and state.player_health < top_health:
         state.is_resting = True
-    if state.is_resting and (state.player_health >= max_health(state.player_strength)
-                             or state.player_food <= 0 or state.player_drink <= 0):
+    if state.is_resting and (state.player_health >= top_health or food <= 0 or drink <= 0):
         state.is_resting = False
 
-    asleep = state.is_sleeping
     fall = 0 if state.player_level == BOSS_LEVEL else 1
     decay = 1.0 - DEXTERITY_DECAY * (dex - 1)
     if settings.intrinsics:
         rate = (SLEEP_INTRINSIC_RATE if asleep else 1.0) * decay
-        state.player_hunger += rate
-        if state.player_hunger > HUNGER_LIMIT:
-            state.player_food = max(state.player_food - fall, 0)
-            state.player_hunger = 0.0
-        state.player_thirst += rate
-        if state.player_thirst > THIRST_LIMIT:
-            state.player_drink = max(state.player_drink - fall, 0)
-            state.player_thirst = 0.0
+        hunger = state.player_hunger + rate
+        if hunger > HUNGER_LIMIT:
+            food = state.player_food = max(food - fall, 0)
+            hunger = 0.0
+        state.player_hunger = hunger
+        thirst = state.player_thirst + rate
+        if thirst > THIRST_LIMIT:
+            drink = state.player_drink = max(drink - fall, 0)
+            thirst = 0.0
+        state.player_thirst = thirst
     if settings.intrinsics or asleep:      # (asleep, fatigue only falls: energy only grows)
         energy = state.player_energy
         fatigue = min(state.player_fatigue - 1, 0) if asleep else state.player_fatigue + decay
@@ -505,23 +512,21 @@ def update_intrinsics(state: State, action: int, settings) -> None:
             state.player_energy = max(energy - fall, 0)
             fatigue = 0.0
         if fatigue < FATIGUE_RESTED:
-            state.player_energy = min(energy + 1, max_energy(dex))
+            state.player_energy = min(energy + 1, top_energy)
             fatigue = 0.0
         state.player_fatigue = float(fatigue)
 
-    needs_met = (state.player_food > 0 and state.player_drink > 0
-                 and (state.player_energy > 0 or asleep))
-    if needs_met:
-        recover = RECOVER_RATE[asleep]
+    if food > 0 and drink > 0 and (state.player_energy > 0 or asleep):   # the needs are met
+        recover = state.player_recover + RECOVER_RATE[asleep]
     else:
-        recover = DERECOVER_RATE[asleep] * fall
-    state.player_recover += recover
-    if state.player_recover > RECOVER_LIMIT:
-        state.player_health = min(state.player_health + 1, max_health(state.player_strength))
-        state.player_recover = 0.0
-    if state.player_recover < DERECOVER_LIMIT:
+        recover = state.player_recover + DERECOVER_RATE[asleep] * fall
+    if recover > RECOVER_LIMIT:
+        state.player_health = min(state.player_health + 1, top_health)
+        recover = 0.0
+    if recover < DERECOVER_LIMIT:
         state.player_health = state.player_health - 1
-        state.player_recover = 0.0
+        recover = 0.0
+    state.player_recover = recover
 
     mana = (state.player_recover_mana + MANA_RATE[asleep]) * (
         1 + INTELLIGENCE_MANA_BONUS * (state.player_intelligence - 1))
@@ -637,7 +642,8 @@ def step(state: State, action: int, settings, draws, after_mobs=None) -> float:
         read_book(state, draws)
     elif action in _ENCHANT:
         enchant(state, action, draws)
-    mobs.boss_logic(state)
+    if state.player_level == BOSS_LEVEL or state.boss_progress >= BOSS_LEVEL:
+        mobs.boss_logic(state)      # (elsewhere, before the boss is beaten, it does nothing)
     if action in _LEVEL_UP:
         level_up(state, action, settings)
     if action in MOVES:

@@ -16,6 +16,7 @@ the rest in as slots free up.
 
 from __future__ import annotations
 
+import operator
 import re
 import sys
 from dataclasses import dataclass, field, replace
@@ -23,6 +24,7 @@ from typing import Callable
 
 import numpy as np
 
+from .mobs import MOB_BY_NAME, add_mob
 from .state import MOB_GROUPS, Settings
 from .tables import BlockType
 
@@ -31,7 +33,8 @@ from .tables import BlockType
 
 
 _CLAUSE = re.compile(r"^\s*([a-z_.]+)\s*(>=|<=|==|>|<)\s*(-?[0-9.]+)\s*$")
-_OPS = {">=": float.__ge__, "<=": float.__le__, "==": float.__eq__, ">": float.__gt__, "<": float.__lt__}
+# (a counter is compared as it is, int or float: exact for the small counts a test reads)
+_OPS = {">=": operator.ge, "<=": operator.le, "==": operator.eq, ">": operator.gt, "<": operator.lt}
 
 
 def parse_test(text: str, tally) -> Callable:
@@ -48,8 +51,8 @@ def parse_test(text: str, tally) -> Callable:
         clauses.append((tally.getter(m.group(1)), _OPS[m.group(2)], float(m.group(3))))
     if len(clauses) == 1:
         (get, op, n), = clauses
-        return lambda t: op(float(get(t)), n)
-    return lambda t: all(op(float(get(t)), n) for get, op, n in clauses)
+        return lambda t: op(get(t), n)
+    return lambda t: all(op(get(t), n) for get, op, n in clauses)
 
 
 @dataclass(frozen=True)
@@ -65,10 +68,19 @@ class Term:
     per: int = 1
 
     def units(self, tally, fn) -> int:
-        value = fn(tally)
-        if isinstance(value, bool):
-            return int(value)
-        return min(int(value) // self.per, self.cap)
+        """The units ``fn`` (the test compiled by ``parse_test``) gives now."""
+        return self.counter(fn)(tally)
+
+    def counter(self, fn) -> Callable:
+        """``units`` as one function of the tally, made once (the task pays every step)."""
+        per, cap = self.per, self.cap
+
+        def units(tally) -> int:
+            value = fn(tally)
+            if isinstance(value, bool):
+                return int(value)
+            return min(int(value) // per, cap)
+        return units
 
     @property
     def counts(self) -> bool:
@@ -297,7 +309,6 @@ class Context:
         slot, whose values go unused, are made together (``integers(n, size=k)`` advances the
         generator exactly as k calls of ``integers(n)``), in order, before the next used one,
         which may be turns later (``settle`` makes them before anything else draws)."""
-        from .mobs import MOB_BY_NAME, add_mob
         waiting = []
         rings: dict[tuple[int, int], tuple] = {}
         groups = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)

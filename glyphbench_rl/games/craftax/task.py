@@ -50,8 +50,9 @@ ITEMS = ("wood", "stone", "coal", "iron", "diamond", "sapling", "ruby", "sapphir
          "torches", "books", "pickaxe", "sword", "bow")
 PLACED = {Action.PLACE_STONE: BlockType.STONE, Action.PLACE_TABLE: BlockType.CRAFTING_TABLE,
           Action.PLACE_FURNACE: BlockType.FURNACE, Action.PLACE_PLANT: BlockType.PLANT}
-CASTS = (Action.CAST_FIREBALL, Action.CAST_ICEBALL)
-DRINKS = tuple(range(Action.DRINK_POTION_RED, Action.DRINK_POTION_YELLOW + 1))
+CASTS = frozenset(int(a) for a in (Action.CAST_FIREBALL, Action.CAST_ICEBALL))
+DRINKS = frozenset(range(Action.DRINK_POTION_RED, Action.DRINK_POTION_YELLOW + 1))
+_PLACE_TORCH, _RED = int(Action.PLACE_TORCH), int(Action.DRINK_POTION_RED)   # (ints: read each step)
 POTION_EFFECTS = ("heal", "harm", "mana", "drain", "energy", "tire")   # upstream's effect order
 
 
@@ -123,18 +124,16 @@ class Tally:
         return get(self)
 
     def before_step(self, state, action: int) -> None:
-        """Remember what a step can change that the tally counts by difference."""
+        """Remember what a step can change that the tally counts by difference. (The mob masks
+        are kept as bytes, whole: a copy each, and ``after_mobs`` looks at slots only when one
+        changed, which few turns do.)"""
         self._vitals = (state.player_food, state.player_drink, state.player_mana)
-        level = self._level = state.player_level
-        live = self._live = []
-        for k, mobs in enumerate((state.passive_mobs, state.melee_mobs, state.ranged_mobs)):
-            mask = mobs.mask[level].tolist()
-            if True in mask:
-                types = mobs.type_id[level].tolist()
-                live += [(k, i, types[i]) for i, on in enumerate(mask) if on]
+        self._level = state.player_level
+        self._masks = (state.passive_mobs.mask.tobytes(), state.melee_mobs.mask.tobytes(),
+                       state.ranged_mobs.mask.tobytes())
         if action in PLACED:
             self._ahead = self._facing_block(state)
-        elif action == Action.PLACE_TORCH:
+        elif action == _PLACE_TORCH:
             self._torches = state.inventory.torches
         elif action in DRINKS:
             self._potions = state.inventory.potions.copy()
@@ -144,21 +143,32 @@ class Tally:
         r, c = rules.facing(state)
         if not rules.in_bounds(state, r, c):
             return -1
-        return int(state.map[state.player_level, r, c])
+        return state.map.item(state.player_level, r, c)
 
     def after_mobs(self, state) -> None:
         """Called by the step after the mobs moved and before any spawn: a slot live before the
         step whose mob is now gone with no health left was a kill (a despawned mob keeps its
-        health; spawning could reuse the slot, which is why this runs before it)."""
+        health; spawning could reuse the slot, which is why this runs before it). Until the
+        spawn no slot comes alive and no type changes, so the slots to look at are those whose
+        mask went from live to dead, and the type read now is the one before."""
+        groups = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)
+        masks = (groups[0].mask.tobytes(), groups[1].mask.tobytes(), groups[2].mask.tobytes())
+        if masks == self._masks:
+            return
         level = self._level
-        for k, i, type_id in self._live:
-            mobs = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)[k]
-            if not mobs.mask.item(level, i) and mobs.health.item(level, i) <= 0:
-                name = MOB_NAMES[k][type_id]
-                self.kills[name] = self.kills.get(name, 0) + 1
-                self.kills["all"] += 1
-                if k:
-                    self.kills["monsters"] += 1
+        for k, (mobs, before, now) in enumerate(zip(groups, self._masks, masks)):
+            if now != before:
+                was = np.frombuffer(before, bool).reshape(mobs.mask.shape)[level].tolist()
+                for i, (on, alive) in enumerate(zip(was, mobs.mask[level].tolist())):
+                    if on and not alive and mobs.health.item(level, i) <= 0:
+                        self._kill(k, mobs.type_id.item(level, i))
+
+    def _kill(self, kind: int, type_id: int) -> None:
+        name = MOB_NAMES[kind][type_id]
+        self.kills[name] = self.kills.get(name, 0) + 1
+        self.kills["all"] += 1
+        if kind:
+            self.kills["monsters"] += 1
 
     def after_step(self, state, action: int) -> None:
         counts = self.counts
@@ -180,11 +190,11 @@ class Tally:
             block = PLACED[action]
             if self._ahead != block and self._facing_block(state) == block:
                 self.placed[block.name.lower()] += 1
-        elif action == Action.PLACE_TORCH:
+        elif action == _PLACE_TORCH:
             if state.inventory.torches < self._torches:
                 self.placed["torch"] += 1
         elif action in DRINKS:
-            colour = action - Action.DRINK_POTION_RED
+            colour = action - _RED
             if state.inventory.potions[colour] < self._potions[colour]:
                 self.potions[POTION_EFFECTS[int(state.potion_mapping[colour])]] += 1
         if state.player_level == 0 and state.light_level < NIGHT_LIGHT:
@@ -226,8 +236,10 @@ class CraftaxTask(GlyphTask):
         self.state, self.ctx = self.scenario.build(rng)
         self.play_rng = self.stream("scenario")
         self.tally = Tally(self.state)
-        # (term, its test compiled, units paid); a term drops out once it can pay no more
-        self._open = [[term, parse_test(term.test, self.tally), 0] for term in self.scenario.terms]
+        # (term, its units as a function of the tally, units paid); a term drops out once it
+        # can pay no more
+        self._open = [[term, term.counter(parse_test(term.test, self.tally)), 0]
+                      for term in self.scenario.terms]
         self._success = parse_test(self.scenario.success, self.tally) if self.scenario.success else None
         self.events = [(e, parse_test(e.when, self.tally)) for e in self.scenario.events]
         self.fired: set[int] = set()             # scenario events already run
@@ -245,8 +257,8 @@ class CraftaxTask(GlyphTask):
         here) and end the episode on death or success."""
         finished = False
         for entry in self._open:
-            term, test, paid = entry
-            units = term.units(tally, test)
+            term, count, paid = entry
+            units = count(tally)
             if units > paid:
                 entry[2] = units
                 self.reward(term.unit * (units - paid))
