@@ -15,6 +15,7 @@ from .scroller import Channel, Pacer, Strip, banks_fit, fly_shots, put_one
 
 JET, SHIP, HELI, FUEL, BANK, BRIDGE, SHOT = "A", "S", "H", "F", "#", "=", "|"
 ENEMIES = (SHIP, HELI)
+CLEAR = EMPTY + BRIDGE   # what a shot flies through
 ACTIONS = ActionSet([("NOOP", "fly straight"), ("LEFT", "bank one cell left"),
                      ("RIGHT", "bank one cell right"), ("FIRE", "shoot straight up the river")],
                     noop="NOOP")
@@ -92,10 +93,6 @@ class RiverRaid(ArcadeTask):
         self.spawned += 1
         return put_one(line, c, SHIP if self.draws.random() < 0.5 else HELI)
 
-    def _shot_hits(self, r: int, c: int) -> bool:
-        """What stops a shot flying up its column (always on the map's columns)."""
-        return r < 0 or self.strip.rows[r][c] not in (EMPTY, BRIDGE)
-
     def _shot_at(self, r: int, c: int) -> None:
         if r >= 0:
             self._strike(r, c)
@@ -112,20 +109,22 @@ class RiverRaid(ArcadeTask):
     def _play(self, action: int) -> None:
         p = self.params
         c = self.col + MOVES[action]
-        self.col = 0 if c < 0 else min(c, p.width - 1)
+        self.col = 0 if c < 0 else c if c < p.width else p.width - 1
+        gun = self.gun
         if action == FIRE:
-            self.gun.fire(self.tick, self.jet_r - 1, self.col, -1, 0, SHOT)
-        if self.gun.shots:
-            fly_shots(self.gun, self._shot_hits, self._shot_at)
-        if self.done or self._crashed():
+            gun.fire(self.tick, self.jet_r - 1, self.col, -1, 0, SHOT)
+        if gun.shots:   # (a shot flies up its column, stopped past the top or by what is not water)
+            fly_shots(gun, None, self._shot_at, self.strip.rows, CLEAR)
+        if self.done or (self.strip.rows[self.jet_r][self.col] != EMPTY and self._crashed()):
             return
         if self.pacer.due(self.tick):
             gone = self.strip.scroll(self._line())
             passed = gone.count(SHIP) + gone.count(HELI)
             if passed:
                 self.score.gain(passed)
-            for shot in self.gun.shots:
-                if self._shot_hits(shot.r, shot.c):
+            rows = self.strip.rows
+            for shot in gun.shots:   # (what scrolled onto a shot stops it)
+                if rows[shot.r][shot.c] not in CLEAR:
                     self._strike(shot.r, shot.c)
                     shot.data = 0
             if self.done or self._crashed():

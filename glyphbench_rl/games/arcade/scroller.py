@@ -138,20 +138,22 @@ def put_one(line: str, c: int, ch: str) -> str:
     return line[:c] + ch + line[c + 1:]
 
 
-def fly_shots(gun: Gun, hit, strike) -> None:
+def fly_shots(gun: Gun, hit, strike, rows: list[str] | None = None, clear: str = "") -> None:
     """``gun.advance(hit)`` for shots that move, at most one cell a step on each axis (every
     shot here), without a generator: each shot steps cell by cell, ``speed`` cells, and stops
     at the first cell where ``hit(r, c)`` is true; ``strike(r, c)`` then hears of it at once (as
     a caller looping over ``advance`` would) and returns True to stop the volley (the episode
-    ended: like a caller leaving the loop, the gun keeps its shots as they stand)."""
-    kept, speed = [], gun.speed
+    ended: like a caller leaving the loop, the gun keeps its shots as they stand). With ``hit``
+    None, a shot stops off the ``rows`` (above or below them: shots fly inside their columns)
+    or on a glyph not in ``clear``, found in the loop (no call per cell)."""
+    kept, speed, h = [], gun.speed, len(rows) if rows is not None else 0
     for shot in gun.shots:
         dr, dc, r, c = shot.dr, shot.dc, shot.r, shot.c
         struck = False
         for _ in range(speed):
             r += dr
             c += dc
-            if hit(r, c):
+            if (not 0 <= r < h or rows[r][c] not in clear) if hit is None else hit(r, c):
                 struck = True
                 break
             shot.r, shot.c = r, c
