@@ -175,7 +175,9 @@ class Formation:
         return [(t + i, l + j * g) for i, j in self.shape()[1]]
 
     def bottom(self) -> int:
-        return self.top + self.shape()[4] if self.alive else -1
+        if not self.alive:
+            return -1
+        return self.top + (self._shape or self.shape())[4]   # (no call while the shape stands)
 
     def tick(self, turn: int) -> None:
         down = self.advance and turn % self.advance == 0
