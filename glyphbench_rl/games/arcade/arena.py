@@ -377,31 +377,32 @@ class ArenaTask(ArcadeTask):
     def _grid(self) -> list[str]:
         """``_sprites()`` drawn on ``_rows()`` straight from the bodies: no (row, col, glyph)
         tuple per mover (that cost as much as the drawing) and no bounds test (every mover of an
-        arena stays inside the field)."""
+        arena stays inside the field), each row remembered (``_pen``)."""
         rows = self._rows() if self._slides else self.still[:]
+        get, draw = self._pen()
         if self._own_movers:
             for r, c, g in self._below():
-                line = rows[r]
-                rows[r] = line[:c] + g + line[c + 1:]
+                key = (rows[r], c, g)
+                rows[r] = get(key) or draw(key)
         for f in self.foes:
-            r, c = f.r, f.c
-            line = rows[r]
-            rows[r] = line[:c] + f.glyph + line[c + 1:]
+            r = f.r
+            key = (rows[r], f.c, f.glyph)
+            rows[r] = get(key) or draw(key)
         for s in self.gun.shots:
-            r, c = s.r, s.c
-            line = rows[r]
-            rows[r] = line[:c] + SHOT + line[c + 1:]
+            r = s.r
+            key = (rows[r], s.c, SHOT)
+            rows[r] = get(key) or draw(key)
         for s in self.shells.shots:
-            r, c = s.r, s.c
-            line = rows[r]
-            rows[r] = line[:c] + SHELL + line[c + 1:]
-        r, c = self.r, self.c
-        line = rows[r]
-        rows[r] = line[:c] + (ARROWS.get(self.face, SHIP) if self.arrows else SHIP) + line[c + 1:]
+            r = s.r
+            key = (rows[r], s.c, SHELL)
+            rows[r] = get(key) or draw(key)
+        r = self.r
+        key = (rows[r], self.c, ARROWS.get(self.face, SHIP) if self.arrows else SHIP)
+        rows[r] = get(key) or draw(key)
         if self._own_movers:
             for r, c, g in self._above():
-                line = rows[r]
-                rows[r] = line[:c] + g + line[c + 1:]
+                key = (rows[r], c, g)
+                rows[r] = get(key) or draw(key)
         return rows
 
     def _extra_hud(self) -> str:

@@ -55,6 +55,7 @@ from ..common.lanes import Draws
 EMPTY = "."
 EPS = 1e-9
 DRAWN = 2048   # rows with a mover drawn in that a task remembers (see ArcadeTask._draw)
+_NONE_DRAWN: dict = {}   # (what ``_pen`` looks rows up in while none are remembered: never filled)
 
 
 @dataclass(frozen=True)
@@ -318,6 +319,14 @@ class ArcadeTask(GlyphTask):
                     return
                 row = self._draw(key)
             rows[r] = row
+
+    def _pen(self):
+        """For a ``_grid`` that draws its movers straight (no tuple per mover, no bounds test:
+        its movers stay inside the rows): ``get`` and ``draw``, to put glyph ``g`` in column
+        ``c`` of ``line`` as ``get(key) or draw(key)`` with ``key = (line, c, g)``, the row
+        remembered as ``_draw`` has it (a lookup costs half the slicing). Counts the grid."""
+        self._grids += 1
+        return (self._drawn or _NONE_DRAWN).get, self._draw
 
     def _draw(self, key: tuple[str, int, str]) -> str:
         """The row ``line`` with glyph ``g`` in column ``c`` (``key``), remembered: a mover over
