@@ -117,11 +117,12 @@ class Kangaroo(ArcadeTask):
         if dc:
             self.face = dc
             if lad.floor_of(self.r) is not None:
-                self.c = min(p.width - 1, max(0, self.c + dc))
+                c = self.c + dc
+                self.c = 0 if c < 0 else c if c < p.width else p.width - 1
         elif dr and lad.climb(self.r, self.c, dr):
             self.r += dr
         floor = lad.floor_of(self.r)
-        if (self.r, self.c) in self.fruit:
+        if self.fruit and (self.r, self.c) in self.fruit:
             self.fruit.discard((self.r, self.c))
             self.say("Fruit!")
             self.score.gain()

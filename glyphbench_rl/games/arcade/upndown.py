@@ -89,8 +89,9 @@ class UpNDown(ArcadeTask):
         p = self.params
         dr, dc = MOVES[action]
         r, c = self.r + dr, self.col + dc
-        self.r = min(p.height - 1, max(p.height // 2, r))
-        self.col = 0 if c < 0 else min(c, p.width - 1)
+        top, bottom = p.height // 2, p.height - 1
+        self.r = top if r < top else r if r < bottom else bottom
+        self.col = 0 if c < 0 else c if c < p.width else p.width - 1
         if action == JUMP and self.tick > self.landing:
             self.landing = self.tick + p.air
         scroll = self.pacer.due(self.tick)
