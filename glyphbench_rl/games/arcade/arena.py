@@ -377,32 +377,33 @@ class ArenaTask(ArcadeTask):
     def _grid(self) -> list[str]:
         """``_sprites()`` drawn on ``_rows()`` straight from the bodies: no (row, col, glyph)
         tuple per mover (that cost as much as the drawing) and no bounds test (every mover of an
-        arena stays inside the field), each row remembered (``_pen``)."""
+        arena stays inside the field), each row remembered (``_draw``)."""
         rows = self._rows() if self._slides else self.still[:]
-        get, draw = self._pen()
+        self._grids += 1
+        drawn = self._drawn
         if self._own_movers:
             for r, c, g in self._below():
                 key = (rows[r], c, g)
-                rows[r] = get(key) or draw(key)
+                rows[r] = drawn.get(key) or self._draw(key)
         for f in self.foes:
             r = f.r
             key = (rows[r], f.c, f.glyph)
-            rows[r] = get(key) or draw(key)
+            rows[r] = drawn.get(key) or self._draw(key)
         for s in self.gun.shots:
             r = s.r
             key = (rows[r], s.c, SHOT)
-            rows[r] = get(key) or draw(key)
+            rows[r] = drawn.get(key) or self._draw(key)
         for s in self.shells.shots:
             r = s.r
             key = (rows[r], s.c, SHELL)
-            rows[r] = get(key) or draw(key)
+            rows[r] = drawn.get(key) or self._draw(key)
         r = self.r
         key = (rows[r], self.c, ARROWS.get(self.face, SHIP) if self.arrows else SHIP)
-        rows[r] = get(key) or draw(key)
+        rows[r] = drawn.get(key) or self._draw(key)
         if self._own_movers:
             for r, c, g in self._above():
                 key = (rows[r], c, g)
-                rows[r] = get(key) or draw(key)
+                rows[r] = drawn.get(key) or self._draw(key)
         return rows
 
     def _extra_hud(self) -> str:

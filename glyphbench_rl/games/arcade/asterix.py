@@ -104,11 +104,19 @@ class Asterix(ArcadeTask):
         return out
 
     def _grid(self) -> list[str]:
-        """``_sprites()`` drawn straight from the things."""
+        """``_sprites()`` drawn straight from the things (all inside the field), each row
+        remembered (``_draw``)."""
         rows = self.still[:]
         self._grids += 1
-        self._paint(rows, filter(None, self.things))
-        self._put(rows, self.r, self.c, YOU)
+        drawn = self._drawn
+        for t in self.things:
+            if t is not None:
+                r = t.r
+                key = (rows[r], t.c, t.glyph)
+                rows[r] = drawn.get(key) or self._draw(key)
+        r = self.r
+        key = (rows[r], self.c, YOU)
+        rows[r] = drawn.get(key) or self._draw(key)
         return rows
 
 

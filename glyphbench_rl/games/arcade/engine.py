@@ -55,7 +55,7 @@ from ..common.lanes import Draws
 EMPTY = "."
 EPS = 1e-9
 DRAWN = 2048   # rows with a mover drawn in that a task remembers (see ArcadeTask._draw)
-_NONE_DRAWN: dict = {}   # (what ``_pen`` looks rows up in while none are remembered: never filled)
+NONE_DRAWN: dict = {}   # a task's ``_drawn`` while it remembers no rows (see ``_keep``): never filled
 
 
 @dataclass(frozen=True)
@@ -269,7 +269,7 @@ class ArcadeTask(GlyphTask):
             if 0 <= r < h:
                 line = rows[r]
                 if 0 <= c < len(line):
-                    if drawn is None:
+                    if drawn is NONE_DRAWN:
                         rows[r] = line[:c] + g + line[c + 1:]
                     else:
                         key = (line, c, g)
@@ -282,7 +282,7 @@ class ArcadeTask(GlyphTask):
         their bodies straight (no tuple per mover; count the grid: ``_grids += 1``)."""
         inside = range(len(rows))
         drawn = self._drawn
-        if drawn is None:   # (rows too varied to remember: drawn afresh)
+        if drawn is NONE_DRAWN:   # (rows too varied to remember: drawn afresh)
             for b in bodies:
                 r, c = b.r, b.c
                 if r in inside:
@@ -308,7 +308,7 @@ class ArcadeTask(GlyphTask):
         if 0 <= r < len(rows):
             line = rows[r]
             drawn = self._drawn
-            if drawn is None:
+            if drawn is NONE_DRAWN:
                 if 0 <= c < len(line):
                     rows[r] = line[:c] + g + line[c + 1:]
                 return
@@ -320,28 +320,30 @@ class ArcadeTask(GlyphTask):
                 row = self._draw(key)
             rows[r] = row
 
-    def _pen(self):
-        """For a ``_grid`` that draws its movers straight (no tuple per mover, no bounds test:
-        its movers stay inside the rows): ``get`` and ``draw``, to put glyph ``g`` in column
-        ``c`` of ``line`` as ``get(key) or draw(key)`` with ``key = (line, c, g)``, the row
-        remembered as ``_draw`` has it (a lookup costs half the slicing). Counts the grid."""
-        self._grids += 1
-        return (self._drawn or _NONE_DRAWN).get, self._draw
-
     def _draw(self, key: tuple[str, int, str]) -> str:
         """The row ``line`` with glyph ``g`` in column ``c`` (``key``), remembered: a mover over
         a still background makes the same few rows again and again, and finding one costs less
         than making it. A task that makes new rows at more than one a grid (a sliding or filling
-        background) stops remembering them."""
+        background) stops remembering them (``_drawn`` is then ``NONE_DRAWN``).
+
+        A ``_grid`` that draws its movers straight (no tuple per mover, no bounds test: they
+        stay inside the rows) counts the grid and puts glyph ``g`` in column ``c`` of row ``r``
+        through the memo, a lookup costing half the slicing::
+
+            self._grids += 1
+            drawn = self._drawn
+            key = (rows[r], c, g)
+            rows[r] = drawn.get(key) or self._draw(key)
+        """
         line, c, g = key
         return self._keep(key, line[:c] + g + line[c + 1:])
 
     def _keep(self, key: tuple, row: str) -> str:
         drawn = self._drawn
-        if drawn is not None:
+        if drawn is not NONE_DRAWN:
             if len(drawn) >= DRAWN:
                 if self._grids - self._drawn_from < DRAWN:
-                    self._drawn = None
+                    self._drawn = NONE_DRAWN
                     return row
                 drawn.clear()
                 self._drawn_from = self._grids

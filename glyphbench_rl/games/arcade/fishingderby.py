@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 from ...core.actions import ActionSet
 from ...core.params import param, require
-from .duel import clamp, pursue
+from .duel import pursue
 from .engine import EMPTY, ArcadeParams, ArcadeTask, register_arcade
 
 SURFACE, FISH, HOOKED, SHARK, YOU, CPU = "~", "f", "F", "S", "J", "K"

@@ -160,23 +160,26 @@ class Kangaroo(ArcadeTask):
         return out
 
     def _grid(self) -> list[str]:
-        """``_sprites()`` drawn straight from the positions (all inside the building)."""
+        """``_sprites()`` drawn straight from the positions (all inside the building), each row
+        remembered (``_draw``)."""
         rows = self.still[:]
+        self._grids += 1
+        drawn = self._drawn
         for r, c in self.fruit:
-            line = rows[r]
-            rows[r] = line[:c] + FRUIT + line[c + 1:]
+            key = (rows[r], c, FRUIT)
+            rows[r] = drawn.get(key) or self._draw(key)
         if not self.params.floors_pay:
             r = self.ladders.floors[-1]
             rows[r] = rows[r][:-1] + JOEY
         for r, c, _ in self.monkeys:
-            line = rows[r]
-            rows[r] = line[:c] + MONKEY + line[c + 1:]
+            key = (rows[r], c, MONKEY)
+            rows[r] = drawn.get(key) or self._draw(key)
         for r, c in self.nuts:
-            line = rows[r]
-            rows[r] = line[:c] + NUT + line[c + 1:]
-        r, c = self.r, self.c
-        line = rows[r]
-        rows[r] = line[:c] + YOU + line[c + 1:]
+            key = (rows[r], c, NUT)
+            rows[r] = drawn.get(key) or self._draw(key)
+        r = self.r
+        key = (rows[r], self.c, YOU)
+        rows[r] = drawn.get(key) or self._draw(key)
         return rows
 
 

@@ -163,11 +163,15 @@ class RiverRaid(ArcadeTask):
 
     def _grid(self) -> list[str]:
         rows = self.strip.rows[:]
+        self._grids += 1
+        drawn = self._drawn   # (each row remembered: see ``_draw``)
         for s in self.gun.shots:               # (shots fly up inside the map)
-            line = rows[s.r]
-            rows[s.r] = line[:s.c] + SHOT + line[s.c + 1:]
-        line = rows[self.jet_r]
-        rows[self.jet_r] = line[:self.col] + JET + line[self.col + 1:]
+            r = s.r
+            key = (rows[r], s.c, SHOT)
+            rows[r] = drawn.get(key) or self._draw(key)
+        r = self.jet_r
+        key = (rows[r], self.col, JET)
+        rows[r] = drawn.get(key) or self._draw(key)
         return rows
 
     def _extra_hud(self) -> str:

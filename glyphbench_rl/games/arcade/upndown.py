@@ -146,11 +146,15 @@ class UpNDown(ArcadeTask):
 
     def _grid(self) -> list[str]:
         rows = self.strip.rows[:]
+        self._grids += 1
+        drawn = self._drawn   # (each row remembered: see ``_draw``)
         for car in self.cars:                  # (cars drive on the road, inside the view)
-            line = rows[car.r]
-            rows[car.r] = line[:car.c] + CAR + line[car.c + 1:]
-        r, c = self.r, self.col
-        rows[r] = rows[r][:c] + (AIR if self.tick < self.landing else BUGGY) + rows[r][c + 1:]
+            r = car.r
+            key = (rows[r], car.c, CAR)
+            rows[r] = drawn.get(key) or self._draw(key)
+        r = self.r
+        key = (rows[r], self.col, AIR if self.tick < self.landing else BUGGY)
+        rows[r] = drawn.get(key) or self._draw(key)
         return rows
 
 
