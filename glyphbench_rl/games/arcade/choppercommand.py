@@ -156,11 +156,12 @@ class ChopperCommand(Flyer, ArcadeTask):
                     ground = ground[:c] + TRUCK + ground[c + 1:]
             self._ground_key, self._ground = key, ground
         rows[-1] = self._ground
+        drawn = self._drawn   # (each row remembered: see ``_draw``)
         for e in self.enemies:                 # (enemies fly between the top and the ground)
             c = (e.c - left) % w
             if c < view:
-                line = rows[e.r]
-                rows[e.r] = line[:c] + ENEMY + line[c + 1:]
+                key = (rows[e.r], c, ENEMY)
+                rows[e.r] = drawn.get(key) or self._draw(key)
         return self.fly_draw(rows)
 
 
