@@ -174,6 +174,7 @@ class ArcadeTask(GlyphTask):
     _extra: ClassVar[bool] = False   # set per game class: it overrides _extra_hud
 
     _slides: ClassVar[bool] = False   # set per game class: it overrides _rows
+    inside: ClassVar[bool] = False    # every sprite is always inside the rows (``_grid`` tests none)
 
     def __init_subclass__(cls, **kwargs) -> None:
         super().__init_subclass__(**kwargs)
@@ -262,9 +263,14 @@ class ArcadeTask(GlyphTask):
 
     def _grid(self) -> list[str]:
         rows = self._rows() if self._slides else self.still[:]
-        h = len(rows)
         self._grids += 1
         drawn = self._drawn
+        if self.inside:
+            for r, c, g in self._sprites():
+                key = (rows[r], c, g)
+                rows[r] = drawn.get(key) or self._draw(key)
+            return rows
+        h = len(rows)
         for r, c, g in self._sprites():   # a few movers: one cell each into its row
             if 0 <= r < h:
                 line = rows[r]

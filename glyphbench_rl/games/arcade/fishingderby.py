@@ -50,6 +50,7 @@ class FishingDerby(ArcadeTask):
     ACTIONS = ACTIONS
     Params = DerbyParams
     pattern = "C"
+    inside = True    # (the shark, hooks and fish stay in the water)
     glyphs = {EMPTY: "water", SURFACE: "surface", FISH: "fish", HOOKED: "hooked fish", SHARK: "shark",
               YOU: "your hook", CPU: "rival's hook"}
 

@@ -51,6 +51,7 @@ class IceHockey(ArcadeTask):
     ACTIONS = ACTIONS
     Params = HockeyParams
     pattern = "C"
+    inside = True    # (skaters and puck stay on the rink)
     glyphs = {EMPTY: "ice", BOARD: "board", MOUTH: "goal mouth", PUCK: "puck", YOU: "you", CPU: "opponent"}
 
     def _still(self) -> list[str]:
