@@ -81,6 +81,8 @@ class ArenaTask(ArcadeTask):
         self.gun = Gun(cooldown=1, speed=p.shot_speed, reach=p.reach, limit=1)
         self.shells = Gun(cooldown=max(1, p.volley), speed=1, reach=max(p.width, p.height), limit=2)
         self.air = Countdown(p.air) if p.air else None
+        if type(self)._extra_hud is ArenaTask._extra_hud:   # (no air: nothing to add to the HUD)
+            self._extra = self.air is not None
         self.foes: list[Body] = []
         self.kills = 0
 

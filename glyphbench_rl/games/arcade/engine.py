@@ -171,7 +171,8 @@ class ArcadeTask(GlyphTask):
     Params: ClassVar[type] = ArcadeParams
     pattern: ClassVar[str] = "A"
     default_max_turns = 200
-    _extra: ClassVar[bool] = False   # set per game class: it overrides _extra_hud
+    _extra: ClassVar[bool] = False   # set per game class: it overrides _extra_hud (cleared on
+    # the task in ``_setup`` where its preset never adds anything: no call a turn)
 
     _slides: ClassVar[bool] = False   # set per game class: it overrides _rows
     inside: ClassVar[bool] = False    # every sprite is always inside the rows (``_grid`` tests none)

@@ -70,6 +70,7 @@ class RiverRaid(ArcadeTask):
         self.jet_r, self.col = p.height - 2, p.width // 2
         self.gun = Gun(cooldown=1, speed=2, reach=p.height, limit=1)
         self.pacer, self.fuel = Pacer(p.every), Countdown(p.fuel)
+        self._extra = bool(p.fuel)   # (no fuel: nothing to add to the HUD)
         self.spawned = self.lost = self.since = self.placed = 0
         self.bridge_built = False
         self.strip.preroll(p.height - 4, self._line)

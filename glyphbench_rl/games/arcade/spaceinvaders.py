@@ -197,7 +197,9 @@ class SpaceInvaders(ArcadeTask):
             self._paint(rows, self.gun.shots, SHOT)
         if self.bombs.shots:
             self._paint(rows, self.bombs.shots, BOMB)
-        self._put(rows, self.params.height - 1, self.col, CANNON)
+        r = self.params.height - 1   # (the cannon, always on the bottom row)
+        key = (rows[r], self.col, CANNON)
+        rows[r] = self._drawn.get(key) or self._draw(key)
         return rows
 
     def _sprites(self):
