@@ -76,7 +76,7 @@ class ChopperCommand(Flyer, ArcadeTask):
     def _play(self, action: int) -> None:
         p = self.params
         self.fly(action, p.height - 2)
-        if self._shots() or self._touch():
+        if (self.gun.shots and self._shots()) or self._touch():   # (no call without shots)
             return
         if p.convoy and self.tick % p.convoy == 0:
             self.trucks = [(t + 1) % p.world for t in self.trucks]
@@ -116,8 +116,7 @@ class ChopperCommand(Flyer, ArcadeTask):
             self.say("A truck was destroyed!")
 
     def _shots(self) -> bool:
-        if self.gun.shots:
-            fly_shots(self.gun, self._shot_hits, self._shot_down)
+        fly_shots(self.gun, self._shot_hits, self._shot_down)
         return self.done
 
     def _shot_down(self, r: int, c: int) -> None:
