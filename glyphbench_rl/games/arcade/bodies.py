@@ -222,7 +222,8 @@ class Countdown:
         self.full = self.left = full
 
     def tick(self, amount: int = 1) -> bool:
-        self.left = max(0, self.left - amount)
+        left = self.left - amount
+        self.left = left if left > 0 else 0   # (max written out: this runs every turn)
         return self.left == 0
 
     def refill(self) -> None:
