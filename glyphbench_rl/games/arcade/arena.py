@@ -276,7 +276,7 @@ class ArenaTask(ArcadeTask):
         if not shells.shots and tick < shells.ready:
             return False
         pr, pc = self.r, self.c
-        if shells.ready_at(tick):
+        if tick >= shells.ready and len(shells.shots) < shells.limit:   # (ready_at, no call)
             for foe in self.foes:
                 if foe.r == pr or foe.c == pc:
                     dr, dc = chase(foe.r, foe.c, pr, pc)

@@ -114,14 +114,15 @@ class Kangaroo(ArcadeTask):
             self.monkeys = [m for m in self.monkeys if (m[0], m[1]) not in hits]
             return
         dr, dc = STEPS[action]
+        levels = lad.levels   # (``floor_of`` looked up without a call: this runs every turn)
         if dc:
             self.face = dc
-            if lad.floor_of(self.r) is not None:
+            if self.r in levels:
                 c = self.c + dc
                 self.c = 0 if c < 0 else c if c < p.width else p.width - 1
         elif dr and lad.climb(self.r, self.c, dr):
             self.r += dr
-        floor = lad.floor_of(self.r)
+        floor = levels.get(self.r)
         if self.fruit and (self.r, self.c) in self.fruit:
             self.fruit.discard((self.r, self.c))
             self.say("Fruit!")
