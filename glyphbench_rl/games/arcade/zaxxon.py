@@ -69,6 +69,7 @@ class Zaxxon(ArcadeTask):
         self.gun = Gun(cooldown=1, speed=2, reach=p.width, limit=2)
         self.flak = Gun(cooldown=0, speed=1, reach=p.width, limit=4 * p.height)
         self.pacer, self.fuel = Pacer(p.every), Countdown(p.fuel)
+        self._extra = bool(p.fuel)   # (no fuel: nothing to add to the HUD)
         self.since = self.placed = self.walled = 0
         self.volley, self.bullets = Pacer(p.fire_every), set()
         self.strip.preroll(p.width // 2, self._column)
@@ -156,7 +157,7 @@ class Zaxxon(ArcadeTask):
     def _play(self, action: int) -> None:
         p, gun = self.params, self.gun
         r = self.r + MOVES[action]
-        self.r = r = 0 if r < 0 else min(r, p.height - 1)
+        self.r = r = 0 if r < 0 else r if r < p.height else p.height - 1
         if action == FIRE:
             gun.fire(self.tick, r, self.col + 1, 0, 1, SHOT)
         if self._crashed():
