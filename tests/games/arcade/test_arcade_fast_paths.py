@@ -14,7 +14,8 @@ from glyphbench_rl.games.arcade.engine import NONE_DRAWN
 from glyphbench_rl.games.common.lanes import Draws
 
 MEMO_GRIDS = ("alien", "bankheist", "mspacman", "riverraid", "upndown", "kangaroo", "asterix",
-              "stargunner", "choppercommand", "defender", "qbert", "spaceinvaders", "icehockey")
+              "stargunner", "choppercommand", "defender", "qbert", "spaceinvaders", "icehockey",
+              "zaxxon")
 
 
 def test_draws_are_the_stream_in_order_and_a_copy_goes_on_alike():
