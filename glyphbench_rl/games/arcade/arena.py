@@ -81,6 +81,8 @@ class ArenaTask(ArcadeTask):
         self.gun = Gun(cooldown=1, speed=p.shot_speed, reach=p.reach, limit=1)
         self.shells = Gun(cooldown=max(1, p.volley), speed=1, reach=max(p.width, p.height), limit=2)
         self.air = Countdown(p.air) if p.air else None
+        if type(self)._extra_hud is ArenaTask._extra_hud:   # (no air: nothing to add to the HUD)
+            self._extra = self.air is not None
         self.foes: list[Body] = []
         self.kills = 0
 
@@ -274,7 +276,7 @@ class ArenaTask(ArcadeTask):
         if not shells.shots and tick < shells.ready:
             return False
         pr, pc = self.r, self.c
-        if shells.ready_at(tick):
+        if tick >= shells.ready and len(shells.shots) < shells.limit:   # (ready_at, no call)
             for foe in self.foes:
                 if foe.r == pr or foe.c == pc:
                     dr, dc = chase(foe.r, foe.c, pr, pc)
@@ -377,31 +379,33 @@ class ArenaTask(ArcadeTask):
     def _grid(self) -> list[str]:
         """``_sprites()`` drawn on ``_rows()`` straight from the bodies: no (row, col, glyph)
         tuple per mover (that cost as much as the drawing) and no bounds test (every mover of an
-        arena stays inside the field)."""
+        arena stays inside the field), each row remembered (``_draw``)."""
         rows = self._rows() if self._slides else self.still[:]
+        self._grids += 1
+        drawn = self._drawn
         if self._own_movers:
             for r, c, g in self._below():
-                line = rows[r]
-                rows[r] = line[:c] + g + line[c + 1:]
+                key = (rows[r], c, g)
+                rows[r] = drawn.get(key) or self._draw(key)
         for f in self.foes:
-            r, c = f.r, f.c
-            line = rows[r]
-            rows[r] = line[:c] + f.glyph + line[c + 1:]
+            r = f.r
+            key = (rows[r], f.c, f.glyph)
+            rows[r] = drawn.get(key) or self._draw(key)
         for s in self.gun.shots:
-            r, c = s.r, s.c
-            line = rows[r]
-            rows[r] = line[:c] + SHOT + line[c + 1:]
+            r = s.r
+            key = (rows[r], s.c, SHOT)
+            rows[r] = drawn.get(key) or self._draw(key)
         for s in self.shells.shots:
-            r, c = s.r, s.c
-            line = rows[r]
-            rows[r] = line[:c] + SHELL + line[c + 1:]
-        r, c = self.r, self.c
-        line = rows[r]
-        rows[r] = line[:c] + (ARROWS.get(self.face, SHIP) if self.arrows else SHIP) + line[c + 1:]
+            r = s.r
+            key = (rows[r], s.c, SHELL)
+            rows[r] = drawn.get(key) or self._draw(key)
+        r = self.r
+        key = (rows[r], self.c, ARROWS.get(self.face, SHIP) if self.arrows else SHIP)
+        rows[r] = drawn.get(key) or self._draw(key)
         if self._own_movers:
             for r, c, g in self._above():
-                line = rows[r]
-                rows[r] = line[:c] + g + line[c + 1:]
+                key = (rows[r], c, g)
+                rows[r] = drawn.get(key) or self._draw(key)
         return rows
 
     def _extra_hud(self) -> str:

@@ -72,26 +72,31 @@ class Asterix(ArcadeTask):
     def _play(self, action: int) -> None:
         p = self.params
         dr, dc = STEPS[action]
-        self.r = min(p.height - 1, max(0, self.r + dr))
-        self.c = min(p.width - 1, max(0, self.c + dc))
-        if self._meet() or self.done:
+        r, c, w = self.r + dr, self.c + dc, p.width
+        self.r = me_r = 0 if r < 0 else r if r < p.height else p.height - 1
+        self.c = me_c = 0 if c < 0 else c if c < w else w - 1
+        t = self.things[me_r]
+        if t is not None and t.c == me_c and (self._meet() or self.done):   # (a call only to meet)
             return
+        things = self.things   # (after meeting: a life lost clears the lanes)
         step = 1 + (self.score.done // p.faster if p.faster else 0)
-        things, periods, tick, draw, w = self.things, self.periods, self.tick, self.draws.random, p.width
+        periods, tick, draw, spawn = self.periods, self.tick, self.draws.random, p.spawn
         for lane, t in enumerate(things):
             if t is None:
-                if draw() < p.spawn:
+                if draw() < spawn:
                     right = draw() < 0.5
                     kind = LYRE if draw() < p.harm else FOOD
                     things[lane] = Body(lane, 0 if right else w - 1, 0, 1 if right else -1, kind)
             elif tick % periods[lane] == 0:
                 old = t.c
                 t.c = new = old + t.dc * step
-                if lane == self.r and (old <= self.c <= new or new <= self.c <= old):
-                    t.c = self.c                       # a fast thing cannot skip over you
+                if lane == me_r and (old <= me_c <= new or new <= me_c <= old):
+                    t.c = me_c                         # a fast thing cannot skip over you
                 elif not 0 <= new < w:
                     things[lane] = None
-        self._meet()
+        t = things[me_r]
+        if t is not None and t.c == me_c:
+            self._meet()
 
     def _sprites(self):
         out = [(t.r, t.c, t.glyph) for t in self.things if t is not None]
@@ -99,15 +104,19 @@ class Asterix(ArcadeTask):
         return out
 
     def _grid(self) -> list[str]:
-        """``_sprites()`` drawn straight from the things (all inside the field)."""
+        """``_sprites()`` drawn straight from the things (all inside the field), each row
+        remembered (``_draw``)."""
         rows = self.still[:]
+        self._grids += 1
+        drawn = self._drawn
         for t in self.things:
             if t is not None:
-                c, line = t.c, rows[t.r]
-                rows[t.r] = line[:c] + t.glyph + line[c + 1:]
-        r, c = self.r, self.c
-        line = rows[r]
-        rows[r] = line[:c] + YOU + line[c + 1:]
+                r = t.r
+                key = (rows[r], t.c, t.glyph)
+                rows[r] = drawn.get(key) or self._draw(key)
+        r = self.r
+        key = (rows[r], self.c, YOU)
+        rows[r] = drawn.get(key) or self._draw(key)
         return rows
 
 

@@ -71,6 +71,7 @@ class BankHeist(MazeTask):
                                                  default=99) >= p.near]
         self.enter(safe[int(rng.integers(len(safe)))], cops)
         self.tank = Countdown(p.gas)
+        self._extra = bool(p.gas)   # (no gas: nothing to add to the HUD)
         self.bomb = None                   # (row, col, tick of the blast)
         self._open_bank()
 

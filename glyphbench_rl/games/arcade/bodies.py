@@ -175,7 +175,9 @@ class Formation:
         return [(t + i, l + j * g) for i, j in self.shape()[1]]
 
     def bottom(self) -> int:
-        return self.top + self.shape()[4] if self.alive else -1
+        if not self.alive:
+            return -1
+        return self.top + (self._shape or self.shape())[4]   # (no call while the shape stands)
 
     def tick(self, turn: int) -> None:
         down = self.advance and turn % self.advance == 0
@@ -220,7 +222,8 @@ class Countdown:
         self.full = self.left = full
 
     def tick(self, amount: int = 1) -> bool:
-        self.left = max(0, self.left - amount)
+        left = self.left - amount
+        self.left = left if left > 0 else 0   # (max written out: this runs every turn)
         return self.left == 0
 
     def refill(self) -> None:

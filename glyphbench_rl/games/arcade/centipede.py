@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from ...core.params import param, require
 from .bodies import Body
 from .engine import EMPTY, register_arcade
-from .shooter import CANNON, SHOT, Shooter, ShooterParams, per, shooter_actions
+from .shooter import BOMB, CANNON, SHOT, Shooter, ShooterParams, per, shooter_actions
 
 HEAD, BODY, MUSH, SPIDER = "O", "o", "#", "X"
 UP, DOWN = 4, 5

@@ -217,18 +217,20 @@ class MazeTask(ArcadeTask):
 
     def _grid(self) -> list[str]:
         """``_sprites()`` drawn on ``_rows()`` straight from the bodies (no tuple per mover, no
-        bounds test: everything walks the maze)."""
+        bounds test: everything walks the maze), each row remembered (``_draw``)."""
         rows = self._rows() if self._slides else self.still[:]
+        self._grids += 1
+        drawn = self._drawn
         if self._own_things:
-            for r, c, ch in self._below():
-                line = rows[r]
-                rows[r] = line[:c] + ch + line[c + 1:]
+            for r, c, g in self._below():
+                key = (rows[r], c, g)
+                rows[r] = drawn.get(key) or self._draw(key)
         scared = self.tick < self.scared_until
         for g in self.ghosts:
-            r, c = g.r, g.c
-            line = rows[r]
-            rows[r] = line[:c] + (self.scared_glyph if scared and g.data[0] == CHASE else g.glyph) + line[c + 1:]
-        r, c = self.r, self.c
-        line = rows[r]
-        rows[r] = line[:c] + self.player_glyph + line[c + 1:]
+            r = g.r
+            key = (rows[r], g.c, self.scared_glyph if scared and g.data[0] == CHASE else g.glyph)
+            rows[r] = drawn.get(key) or self._draw(key)
+        r = self.r
+        key = (rows[r], self.c, self.player_glyph)
+        rows[r] = drawn.get(key) or self._draw(key)
         return rows

@@ -76,7 +76,7 @@ class ChopperCommand(Flyer, ArcadeTask):
     def _play(self, action: int) -> None:
         p = self.params
         self.fly(action, p.height - 2)
-        if self._shots() or self._touch():
+        if (self.gun.shots and self._shots()) or self._touch():   # (no call without shots)
             return
         if p.convoy and self.tick % p.convoy == 0:
             self.trucks = [(t + 1) % p.world for t in self.trucks]
@@ -116,8 +116,7 @@ class ChopperCommand(Flyer, ArcadeTask):
             self.say("A truck was destroyed!")
 
     def _shots(self) -> bool:
-        if self.gun.shots:
-            fly_shots(self.gun, self._shot_hits, self._shot_down)
+        fly_shots(self.gun, self._shot_hits, self._shot_down)
         return self.done
 
     def _shot_down(self, r: int, c: int) -> None:
@@ -156,11 +155,12 @@ class ChopperCommand(Flyer, ArcadeTask):
                     ground = ground[:c] + TRUCK + ground[c + 1:]
             self._ground_key, self._ground = key, ground
         rows[-1] = self._ground
+        drawn = self._drawn   # (each row remembered: see ``_draw``)
         for e in self.enemies:                 # (enemies fly between the top and the ground)
             c = (e.c - left) % w
             if c < view:
-                line = rows[e.r]
-                rows[e.r] = line[:c] + ENEMY + line[c + 1:]
+                key = (rows[e.r], c, ENEMY)
+                rows[e.r] = drawn.get(key) or self._draw(key)
         return self.fly_draw(rows)
 
 

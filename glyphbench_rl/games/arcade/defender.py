@@ -165,17 +165,18 @@ class Defender(Flyer, ArcadeTask):
 
     def _grid(self) -> list[str]:
         rows, left, w, view = self.fly_view()
+        drawn = self._drawn   # (each row remembered: see ``_draw``)
         for m in self.people:                  # (humans and landers keep to the rows)
             if m.data != RIDE:
                 c = (m.c - left) % w
                 if c < view:
-                    line = rows[m.r]
-                    rows[m.r] = line[:c] + HUMAN + line[c + 1:]
+                    key = (rows[m.r], c, HUMAN)
+                    rows[m.r] = drawn.get(key) or self._draw(key)
         for lander in self.landers:
             c = (lander.c - left) % w
             if c < view:
-                line = rows[lander.r]
-                rows[lander.r] = line[:c] + LANDER + line[c + 1:]
+                key = (rows[lander.r], c, LANDER)
+                rows[lander.r] = drawn.get(key) or self._draw(key)
         return self.fly_draw(rows)
 
     def _extra_hud(self) -> str:

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 from ...core.actions import ActionSet
 from ...core.params import param, require
-from .duel import clamp, pursue
+from .duel import pursue
 from .engine import EMPTY, ArcadeParams, ArcadeTask, register_arcade
 
 SURFACE, FISH, HOOKED, SHARK, YOU, CPU = "~", "f", "F", "S", "J", "K"
@@ -50,6 +50,7 @@ class FishingDerby(ArcadeTask):
     ACTIONS = ACTIONS
     Params = DerbyParams
     pattern = "C"
+    inside = True    # (the shark, hooks and fish stay in the water)
     glyphs = {EMPTY: "water", SURFACE: "surface", FISH: "fish", HOOKED: "hooked fish", SHARK: "shark",
               YOU: "your hook", CPU: "rival's hook"}
 

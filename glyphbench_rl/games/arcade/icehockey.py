@@ -51,6 +51,7 @@ class IceHockey(ArcadeTask):
     ACTIONS = ACTIONS
     Params = HockeyParams
     pattern = "C"
+    inside = True    # (skaters and puck stay on the rink)
     glyphs = {EMPTY: "ice", BOARD: "board", MOUTH: "goal mouth", PUCK: "puck", YOU: "you", CPU: "opponent"}
 
     def _still(self) -> list[str]:
@@ -78,7 +79,9 @@ class IceHockey(ArcadeTask):
         if not dr and not dc:                              # (a skater is always on the ice)
             return
         p = self.params
-        r, c = clamp(who[0] + dr, 1, p.height - 2), clamp(who[1] + dc, 0, p.width - 1)
+        r, c, bottom, right = who[0] + dr, who[1] + dc, p.height - 2, p.width - 1
+        r = 1 if r < 1 else bottom if r > bottom else r      # (clamp written out: a call a skate)
+        c = 0 if c < 0 else right if c > right else c
         if r == other[0] and c == other[1] and who is self.cpu and dr:   # blocked head-on: it steps around
             r, c = who[0], clamp(who[1] + (1 if who[1] < p.width // 2 else -1), 0, p.width - 1)
         if r != other[0] or c != other[1]:
@@ -93,11 +96,10 @@ class IceHockey(ArcadeTask):
 
     def _play(self, action: int) -> None:
         p, pk, me, cpu, has = self.params, self.puck, self.me, self.cpu, self.has
-        beside = abs(me[0] - cpu[0]) + abs(me[1] - cpu[1]) == 1
         if action == SHOOT:
             if has.holder == "you":
                 self._shoot(me, -1)
-            elif has.holder == "cpu" and beside:
+            elif has.holder == "cpu" and abs(me[0] - cpu[0]) + abs(me[1] - cpu[1]) == 1:   # beside
                 has.give("you")
                 self.say("You poke the puck away.")
         else:
@@ -108,8 +110,8 @@ class IceHockey(ArcadeTask):
             else:
                 self._skate(cpu, me, *pursue(cpu[0], cpu[1], p.height - 2, self.left + p.mouth // 2, p.chance, self.draws))
         else:
-            target = (me[0], me[1]) if has.holder == "you" else (pk.r, pk.c)
-            self._skate(cpu, me, *pursue(cpu[0], cpu[1], *target, p.chance, self.draws))
+            tr, tc = (me[0], me[1]) if has.holder == "you" else (pk.r, pk.c)
+            self._skate(cpu, me, *pursue(cpu[0], cpu[1], tr, tc, p.chance, self.draws))
             if has.holder == "you" and abs(me[0] - cpu[0]) + abs(me[1] - cpu[1]) == 1 and self.draws.random() < p.poke:
                 has.give("cpu")
                 self.say("The opponent pokes the puck away.")
@@ -133,12 +135,13 @@ class IceHockey(ArcadeTask):
         self._pickup()
 
     def _pickup(self) -> bool:
-        pk = self.puck
-        for side, who in (("you", self.me), ("cpu", self.cpu)):
-            if who[0] == pk.r and who[1] == pk.c:
-                self.has.give(side)
-                return True
-        return False
+        pk, me, cpu = self.puck, self.me, self.cpu
+        side = ("you" if me[0] == pk.r and me[1] == pk.c else
+                "cpu" if cpu[0] == pk.r and cpu[1] == pk.c else None)
+        if side is None:
+            return False
+        self.has.give(side)
+        return True
 
     def _goal(self, mine: bool) -> None:
         self.say("You score!" if mine else "The opponent scores.")

@@ -114,14 +114,16 @@ class Kangaroo(ArcadeTask):
             self.monkeys = [m for m in self.monkeys if (m[0], m[1]) not in hits]
             return
         dr, dc = STEPS[action]
+        levels = lad.levels   # (``floor_of`` looked up without a call: this runs every turn)
         if dc:
             self.face = dc
-            if lad.floor_of(self.r) is not None:
-                self.c = min(p.width - 1, max(0, self.c + dc))
+            if self.r in levels:
+                c = self.c + dc
+                self.c = 0 if c < 0 else c if c < p.width else p.width - 1
         elif dr and lad.climb(self.r, self.c, dr):
             self.r += dr
-        floor = lad.floor_of(self.r)
-        if (self.r, self.c) in self.fruit:
+        floor = levels.get(self.r)
+        if self.fruit and (self.r, self.c) in self.fruit:
             self.fruit.discard((self.r, self.c))
             self.say("Fruit!")
             self.score.gain()
@@ -159,23 +161,26 @@ class Kangaroo(ArcadeTask):
         return out
 
     def _grid(self) -> list[str]:
-        """``_sprites()`` drawn straight from the positions (all inside the building)."""
+        """``_sprites()`` drawn straight from the positions (all inside the building), each row
+        remembered (``_draw``)."""
         rows = self.still[:]
+        self._grids += 1
+        drawn = self._drawn
         for r, c in self.fruit:
-            line = rows[r]
-            rows[r] = line[:c] + FRUIT + line[c + 1:]
+            key = (rows[r], c, FRUIT)
+            rows[r] = drawn.get(key) or self._draw(key)
         if not self.params.floors_pay:
             r = self.ladders.floors[-1]
             rows[r] = rows[r][:-1] + JOEY
         for r, c, _ in self.monkeys:
-            line = rows[r]
-            rows[r] = line[:c] + MONKEY + line[c + 1:]
+            key = (rows[r], c, MONKEY)
+            rows[r] = drawn.get(key) or self._draw(key)
         for r, c in self.nuts:
-            line = rows[r]
-            rows[r] = line[:c] + NUT + line[c + 1:]
-        r, c = self.r, self.c
-        line = rows[r]
-        rows[r] = line[:c] + YOU + line[c + 1:]
+            key = (rows[r], c, NUT)
+            rows[r] = drawn.get(key) or self._draw(key)
+        r = self.r
+        key = (rows[r], self.c, YOU)
+        rows[r] = drawn.get(key) or self._draw(key)
         return rows
 
 

@@ -44,6 +44,7 @@ class Pong(ArcadeTask):
     ACTIONS = ACTIONS
     Params = PongParams
     pattern = "C"
+    inside = True    # (the ball stays in the court)
     glyphs = {EMPTY: "court", WALL: "wall", BALL: "ball", YOU: "your paddle", CPU: "opponent paddle"}
 
     def prompt_fields(self) -> dict:
@@ -83,10 +84,14 @@ class Pong(ArcadeTask):
     def _play(self, action: int) -> None:
         p, b = self.params, self.ball
         low = p.height - 1 - p.paddle
-        self.me = min(max(1, self.me + MOVES[action]), low)
-        self.cpu = min(max(1, self.cpu + track(self.cpu + p.paddle // 2, b.r, p.chance, self.draws)), low)
+        me = self.me + MOVES[action]                # (min(max(1, .), low) written out)
+        me = me if me > 1 else 1
+        self.me = me if me < low else low
+        cpu = self.cpu + track(self.cpu + p.paddle // 2, b.r, p.chance, self.draws)
+        cpu = cpu if cpu > 1 else 1
+        self.cpu = cpu if cpu < low else low
         speed = 1 + (self.hits // p.speedup if p.speedup else 0)
-        speed = min(speed, p.top_speed)
+        speed = speed if speed < p.top_speed else p.top_speed
         bottom, right = p.height - 1, p.width - 2
         for _ in range(speed):
             if b.r + b.dr == 0 or b.r + b.dr == bottom:

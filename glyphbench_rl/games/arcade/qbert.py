@@ -103,16 +103,19 @@ class Qbert(ArcadeTask):
         return out
 
     def _grid(self) -> list[str]:
-        """``_sprites()`` drawn straight from the cubes (balls and you are always on one)."""
+        """``_sprites()`` drawn straight from the cubes (balls and you are always on one), each
+        row remembered (``_draw``)."""
         rows, top, apex = self.still[:], self.pyramid.top, self.pyramid.apex
+        self._grids += 1
+        drawn = self._drawn
         for k, i in self.balls:
-            r, c = top + k, apex - k + 2 * i
-            line = rows[r]
-            rows[r] = line[:c] + BALL + line[c + 1:]
+            r = top + k
+            key = (rows[r], apex - k + 2 * i, BALL)
+            rows[r] = drawn.get(key) or self._draw(key)
         k, i = self.cube
-        r, c = top + k, apex - k + 2 * i
-        line = rows[r]
-        rows[r] = line[:c] + YOU + line[c + 1:]
+        r = top + k
+        key = (rows[r], apex - k + 2 * i, YOU)
+        rows[r] = drawn.get(key) or self._draw(key)
         return rows
 
 

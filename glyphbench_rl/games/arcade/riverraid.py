@@ -15,6 +15,7 @@ from .scroller import Channel, Pacer, Strip, banks_fit, fly_shots, put_one
 
 JET, SHIP, HELI, FUEL, BANK, BRIDGE, SHOT = "A", "S", "H", "F", "#", "=", "|"
 ENEMIES = (SHIP, HELI)
+CLEAR = EMPTY + BRIDGE   # what a shot flies through
 ACTIONS = ActionSet([("NOOP", "fly straight"), ("LEFT", "bank one cell left"),
                      ("RIGHT", "bank one cell right"), ("FIRE", "shoot straight up the river")],
                     noop="NOOP")
@@ -69,6 +70,7 @@ class RiverRaid(ArcadeTask):
         self.jet_r, self.col = p.height - 2, p.width // 2
         self.gun = Gun(cooldown=1, speed=2, reach=p.height, limit=1)
         self.pacer, self.fuel = Pacer(p.every), Countdown(p.fuel)
+        self._extra = bool(p.fuel)   # (no fuel: nothing to add to the HUD)
         self.spawned = self.lost = self.since = self.placed = 0
         self.bridge_built = False
         self.strip.preroll(p.height - 4, self._line)
@@ -92,10 +94,6 @@ class RiverRaid(ArcadeTask):
         self.spawned += 1
         return put_one(line, c, SHIP if self.draws.random() < 0.5 else HELI)
 
-    def _shot_hits(self, r: int, c: int) -> bool:
-        """What stops a shot flying up its column (always on the map's columns)."""
-        return r < 0 or self.strip.rows[r][c] not in (EMPTY, BRIDGE)
-
     def _shot_at(self, r: int, c: int) -> None:
         if r >= 0:
             self._strike(r, c)
@@ -112,20 +110,22 @@ class RiverRaid(ArcadeTask):
     def _play(self, action: int) -> None:
         p = self.params
         c = self.col + MOVES[action]
-        self.col = 0 if c < 0 else min(c, p.width - 1)
+        self.col = 0 if c < 0 else c if c < p.width else p.width - 1
+        gun = self.gun
         if action == FIRE:
-            self.gun.fire(self.tick, self.jet_r - 1, self.col, -1, 0, SHOT)
-        if self.gun.shots:
-            fly_shots(self.gun, self._shot_hits, self._shot_at)
-        if self.done or self._crashed():
+            gun.fire(self.tick, self.jet_r - 1, self.col, -1, 0, SHOT)
+        if gun.shots:   # (a shot flies up its column, stopped past the top or by what is not water)
+            fly_shots(gun, None, self._shot_at, self.strip.rows, CLEAR)
+        if self.done or (self.strip.rows[self.jet_r][self.col] != EMPTY and self._crashed()):
             return
         if self.pacer.due(self.tick):
             gone = self.strip.scroll(self._line())
             passed = gone.count(SHIP) + gone.count(HELI)
             if passed:
                 self.score.gain(passed)
-            for shot in self.gun.shots:
-                if self._shot_hits(shot.r, shot.c):
+            rows = self.strip.rows
+            for shot in gun.shots:   # (what scrolled onto a shot stops it)
+                if rows[shot.r][shot.c] not in CLEAR:
                     self._strike(shot.r, shot.c)
                     shot.data = 0
             if self.done or self._crashed():
@@ -164,11 +164,15 @@ class RiverRaid(ArcadeTask):
 
     def _grid(self) -> list[str]:
         rows = self.strip.rows[:]
+        self._grids += 1
+        drawn = self._drawn   # (each row remembered: see ``_draw``)
         for s in self.gun.shots:               # (shots fly up inside the map)
-            line = rows[s.r]
-            rows[s.r] = line[:s.c] + SHOT + line[s.c + 1:]
-        line = rows[self.jet_r]
-        rows[self.jet_r] = line[:self.col] + JET + line[self.col + 1:]
+            r = s.r
+            key = (rows[r], s.c, SHOT)
+            rows[r] = drawn.get(key) or self._draw(key)
+        r = self.jet_r
+        key = (rows[r], self.col, JET)
+        rows[r] = drawn.get(key) or self._draw(key)
         return rows
 
     def _extra_hud(self) -> str:

@@ -138,20 +138,22 @@ def put_one(line: str, c: int, ch: str) -> str:
     return line[:c] + ch + line[c + 1:]
 
 
-def fly_shots(gun: Gun, hit, strike) -> None:
+def fly_shots(gun: Gun, hit, strike, rows: list[str] | None = None, clear: str = "") -> None:
     """``gun.advance(hit)`` for shots that move, at most one cell a step on each axis (every
     shot here), without a generator: each shot steps cell by cell, ``speed`` cells, and stops
     at the first cell where ``hit(r, c)`` is true; ``strike(r, c)`` then hears of it at once (as
     a caller looping over ``advance`` would) and returns True to stop the volley (the episode
-    ended: like a caller leaving the loop, the gun keeps its shots as they stand)."""
-    kept, speed = [], gun.speed
+    ended: like a caller leaving the loop, the gun keeps its shots as they stand). With ``hit``
+    None, a shot stops off the ``rows`` (above or below them: shots fly inside their columns)
+    or on a glyph not in ``clear``, found in the loop (no call per cell)."""
+    kept, speed, h = [], gun.speed, len(rows) if rows is not None else 0
     for shot in gun.shots:
         dr, dc, r, c = shot.dr, shot.dc, shot.r, shot.c
         struck = False
         for _ in range(speed):
             r += dr
             c += dc
-            if hit(r, c):
+            if (not 0 <= r < h or rows[r][c] not in clear) if hit is None else hit(r, c):
                 struck = True
                 break
             shot.r, shot.c = r, c
@@ -234,32 +236,36 @@ class Flyer:
         if dc:
             self.face = dc
         r = self.r + dr
-        self.r = 0 if r < 0 else min(r, lowest)
+        self.r = 0 if r < 0 else r if r < lowest else lowest
         self.x = (self.x + dc) % self.params.world
         if action == FLY_FIRE:
             self.gun.fire(self.tick, self.r, self.x, 0, self.face, FLY_SHOT)
 
     def fly_view(self) -> tuple[list[str], int, int, int]:
         """The camera follows you; then the still rows to draw on (a copy), the view's first
-        world column, the world's width and the view's width."""
+        world column, the world's width and the view's width (the grid counted, for
+        ``ArcadeTask._draw``)."""
+        self._grids += 1
         cam = self.camera
         cam.follow(self.x)
         return self.still[:], cam.left, self.params.world, cam.view
 
     def fly_draw(self, rows: list[str]) -> list[str]:
         """Draw the shots (bar one still on your cell) and the ship on ``rows``, through
-        ``self.camera`` (moved to follow you by the caller); all fly inside the rows."""
+        ``self.camera`` (moved to follow you by the caller); all fly inside the rows, each row
+        remembered (``ArcadeTask._draw``)."""
         left, w, x, view = self.camera.left, self.params.world, self.x, len(rows[0])
+        drawn = self._drawn
         for s in self.gun.shots:
             if s.c != x:
                 c = (s.c - left) % w
                 if c < view:
-                    line = rows[s.r]
-                    rows[s.r] = line[:c] + FLY_SHOT + line[c + 1:]
+                    key = (rows[s.r], c, FLY_SHOT)
+                    rows[s.r] = drawn.get(key) or self._draw(key)
         c = (x - left) % w
         if c < view:
-            line = rows[self.r]
-            rows[self.r] = line[:c] + (RIGHT_ME if self.face > 0 else LEFT_ME) + line[c + 1:]
+            key = (rows[self.r], c, RIGHT_ME if self.face > 0 else LEFT_ME)
+            rows[self.r] = drawn.get(key) or self._draw(key)
         return rows
 
 

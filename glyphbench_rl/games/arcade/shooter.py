@@ -26,7 +26,7 @@ from dataclasses import dataclass
 from ...core.actions import ActionSet
 from ...core.params import param
 from .bodies import Body, Gun, sweep
-from .engine import ArcadeParams, ArcadeTask
+from .engine import NONE_DRAWN, ArcadeParams, ArcadeTask
 
 NOOP, LEFT, RIGHT, FIRE = 0, 1, 2, 3
 CANNON, SHOT, BOMB = "A", "|", "!"
@@ -345,7 +345,7 @@ class Shooter(ArcadeTask):
         rows = self._rows() if self._slides else self.still[:]
         self._grids += 1
         drawn = self._drawn
-        if drawn is None:   # (rows too varied to remember: ArcadeTask._paint draws them afresh)
+        if drawn is NONE_DRAWN:   # (rows too varied to remember: ArcadeTask._paint draws them afresh)
             paint = self._paint
             paint(rows, self.pack.bodies)
             if self.gun.shots:

@@ -94,7 +94,8 @@ class SpaceInvaders(ArcadeTask):
     def _play(self, action: int) -> None:
         p = self.params
         if MOVES[action]:
-            self.col = min(p.width - 1, max(0, self.col + MOVES[action]))
+            c = self.col + MOVES[action]
+            self.col = 0 if c < 0 else c if c < p.width else p.width - 1
         elif action == FIRE:
             self.gun.fire(self.tick, p.height - 1, self.col, -1, 0, SHOT)
         self.wave.tick(self.tick)
@@ -196,7 +197,9 @@ class SpaceInvaders(ArcadeTask):
             self._paint(rows, self.gun.shots, SHOT)
         if self.bombs.shots:
             self._paint(rows, self.bombs.shots, BOMB)
-        self._put(rows, self.params.height - 1, self.col, CANNON)
+        r = self.params.height - 1   # (the cannon, always on the bottom row)
+        key = (rows[r], self.col, CANNON)
+        rows[r] = self._drawn.get(key) or self._draw(key)
         return rows
 
     def _sprites(self):

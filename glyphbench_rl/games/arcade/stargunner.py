@@ -11,7 +11,7 @@ from ...core.actions import ActionSet
 from ...core.params import param, require
 from .bodies import Body, Gun
 from .engine import EMPTY, ArcadeParams, ArcadeTask, register_arcade
-from .scroller import Pacer, Strip, put_one, stamp
+from .scroller import Pacer, Strip, stamp
 
 SHIP, ENEMY, SHOT, BOLT, STAR = ">", "E", "-", "~", "*"
 ACTIONS = ActionSet([("NOOP", "hold position"), ("UP", "move one row up"), ("DOWN", "move one row down"),
@@ -87,8 +87,8 @@ class Stargunner(ArcadeTask):
         p = self.params
         dr, dc = MOVES[action]
         r, c = self.r + dr, self.col + dc
-        self.r = 0 if r < 0 else min(r, p.height - 1)
-        self.col = 0 if c < 0 else min(c, p.zone)
+        self.r = 0 if r < 0 else r if r < p.height else p.height - 1
+        self.col = 0 if c < 0 else c if c < p.zone else p.zone
         if action == FIRE:
             self.gun.fire(self.tick, self.r, self.col + 1, 0, 1, SHOT)
         if self._struck():
@@ -103,7 +103,7 @@ class Stargunner(ArcadeTask):
                 e.c -= 1
                 if weave and rand() < weave:
                     r = e.r + (1 if rand() < 0.5 else -1)
-                    e.r = 0 if r < 0 else min(r, low)
+                    e.r = 0 if r < 0 else r if r < low else low
                 if fire and rand() < fire:
                     self.bolts.append(Body(e.r, e.c - 1, glyph=BOLT))
         if self.bolts:
@@ -183,9 +183,15 @@ class Stargunner(ArcadeTask):
             stamp(self.layer, self.enemies, ENEMY)
             self.layer_at = self.moves
         rows = self.layer[:]
-        stamp(rows, self.bolts, BOLT)
-        stamp(rows, self.gun.shots, SHOT)
-        rows[self.r] = put_one(rows[self.r], self.col, SHIP)
+        if self.bolts:
+            stamp(rows, self.bolts, BOLT)
+        if self.gun.shots:
+            stamp(rows, self.gun.shots, SHOT)
+        self._grids += 1
+        drawn = self._drawn   # (the ship's row remembered: see ``_draw``)
+        r = self.r
+        key = (rows[r], self.col, SHIP)
+        rows[r] = drawn.get(key) or self._draw(key)
         return rows
 
 

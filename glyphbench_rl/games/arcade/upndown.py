@@ -89,8 +89,9 @@ class UpNDown(ArcadeTask):
         p = self.params
         dr, dc = MOVES[action]
         r, c = self.r + dr, self.col + dc
-        self.r = min(p.height - 1, max(p.height // 2, r))
-        self.col = 0 if c < 0 else min(c, p.width - 1)
+        top, bottom = p.height // 2, p.height - 1
+        self.r = top if r < top else r if r < bottom else bottom
+        self.col = 0 if c < 0 else c if c < p.width else p.width - 1
         if action == JUMP and self.tick > self.landing:
             self.landing = self.tick + p.air
         scroll = self.pacer.due(self.tick)
@@ -145,11 +146,15 @@ class UpNDown(ArcadeTask):
 
     def _grid(self) -> list[str]:
         rows = self.strip.rows[:]
+        self._grids += 1
+        drawn = self._drawn   # (each row remembered: see ``_draw``)
         for car in self.cars:                  # (cars drive on the road, inside the view)
-            line = rows[car.r]
-            rows[car.r] = line[:car.c] + CAR + line[car.c + 1:]
-        r, c = self.r, self.col
-        rows[r] = rows[r][:c] + (AIR if self.tick < self.landing else BUGGY) + rows[r][c + 1:]
+            r = car.r
+            key = (rows[r], car.c, CAR)
+            rows[r] = drawn.get(key) or self._draw(key)
+        r = self.r
+        key = (rows[r], self.col, AIR if self.tick < self.landing else BUGGY)
+        rows[r] = drawn.get(key) or self._draw(key)
         return rows
 
 

@@ -69,6 +69,7 @@ class Zaxxon(ArcadeTask):
         self.gun = Gun(cooldown=1, speed=2, reach=p.width, limit=2)
         self.flak = Gun(cooldown=0, speed=1, reach=p.width, limit=4 * p.height)
         self.pacer, self.fuel = Pacer(p.every), Countdown(p.fuel)
+        self._extra = bool(p.fuel)   # (no fuel: nothing to add to the HUD)
         self.since = self.placed = self.walled = 0
         self.volley, self.bullets = Pacer(p.fire_every), set()
         self.strip.preroll(p.width // 2, self._column)
@@ -156,10 +157,11 @@ class Zaxxon(ArcadeTask):
     def _play(self, action: int) -> None:
         p, gun = self.params, self.gun
         r = self.r + MOVES[action]
-        self.r = r = 0 if r < 0 else min(r, p.height - 1)
+        self.r = r = 0 if r < 0 else r if r < p.height else p.height - 1
         if action == FIRE:
             gun.fire(self.tick, r, self.col + 1, 0, 1, SHOT)
-        if self._crashed():
+        rows = self.strip.rows
+        if (rows[r][self.col] != EMPTY or self.flak.shots) and self._crashed():   # (a call only then)
             return
         if gun.shots:
             flak = self.flak.shots
@@ -208,20 +210,20 @@ class Zaxxon(ArcadeTask):
 
     def _grid(self) -> list[str]:
         """The strip with the shots and the ship drawn in (all inside the field, bar a turret
-        shot that just left it on the turn it hit you)."""
+        shot that just left it on the turn it hit you), each row remembered (``_draw``: the
+        strip's rows take few forms)."""
         rows = self.strip.rows[:]
+        self._grids += 1
+        drawn = self._drawn
         for b in self.flak.shots:
-            r, c = b.r, b.c
-            if c >= 0:
-                line = rows[r]
-                rows[r] = line[:c] + BULLET + line[c + 1:]
+            if b.c >= 0:
+                key = (rows[b.r], b.c, BULLET)
+                rows[b.r] = drawn.get(key) or self._draw(key)
         for s in self.gun.shots:
-            r, c = s.r, s.c
-            line = rows[r]
-            rows[r] = line[:c] + SHOT + line[c + 1:]
-        r, c = self.r, self.col
-        line = rows[r]
-        rows[r] = line[:c] + SHIP + line[c + 1:]
+            key = (rows[s.r], s.c, SHOT)
+            rows[s.r] = drawn.get(key) or self._draw(key)
+        key = (rows[self.r], self.col, SHIP)
+        rows[self.r] = drawn.get(key) or self._draw(key)
         return rows
 
     def _extra_hud(self) -> str:

@@ -11,7 +11,9 @@
 
 from __future__ import annotations
 
-from typing import Sequence, TypeVar
+from itertools import chain
+from operator import length_hint
+from typing import Iterator, Sequence, TypeVar
 
 import numpy as np
 
@@ -82,24 +84,43 @@ def runs(rng: np.random.Generator, width: int, item: str, empty: str,
 
 class Draws:
     """Uniform floats in [0, 1) from a numpy stream, drawn ``block`` at a time; the sequence is
-    the stream's own, so it is as reproducible as the stream."""
+    the stream's own, so it is as reproducible as the stream. A copy (``copy.deepcopy`` of a
+    task, a pickle) goes on with the same floats as the original, independently."""
 
-    __slots__ = ("stream", "size", "block", "i")
+    __slots__ = ("stream", "_blocks", "random")
 
-    def __init__(self, stream: np.random.Generator, block: int = 256) -> None:
-        self.stream, self.size, self.block, self.i = stream, block, [], 0
-
-    def random(self) -> float:
-        i = self.i
-        if i == len(self.block):
-            self.block, i = self.stream.random(self.size).tolist(), 0
-        self.i = i + 1
-        return self.block[i]
+    def __init__(self, stream: np.random.Generator, block: int = 256, first: list[float] | None = None) -> None:
+        self.stream = stream
+        self._blocks = _Blocks(stream, block, first)
+        # random(): the next float of the blocks chained (a C call: half the cost of a method
+        # indexing a block)
+        self.random = chain.from_iterable(self._blocks).__next__
 
     def below(self, n: int) -> int:
         """A uniform int in [0, n)."""
-        i = self.i   # (random's body: a draw per call of a few a turn)
-        if i == len(self.block):
-            self.block, i = self.stream.random(self.size).tolist(), 0
-        self.i = i + 1
-        return int(self.block[i] * n)
+        return int(self.random() * n)
+
+    def __reduce__(self):
+        blocks = self._blocks
+        left = length_hint(blocks.left)   # (the floats of the block in hand not yet drawn)
+        return Draws, (self.stream, blocks.size, blocks.block[len(blocks.block) - left:])
+
+
+class _Blocks:
+    """The blocks ``Draws`` chains, each drawn from the stream when the last has run out (the
+    first may be given: the rest of a copied block), and the one in hand, to copy from."""
+    __slots__ = ("stream", "size", "block", "left")
+
+    def __init__(self, stream: np.random.Generator, size: int, first: list[float] | None) -> None:
+        self.stream, self.size, self.block = stream, size, first or []
+        self.left = iter(self.block)
+
+    def __iter__(self) -> "_Blocks":
+        return self
+
+    def __next__(self) -> Iterator[float]:
+        if length_hint(self.left):   # (the given first block, not yet handed out)
+            return self.left
+        self.block = self.stream.random(self.size).tolist()
+        self.left = iter(self.block)
+        return self.left
