@@ -155,10 +155,22 @@ _DECODING = "".join(_TABLE.get(code, "\ufffe") for code in range(256))
 
 
 # ---- the grid ----------------------------------------------------------------------------
+#
+# The grid is drawn every step, and numpy's calls cost more than the work on 99 cells, so the
+# window is read in as few calls as possible and what did not change is not worked out again.
+# The window lies in a band of the player's level (its rows, at full width); the band's blocks,
+# items and light are read as three byte strings through memoryviews of the state's arrays (a
+# slice and a copy each, no numpy call) and compared with the band read last time. Only when a
+# byte differs are the band's cell codes worked out again (items over blocks, darkness over
+# both); the window, the player drawn in it, is cut from them once per column offset and facing.
+# Everything remembered is a function of the bytes just read (and the ladder's state), so a map,
+# item or light cell edited in place, or a whole array replaced, shows at once. Mobs and
+# projectiles are read each time (``_mob_codes``): they move every step.
 
 _NECROMANCER = int(BlockType.NECROMANCER)
 _NECROMANCER_VULNERABLE = int(BlockType.NECROMANCER_VULNERABLE)
 _VISIBLE_LIGHT32 = np.float32(LIGHT_VISIBLE)      # (light_map is float32: compare as upstream)
+_LADDER_DOWN = int(ItemType.LADDER_DOWN)
 
 
 def _item_codes(ladder_open: bool) -> bytes:
@@ -170,24 +182,18 @@ def _item_codes(ladder_open: bool) -> bytes:
 
 
 _ITEM_CODES = (_item_codes(False), _item_codes(True))    # by whether the floor's ladder is open
+_OFF_MAP = int(BlockType.OUT_OF_BOUNDS)
+_CENTRE = HALF_R * COLS + HALF_C                  # the player's cell in the window
 _ROW_STARTS = tuple(range(0, ROWS * COLS, COLS))
-_OFF_MAP = bytes((int(BlockType.OUT_OF_BOUNDS),))
-_FULL_LIGHT = np.ones(ROWS * COLS, np.float32).tobytes()     # a fully lit window's light map
-_INT32 = np.dtype(np.int32)
+_FULL_LIGHT = np.float32(1).tobytes()             # one fully lit cell's light
 _LOW = 0 if sys.byteorder == "little" else 3      # (where an int32's low byte is)
 _MEMO_SIZE = 4096
-# a window's light map (float32 bytes) -> its unlit cells (a byte each, 1: unlit); the light map
-# changes only where a torch is placed, and windows recur as the player walks back and forth
+# a band's light map (float32 bytes) -> its unlit cells (a byte each, 1: unlit); the light map
+# changes only where a torch is placed, and bands recur as the player walks back and forth
 _DARKNESS: dict[bytes, bytes] = {}
 # cell codes -> the rows of glyphs (``rows``)
 _ROWS: dict[bytes, tuple[str, ...]] = {}
 _NECROMANCER_BYTES = bytes((_NECROMANCER,)), bytes((_NECROMANCER_VULNERABLE,))
-
-
-def _low_bytes(array: np.ndarray) -> bytes:
-    """The values of a small non-negative integer array (each below 256), one byte each in row
-    order (the slow path of ``_codes``, for arrays not kept as the state keeps them)."""
-    return array.astype(np.uint8).tobytes()
 
 
 def _mark(codes: bytearray, where: bytes, code) -> None:
@@ -225,94 +231,204 @@ def _merge(low: bytes, high: bytes, shift: int) -> bytes:
         len(low), "little")
 
 
-def _codes(state: State) -> bytearray:
-    """The window as cell codes, ROWS * COLS bytes row by row. Few numpy calls (on arrays this
-    small each costs about as much as the work in it): the window's blocks, items and light are
-    each read as bytes once; items and darkness go over the blocks where the window has any,
-    then mobs and projectiles (not on unlit cells), then the player."""
-    level = state.player_level
-    pr, pc = state.player_position.tolist()
-    r0, c0 = pr - HALF_R, pc - HALF_C
-    rows, cols = state.map.shape[1:]
-    ra, rb, ca, cb = max(r0, 0), min(r0 + ROWS, rows), max(c0, 0), min(c0 + COLS, cols)
-    if ra < rb and ca < cb:
-        # the part of the window on the map: blocks, items over them, darkness over all (a
-        # cell is unlit at light <= LIGHT_VISIBLE); most windows have no item and no dark cell
-        window = (level, slice(ra, rb), slice(ca, cb))
-        blocks, items = state.map[window], state.item_map[window]
-        if blocks.dtype == _INT32 and items.dtype == _INT32:     # (as the state keeps them)
-            codes, items = blocks.tobytes()[_LOW::4], items.tobytes()[_LOW::4]
-        else:
-            codes, items = _low_bytes(blocks), _low_bytes(items)
+def _is_usual(blocks: np.ndarray, items: np.ndarray, light: np.ndarray) -> bool:
+    """Whether the three maps are kept as the state keeps them (int32, int32, float32, one
+    shape, C order): then their memory is read as it is."""
+    return (blocks.dtype == np.int32 and items.dtype == np.int32 and light.dtype == np.float32
+            and blocks.ndim == 3 and blocks.shape == items.shape == light.shape
+            and blocks.flags.c_contiguous and items.flags.c_contiguous
+            and light.flags.c_contiguous)
+
+
+def _byte_views(blocks: np.ndarray, items: np.ndarray, light: np.ndarray) -> tuple:
+    """Flat byte memoryviews of the three maps (in the usual layout), then rows and columns."""
+    return (memoryview(blocks).cast("B"), memoryview(items).cast("B"),
+            memoryview(light).cast("B"), *blocks.shape[1:])
+
+
+_held: tuple = ()     # (map, item_map, light_map, their ``_byte_views``) of the state last drawn
+
+
+def _maps(state: State) -> tuple:
+    """``_byte_views`` of the state's map, item map and light map. The views are kept while the
+    state holds the same three arrays (they see every edit in place; a replaced array is another
+    object, and new views are made). Maps in another layout are read through copies in the usual
+    one, made each time: blocks and items as int32 (their low byte, the code, is unchanged), the
+    light as 0 where unlit and 1 where lit (all the view reads of it)."""
+    global _held
+    blocks, items, light = state.map, state.item_map, state.light_map
+    held = _held
+    if held and held[0] is blocks and held[1] is items and held[2] is light:
+        return held[3]
+    if _is_usual(blocks, items, light):
+        views = _byte_views(blocks, items, light)
+        _held = (blocks, items, light, views)
+        return views
+    lit = np.where(light <= _VISIBLE_LIGHT32, np.float32(0), np.float32(1))
+    return _byte_views(np.ascontiguousarray(blocks, np.int32), np.ascontiguousarray(items, np.int32),
+                       np.ascontiguousarray(lit, np.float32))
+
+
+class _Band:
+    """The band of the map the window lies in (rows ``ra`` to ``rb`` of the player's level, at
+    full width) as last read: its bytes, its cell codes (the block, or the item over it, or
+    darkness) and the windows cut from them."""
+
+    __slots__ = ("where", "raw", "ladder", "open", "necromancer", "codes", "windows")
+
+    def __init__(self, where: tuple, raw: tuple[bytes, bytes, bytes], killed: int) -> None:
+        self.where, self.raw = where, raw      # where: (r0, rows, cols); raw: blocks, items, light
+        blocks, items, light = raw
+        codes, items = blocks[_LOW::4], items[_LOW::4]
+        self.ladder = _LADDER_DOWN in items    # (its glyph depends on the floor's kills)
+        self.open = self.ladder and killed >= KILLS_TO_OPEN_LADDER
         if items.count(0) != len(items):
-            open_ = state.monsters_killed.item(level) >= KILLS_TO_OPEN_LADDER
             if not items.translate(None, _BELOW[4]) and not codes.translate(None, _BELOW[64]):
-                codes = _merge(codes, items, 6).translate(_OVERLAYS[open_])
+                codes = _merge(codes, items, 6).translate(_OVERLAYS[self.open])
             else:
                 codes = bytearray(codes)
-                _mark(codes, items, _ITEM_CODES[open_])
-        light = state.light_map[window]
-        lit = light.tobytes()
-        if light.dtype != np.float32 or lit != _FULL_LIGHT[:len(lit)]:
-            # (else the window is in full light: nothing dark)
-            dark = _DARKNESS.get(lit) if light.dtype == np.float32 else None
+                _mark(codes, items, _ITEM_CODES[self.open])
+        if light != _FULL_LIGHT * (len(light) // 4):     # (else fully lit: nothing dark)
+            dark = _DARKNESS.get(light)
             if dark is None:
-                dark = np.less_equal(light, _VISIBLE_LIGHT32).tobytes()
-                if light.dtype == np.float32:
-                    if len(_DARKNESS) >= _MEMO_SIZE:
-                        _DARKNESS.clear()
-                    _DARKNESS[lit] = dark
+                dark = np.less_equal(np.frombuffer(light, np.float32), _VISIBLE_LIGHT32).tobytes()
+                if len(_DARKNESS) >= _MEMO_SIZE:
+                    _DARKNESS.clear()
+                _DARKNESS[light] = dark
             if 1 in dark:
                 if not codes.translate(None, _BELOW[128]):
                     codes = _merge(codes, dark, 7).translate(_DARKEN)
                 else:
                     codes = bytearray(codes)
                     _mark(codes, dark, _DARK_CODE)
-        inside = codes
-    else:
-        inside = b""
-    if len(inside) == ROWS * COLS:
-        codes = bytearray(inside)
-    else:       # cells off the map: their own glyph, lit
-        codes = bytearray(_OFF_MAP * (ROWS * COLS))
-        width, at = cb - ca, ca - c0
-        for j, r in enumerate(range(ra - r0, rb - r0)):
-            codes[r * COLS + at:r * COLS + at + width] = inside[j * width:(j + 1) * width]
-    if level == BOSS_LEVEL and _NECROMANCER in codes and is_boss_vulnerable(state):
-        codes = codes.replace(*_NECROMANCER_BYTES)
+        self.codes = bytes(codes)
+        self.necromancer = _NECROMANCER in self.codes      # (its glyph depends on the fight)
+        # (column offset, player's code, necromancer vulnerable) -> the window's codes and rows
+        self.windows: dict[tuple[int, int, bool], tuple[bytes, tuple[str, ...] | None]] = {}
+
+    def window(self, c0: int, player: int, vulnerable: bool) -> tuple[bytes, tuple[str, ...] | None]:
+        """The window's codes (columns ``c0`` on, the player's code in the middle) and its rows
+        of glyphs (None if a code has no glyph): cut and decoded once."""
+        key = (c0, player, vulnerable)
+        window = self.windows.get(key)
+        if window is None:
+            codes = self._cut(c0, player)
+            if vulnerable:
+                codes = codes.replace(*_NECROMANCER_BYTES)
+            window = self.windows[key] = (codes, _decode(codes))
+        return window
+
+    def _cut(self, c0: int, player: int) -> bytes:
+        r0, rows, cols = self.where
+        band = self.codes
+        ca, cb = max(c0, 0), min(c0 + COLS, cols)
+        off = bytes((_OFF_MAP,))
+        left, right = off * (ca - c0), off * (c0 + COLS - cb)      # cells off the map: their glyph
+        inside = [left + band[i + ca:i + cb] + right for i in range(0, len(band), cols)] \
+            if ca < cb else [off * COLS] * (len(band) // cols if cols else 0)
+        codes = bytearray(off * (COLS * min(max(0, -r0), ROWS)))
+        codes += b"".join(inside)
+        codes += off * (ROWS * COLS - len(codes))
+        codes[_CENTRE] = player
+        return bytes(codes)
+
+
+def _decode(codes: bytes) -> tuple[str, ...] | None:
+    """The rows of glyphs the codes show; None when one has no glyph (decoding raises)."""
+    try:
+        text = _charmap_decode(codes, "strict", _DECODING)[0]
+    except UnicodeDecodeError:
+        return None
+    return tuple([text[i:i + COLS] for i in _ROW_STARTS])
+
+
+_band: _Band | None = None     # the band read last
+
+
+def _mob_codes(state: State, level: int, r0: int, c0: int) -> list[tuple[int, int, int]]:
+    """(row, column, code) in the window whose top left cell is ``(r0, c0)`` of every live mob
+    and projectile of the level inside it, in drawing order (melee, passive and ranged mobs,
+    the mobs' projectiles, the player's: a later one is drawn over an earlier). The one place
+    the view reads how mobs are kept."""
+    marks = []
     for k, mobs in enumerate((state.melee_mobs, state.passive_mobs, state.ranged_mobs,
                               state.mob_projectiles, state.player_projectiles)):
-        live = mobs.mask[level].tolist()
-        if True not in live:
-            continue
-        base = _MOB0 + 8 * k
-        positions, types = mobs.position[level].tolist(), mobs.type_id[level].tolist()
-        for slot, on in enumerate(live):
-            if on:
-                r, c = positions[slot]
-                r -= r0
-                c -= c0
-                if 0 <= r < ROWS and 0 <= c < COLS and codes[r * COLS + c] != _DARK:
-                    codes[r * COLS + c] = base + types[slot]
-    codes[HALF_R * COLS + HALF_C] = _PLAYER0 + (0 if state.is_sleeping else state.player_direction)
-    return codes
+        mask = mobs.mask
+        live = mask.tobytes()     # (bool, one byte a slot: a class with no mob is seen in one call)
+        if 1 in live:
+            slots = mask.shape[1]
+            live = live[level * slots:(level + 1) * slots]
+            if 1 in live:         # (few slots live: their cells read one by one)
+                position, type_id = memoryview(mobs.position), memoryview(mobs.type_id)
+                base = _MOB0 + 8 * k
+                for slot, on in enumerate(live):
+                    if on:
+                        r, c = position[level, slot, 0] - r0, position[level, slot, 1] - c0
+                        if 0 <= r < ROWS and 0 <= c < COLS:
+                            marks.append((r, c, base + type_id[level, slot]))
+    return marks
+
+
+def _window(state: State) -> tuple[bytes, tuple[str, ...] | None, list[tuple[int, int, int]]]:
+    """The window's codes and rows before mobs (blocks, items over them, darkness over both,
+    the necromancer as it shows, the player), and the mobs to draw over them (``_mob_codes``)."""
+    global _band
+    level = state.player_level
+    pr, pc = state.player_position.tolist()
+    r0, c0 = pr - HALF_R, pc - HALF_C
+    blocks, items, light, rows, cols = _maps(state)
+    ra, rb = max(r0, 0), min(r0 + ROWS, rows)
+    if ra < rb:
+        start, end = (level * rows + ra) * cols * 4, (level * rows + rb) * cols * 4
+        raw = (blocks[start:end].tobytes(), items[start:end].tobytes(), light[start:end].tobytes())
+    else:
+        raw = (b"", b"", b"")
+    where = (r0, rows, cols)
+    band = _band
+    if band is None or band.raw != raw or band.where != where or (
+            band.ladder and band.open != (state.monsters_killed.item(level) >= KILLS_TO_OPEN_LADDER)):
+        band = _band = _Band(where, raw, state.monsters_killed.item(level))
+    vulnerable = level == BOSS_LEVEL and band.necromancer and is_boss_vulnerable(state)
+    codes, shown = band.window(c0, _PLAYER0 + (0 if state.is_sleeping else state.player_direction),
+                               vulnerable)
+    return codes, shown, _mob_codes(state, level, r0, c0)
+
+
+def _drawn(codes: bytes, marks: list[tuple[int, int, int]]) -> bytes:
+    """The codes with the mobs drawn over them (not on unlit cells, not on the player)."""
+    shown = bytearray(codes)
+    for r, c, code in marks:
+        i = r * COLS + c
+        if codes[i] != _DARK and i != _CENTRE:
+            shown[i] = code
+    return bytes(shown)
 
 
 def cell_codes(state: State) -> np.ndarray:
     """The window as cell codes (uint8, ROWS x COLS): what each visible cell shows, before the
     glyph lookup (``_TABLE``)."""
-    return np.frombuffer(bytes(_codes(state)), np.uint8).reshape(ROWS, COLS).copy()
+    codes, _, marks = _window(state)
+    return np.frombuffer(_drawn(codes, marks), np.uint8).reshape(ROWS, COLS).copy()
 
 
 def rows(state: State) -> tuple[str, ...]:
-    """The 9 rows of 11 glyphs around the player, as a tuple (remembered by the cell codes)."""
-    codes = bytes(_codes(state))
-    shown = _ROWS.get(codes)
-    if shown is None:
-        text = _charmap_decode(codes, "strict", _DECODING)[0]
-        if len(_ROWS) >= _MEMO_SIZE:
-            _ROWS.clear()
-        shown = _ROWS[codes] = tuple([text[i:i + COLS] for i in _ROW_STARTS])
+    """The 9 rows of 11 glyphs around the player, as a tuple: the window's rows as cut (kept
+    with the band), the glyphs of the mobs in view put in."""
+    codes, shown, marks = _window(state)
+    if shown is None:      # (a code with no glyph: decoding the drawn window raises, or not)
+        text = _charmap_decode(_drawn(codes, marks), "strict", _DECODING)[0]
+        return tuple([text[i:i + COLS] for i in _ROW_STARTS])
+    if marks:
+        lines = list(shown)
+        for r, c, code in marks:
+            i = r * COLS + c
+            if codes[i] != _DARK and i != _CENTRE:
+                glyph = _DECODING[code]
+                if glyph == "\ufffe":       # (no glyph: decoding raises, as it always did)
+                    _charmap_decode(_drawn(codes, marks), "strict", _DECODING)
+                line = lines[r]
+                lines[r] = line[:c] + glyph + line[c + 1:]
+        shown = tuple(lines)
     return shown
 
 
