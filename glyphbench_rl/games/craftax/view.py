@@ -465,33 +465,68 @@ def _number(x: float) -> str:
     return str(int(r)) if r == int(r) else str(r)
 
 
-_HUDS: dict[tuple, str] = {}      # everything the HUD reads -> the HUD (``hud``)
+# The HUD is made every step. It is ``head | place[ | rest]``: the head (vitals, inventory, gear,
+# potions, spells, attributes) changes on few turns; the place (floor, position, facing, light,
+# kills) on most, but only in its position. ``hud`` reads everything each time (an edited state
+# shows at once) and compares it with last turn's: the head is remade only when what it reads
+# was not seen before, and the place's text around the position likewise.
+_HEADS: dict[tuple, str] = {}      # everything the head reads -> the head
+_PLACES: dict[tuple, tuple[str, str]] = {}   # floor, facing, daylight, kills -> text around the position
+_last: list = [None, "", None, ("", "")]     # last turn's head key, head, place key, place
 
 
 def hud(state: State, settings: Settings | None = None) -> str:
     """One line: vitals, inventory, equipment, potions, spells, attributes, floor, position,
-    facing, light and rest state; empty parts left out, parts joined by `` | ``. (Remembered by
-    the values it reads: most turns change few of them, and a state seen before is common.)"""
+    facing, light and rest state; empty parts left out, parts joined by `` | ``. (Its parts
+    are remembered by the values they read, see above.)"""
     del settings   # (the HUD reads only the state; kept for the engine's call shape)
-    inv, level = state.inventory, state.player_level
+    inv, last = state.inventory, _last
     key = (state.player_health, state.player_food, state.player_drink, state.player_energy,
            state.player_mana, state.player_strength, state.player_dexterity,
            state.player_intelligence, state.player_xp, inv.wood, inv.stone, inv.coal, inv.iron,
            inv.diamond, inv.sapphire, inv.ruby, inv.sapling, inv.torches, inv.arrows, inv.books,
            inv.pickaxe, inv.sword, inv.bow, state.sword_enchantment, state.bow_enchantment,
            inv.armour.tobytes(), state.armour_enchantments.tobytes(), inv.potions.tobytes(),
-           state.learned_spells.tobytes(), level, state.player_position.tobytes(),
-           state.player_direction, state.light_level >= NIGHT_LIGHT, state.monsters_killed.tobytes(),
-           state.is_sleeping, state.is_resting)
-    line = _HUDS.get(key)
-    if line is None:
-        if len(_HUDS) >= 10_000:
-            _HUDS.clear()
-        line = _HUDS[key] = _hud(state)
-    return line
+           state.learned_spells.tobytes())
+    if key == last[0]:
+        head = last[1]
+    else:
+        head = _HEADS.get(key)
+        if head is None:
+            if len(_HEADS) >= 10_000:
+                _HEADS.clear()
+            head = _HEADS[key] = _head(state)
+        last[0], last[1] = key, head
+    level = state.player_level
+    key = (level, state.player_direction, state.light_level >= NIGHT_LIGHT,
+           state.monsters_killed.item(level))
+    if key == last[2]:
+        before, after = last[3]
+    else:
+        place = _PLACES.get(key)
+        if place is None:
+            if len(_PLACES) >= 10_000:
+                _PLACES.clear()
+            place = _PLACES[key] = _place(state)
+        last[2], last[3] = key, place
+        before, after = place
+    row, col = state.player_position.tolist()
+    rest = " | Sleeping" if state.is_sleeping else " | Resting" if state.is_resting else ""
+    return f"{head} | {before}{row},{col}{after}{rest}"
 
 
 def _hud(state: State) -> str:
+    """The HUD made from the state (nothing remembered)."""
+    parts = [_head(state), _where(state)]
+    if state.is_sleeping:
+        parts.append("Sleeping")
+    elif state.is_resting:
+        parts.append("Resting")
+    return " | ".join(parts)
+
+
+def _head(state: State) -> str:
+    """The HUD's vitals, inventory, gear, potions, spells and attributes."""
     maxima = max_vitals(state)
     values = (_number(state.player_health), state.player_food, state.player_drink,
               state.player_energy, state.player_mana)
@@ -527,22 +562,28 @@ def _hud(state: State) -> str:
                                               ("Int", state.player_intelligence)) if v > 1]
     if state.player_xp or levels:
         parts.append(" ".join([f"XP {state.player_xp}", *levels]))
-    level = state.player_level
+    return " | ".join(parts)
+
+
+def _where(state: State) -> str:
+    """The HUD's floor, position, facing, daylight or darkness, and kills toward the ladder."""
     row, col = state.player_position.tolist()
-    where = f"Floor {level} {LEVEL_NAMES[level]} at {row},{col} facing {FACING.get(state.player_direction, '?')}"
+    before, after = _place(state)
+    return f"{before}{row},{col}{after}"
+
+
+def _place(state: State) -> tuple[str, str]:
+    """``_where``'s text before the position and after it."""
+    level = state.player_level
+    after = f" facing {FACING.get(state.player_direction, '?')}"
     if level == 0:
-        where += " Day" if state.light_level >= NIGHT_LIGHT else " Night"
+        after += " Day" if state.light_level >= NIGHT_LIGHT else " Night"
     elif level in DARK_LEVELS:
-        where += " dark"
+        after += " dark"
     killed = state.monsters_killed.tolist()[level]
     if level < len(LEVEL_NAMES) - 1 and killed < KILLS_TO_OPEN_LADDER:
-        where += f" Kills {killed}/{KILLS_TO_OPEN_LADDER}"
-    parts.append(where)
-    if state.is_sleeping:
-        parts.append("Sleeping")
-    elif state.is_resting:
-        parts.append("Resting")
-    return " | ".join(parts)
+        after += f" Kills {killed}/{KILLS_TO_OPEN_LADDER}"
+    return f"Floor {level} {LEVEL_NAMES[level]} at ", after
 
 
 def _enchanted(kind: int) -> str:
