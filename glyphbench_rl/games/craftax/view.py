@@ -307,15 +307,13 @@ class _Band:
         self.windows: dict[tuple[int, int, bool], tuple[bytes, tuple[str, ...] | None]] = {}
 
     def window(self, c0: int, player: int, vulnerable: bool) -> tuple[bytes, tuple[str, ...] | None]:
-        """The window's codes (columns ``c0`` on, the player's code in the middle) and its rows
-        of glyphs (None if a code has no glyph): cut and decoded once."""
-        key = (c0, player, vulnerable)
-        window = self.windows.get(key)
-        if window is None:
-            codes = self._cut(c0, player)
-            if vulnerable:
-                codes = codes.replace(*_NECROMANCER_BYTES)
-            window = self.windows[key] = (codes, _decode(codes))
+        """The window's codes (columns ``c0`` on, the player's code in the middle, the
+        necromancer shown vulnerable or not) and its rows of glyphs (None if a code has no
+        glyph), kept in ``windows``."""
+        codes = self._cut(c0, player)
+        if vulnerable:
+            codes = codes.replace(*_NECROMANCER_BYTES)
+        window = self.windows[c0, player, vulnerable] = (codes, _decode(codes))
         return window
 
     def _cut(self, c0: int, player: int) -> bytes:
@@ -359,13 +357,13 @@ def _mob_codes(state: State, level: int, r0: int, c0: int) -> list[tuple[int, in
             slots = mask.shape[1]
             live = live[level * slots:(level + 1) * slots]
             if 1 in live:         # (few slots live: their cells read one by one)
-                position, type_id = memoryview(mobs.position), memoryview(mobs.type_id)
-                base = _MOB0 + 8 * k
+                position, type_id, base = mobs.position, mobs.type_id, _MOB0 + 8 * k
                 for slot, on in enumerate(live):
                     if on:
-                        r, c = position[level, slot, 0] - r0, position[level, slot, 1] - c0
+                        r = position.item(level, slot, 0) - r0
+                        c = position.item(level, slot, 1) - c0
                         if 0 <= r < ROWS and 0 <= c < COLS:
-                            marks.append((r, c, base + type_id[level, slot]))
+                            marks.append((r, c, base + type_id.item(level, slot)))
     return marks
 
 
@@ -376,7 +374,11 @@ def _window(state: State) -> tuple[bytes, tuple[str, ...] | None, list[tuple[int
     level = state.player_level
     pr, pc = state.player_position.tolist()
     r0, c0 = pr - HALF_R, pc - HALF_C
-    blocks, items, light, rows, cols = _maps(state)
+    held = _held
+    if held and held[0] is state.map and held[1] is state.item_map and held[2] is state.light_map:
+        blocks, items, light, rows, cols = held[3]    # (``_maps``, its common case written out)
+    else:
+        blocks, items, light, rows, cols = _maps(state)
     ra, rb = max(r0, 0), min(r0 + ROWS, rows)
     if ra < rb:
         start, end = (level * rows + ra) * cols * 4, (level * rows + rb) * cols * 4
@@ -388,10 +390,10 @@ def _window(state: State) -> tuple[bytes, tuple[str, ...] | None, list[tuple[int
     if band is None or band.raw != raw or band.where != where or (
             band.ladder and band.open != (state.monsters_killed.item(level) >= KILLS_TO_OPEN_LADDER)):
         band = _band = _Band(where, raw, state.monsters_killed.item(level))
-    vulnerable = level == BOSS_LEVEL and band.necromancer and is_boss_vulnerable(state)
-    codes, shown = band.window(c0, _PLAYER0 + (0 if state.is_sleeping else state.player_direction),
-                               vulnerable)
-    return codes, shown, _mob_codes(state, level, r0, c0)
+    key = (c0, _PLAYER0 + (0 if state.is_sleeping else state.player_direction),
+           level == BOSS_LEVEL and band.necromancer and is_boss_vulnerable(state))
+    window = band.windows.get(key) or band.window(*key)
+    return window[0], window[1], _mob_codes(state, level, r0, c0)
 
 
 def _drawn(codes: bytes, marks: list[tuple[int, int, int]]) -> bytes:
@@ -419,6 +421,9 @@ def rows(state: State) -> tuple[str, ...]:
         text = _charmap_decode(_drawn(codes, marks), "strict", _DECODING)[0]
         return tuple([text[i:i + COLS] for i in _ROW_STARTS])
     if marks:
+        last = _last_drawn
+        if shown is last[0] and marks == last[1]:    # (the same window and mobs as last time)
+            return last[2]
         lines = list(shown)
         for r, c, code in marks:
             i = r * COLS + c
@@ -428,8 +433,12 @@ def rows(state: State) -> tuple[str, ...]:
                     _charmap_decode(_drawn(codes, marks), "strict", _DECODING)
                 line = lines[r]
                 lines[r] = line[:c] + glyph + line[c + 1:]
-        shown = tuple(lines)
+        last[:] = shown, marks, tuple(lines)
+        shown = last[2]
     return shown
+
+
+_last_drawn: list = [None, None, None]     # the window's rows, the mobs drawn, the rows drawn
 
 
 def grid(state: State) -> list[str]:
@@ -472,7 +481,8 @@ def _number(x: float) -> str:
 # was not seen before, and the place's text around the position likewise.
 _HEADS: dict[tuple, str] = {}      # everything the head reads -> the head
 _PLACES: dict[tuple, tuple[str, str]] = {}   # floor, facing, daylight, kills -> text around the position
-_last: list = [None, "", None, ("", "")]     # last turn's head key, head, place key, place
+# last turn's head key, head, place key, place, the parts of the line, the line
+_last: list = [None, "", None, ("", ""), None, ""]
 
 
 def hud(state: State, settings: Settings | None = None) -> str:
@@ -512,7 +522,10 @@ def hud(state: State, settings: Settings | None = None) -> str:
         before, after = place
     row, col = state.player_position.tolist()
     rest = " | Sleeping" if state.is_sleeping else " | Resting" if state.is_resting else ""
-    return f"{head} | {before}{row},{col}{after}{rest}"
+    parts = (head, before, row, col, after, rest)
+    if parts != last[4]:        # (the player often stays put: then the line is last turn's)
+        last[4], last[5] = parts, f"{head} | {before}{row},{col}{after}{rest}"
+    return last[5]
 
 
 def _hud(state: State) -> str:
