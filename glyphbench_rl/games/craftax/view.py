@@ -363,24 +363,41 @@ def _mob_codes(state: State, level: int, r0: int, c0: int) -> list[tuple[int, in
     """(row, column, code) in the window whose top left cell is ``(r0, c0)`` of every live mob
     and projectile of the level inside it, in drawing order (melee, passive and ranged mobs,
     the mobs' projectiles, the player's: a later one is drawn over an earlier). The one place
-    the view reads how mobs are kept."""
+    the view reads how mobs are kept (through ``_mob_views``)."""
     marks = []
     for k, mobs in enumerate((state.melee_mobs, state.passive_mobs, state.ranged_mobs,
                               state.mob_projectiles, state.player_projectiles)):
-        mask = mobs.mask
-        live = mask.tobytes()     # (bool, one byte a slot: a class with no mob is seen in one call)
+        held = _mobs_held[k]
+        if held[0] is not mobs.mask or held[1] is not mobs.position or held[2] is not mobs.type_id:
+            held = _mobs_held[k] = _mob_views(mobs)
+        live = held[3][level].tobytes()      # (a byte a slot, 1 when live)
         if 1 in live:
-            slots = mask.shape[1]
-            live = live[level * slots:(level + 1) * slots]
-            if 1 in live:         # (few slots live: their cells read one by one)
-                position, type_id, base = mobs.position, mobs.type_id, _MOB0 + 8 * k
-                for slot, on in enumerate(live):
-                    if on:
-                        r = position.item(level, slot, 0) - r0
-                        c = position.item(level, slot, 1) - c0
-                        if 0 <= r < ROWS and 0 <= c < COLS:
-                            marks.append((r, c, base + type_id.item(level, slot)))
+            position, type_id, base = held[4], held[5], _MOB0 + 8 * k
+            slot = level * len(live)
+            for on in live:
+                if on:
+                    r, c = position[2 * slot] - r0, position[2 * slot + 1] - c0
+                    if 0 <= r < ROWS and 0 <= c < COLS:
+                        marks.append((r, c, base + type_id[slot]))
+                slot += 1
     return marks
+
+
+def _mob_views(mobs) -> tuple:
+    """A class's mask, position and type arrays, then memoryviews of them: each level's mask
+    slots (bytes, 1 when live), the positions and the types (flat ints). Kept while the class
+    holds the same arrays: the views see every edit in place. Arrays in another layout are
+    read through copies in this one (a live slot is a true one), made anew each time."""
+    arrays = mobs.mask, mobs.position, mobs.type_id
+    mask, position, type_id = (np.ascontiguousarray(a, t) for a, t in zip(arrays, (bool, np.int32, np.int32)))
+    usual = mask is arrays[0] and position is arrays[1] and type_id is arrays[2]
+    held = arrays if usual else (None, None, None)
+    slots, flat = mask.shape[1], memoryview(mask).cast("B")
+    return (*held, [flat[i:i + slots] for i in range(0, len(flat), slots)],
+            memoryview(position).cast("B").cast("i"), memoryview(type_id).cast("B").cast("i"))
+
+
+_mobs_held: list[tuple] = [(None,) * 6] * 5     # ``_mob_views`` of the five classes last read
 
 
 def _window(state: State) -> tuple[bytes, tuple[str, ...] | None, list[tuple[int, int, int]]]:

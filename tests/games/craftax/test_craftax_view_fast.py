@@ -145,8 +145,13 @@ def edit(state, rng: np.random.Generator) -> None:
             state.player_position[:] = (r, c)
             pr, pc = r, c
         elif what == 13:      # whole arrays replaced by copies (the view must not keep the old)
-            name = str(rng.choice(["map", "item_map", "light_map", "monsters_killed"]))
-            setattr(state, name, getattr(state, name).copy())
+            name = str(rng.choice(["map", "item_map", "light_map", "monsters_killed", *MOB_CLASSES]))
+            if name in MOB_CLASSES:
+                mobs = getattr(state, name)
+                field = str(rng.choice(["mask", "position", "type_id"]))
+                setattr(mobs, field, getattr(mobs, field).copy())
+            else:
+                setattr(state, name, getattr(state, name).copy())
         elif what == 14:      # another floor
             state.player_level = level = int(rng.integers(0, len(state.map)))
         else:                 # the light of a whole floor
@@ -177,12 +182,17 @@ def test_view_of_edited_states_and_other_layouts():
     state = worldgen.generate(np.random.default_rng(3), Settings())
     for turn in range(1500):
         edit(state, rng)
-        if turn % 100 == 50:       # maps kept in another dtype or memory layout
+        mobs = state.melee_mobs
+        if turn % 100 == 50:       # maps and mobs kept in another dtype or memory layout
             state.map = np.asfortranarray(state.map.astype(np.int64))
             state.light_map = state.light_map.astype(np.float64)
+            mobs.position = np.asfortranarray(mobs.position.astype(np.int64))
+            mobs.mask = np.asfortranarray(mobs.mask)
         elif turn % 100 == 99:
             state.map = np.ascontiguousarray(state.map, np.int32)
             state.light_map = np.ascontiguousarray(state.light_map, np.float32)
+            mobs.position = np.ascontiguousarray(mobs.position, np.int32)
+            mobs.mask = np.ascontiguousarray(mobs.mask)
         assert view.rows(state) == plain_rows(state), turn
         assert view.hud(state) == view._hud(state), turn
         codes = view.cell_codes(state)
