@@ -26,7 +26,7 @@ from codecs import charmap_decode as _charmap_decode
 import numpy as np
 
 from .mobs import is_boss_vulnerable
-from .state import Settings, State
+from .state import Mobs, Settings, State
 from .tables import (BOSS_LEVEL, DARK_LEVELS, LEVEL_NAMES, LIGHT_VISIBLE, MINING, NIGHT_LIGHT, PLACING,
                      POTION_COLOURS, RECIPES as CRAFTING, Action, BlockType, ItemType,
                      ProjectileType, max_drink, max_energy, max_food, max_health, max_mana)
@@ -159,13 +159,14 @@ _DECODING = "".join(_TABLE.get(code, "\ufffe") for code in range(256))
 # The grid is drawn every step, and numpy's calls cost more than the work on 99 cells, so the
 # window is read in as few calls as possible and what did not change is not worked out again.
 # The window lies in a band of the player's level (its rows, at full width); the band's blocks,
-# items and light are read as three byte strings through memoryviews of the state's arrays (a
-# slice and a copy each, no numpy call) and compared with the band read last time. Only when a
-# byte differs are the band's cell codes worked out again (items over blocks, darkness over
-# both); the window, the player drawn in it, is cut from them once per column offset and facing.
-# Everything remembered is a function of the bytes just read (and the ladder's state), so a map,
-# item or light cell edited in place, or a whole array replaced, shows at once. Mobs and
-# projectiles are read each time (``_mob_codes``): they move every step.
+# items and light are read as three byte strings through memoryviews of the state's arrays
+# (no numpy call) and compared with the band read last time. Only when a byte differs are the
+# band's cell codes worked out again (items over blocks, darkness over both); the window, the
+# player drawn in it, is cut from them and decoded once per column offset and facing. Mobs and
+# projectiles are read each time, through memoryviews too (``_mob_codes``): they move every
+# step. What is remembered is a function of the bytes just read (and the ladder's state); the
+# views are kept per state (``_kept``) while it holds the same arrays, so a cell edited in
+# place, or a whole array replaced, shows at once.
 
 _NECROMANCER = int(BlockType.NECROMANCER)
 _NECROMANCER_VULNERABLE = int(BlockType.NECROMANCER_VULNERABLE)
@@ -191,8 +192,6 @@ _MEMO_SIZE = 4096
 # a band's light map (float32 bytes) -> its unlit cells (a byte each, 1: unlit); the light map
 # changes only where a torch is placed, and bands recur as the player walks back and forth
 _DARKNESS: dict[bytes, bytes] = {}
-# cell codes -> the rows of glyphs (``rows``)
-_ROWS: dict[bytes, tuple[str, ...]] = {}
 _NECROMANCER_BYTES = bytes((_NECROMANCER,)), bytes((_NECROMANCER_VULNERABLE,))
 
 
@@ -262,27 +261,33 @@ def _band_views(maps: tuple, level: int, r0: int) -> tuple:
     return views
 
 
-_held: tuple = ()     # (map, item_map, light_map, their ``_byte_views``) of the state last drawn
+# what the view keeps for a state, by the id of its map array (``_kept``); several states are
+# drawn in turn when a process steps many episodes
+_KEPT: dict[int, list] = {}
+_KEPT_STATES = 64
 
 
-def _maps(state: State) -> tuple:
-    """``_byte_views`` of the state's map, item map and light map. The views are kept while the
-    state holds the same three arrays (they see every edit in place; a replaced array is another
-    object, and new views are made). Maps in another layout are read through copies in the usual
-    one, made each time: blocks and items as int32 (their low byte, the code, is unchanged), the
+def _kept(state: State) -> list:
+    """What the view keeps for a state: ``[map, item_map, light_map, their _byte_views, the band
+    read last, the mobs' views (_mob_views, by class)]``, kept while the state holds the same
+    three maps (the views see every edit in place; a replaced array is another object, and all
+    is made anew). Maps in another layout are read through copies in the usual one, made each
+    time and not kept: blocks and items as int32 (their low byte, the code, is unchanged), the
     light as 0 where unlit and 1 where lit (all the view reads of it)."""
-    global _held
     blocks, items, light = state.map, state.item_map, state.light_map
-    held = _held
-    if held and held[0] is blocks and held[1] is items and held[2] is light:
-        return held[3]
+    kept = _KEPT.get(id(blocks))       # (an entry keeps its map alive: its id is not reused)
+    if kept is not None and kept[1] is items and kept[2] is light:
+        return kept
     if _is_usual(blocks, items, light):
-        views = _byte_views(blocks, items, light)
-        _held = (blocks, items, light, views)
-        return views
+        if len(_KEPT) >= _KEPT_STATES:
+            _KEPT.clear()
+        kept = _KEPT[id(blocks)] = [blocks, items, light, _byte_views(blocks, items, light),
+                                    None, [_NO_MOB_VIEWS] * len(_MOB_CLASSES)]
+        return kept
     lit = np.where(light <= _VISIBLE_LIGHT32, np.float32(0), np.float32(1))
-    return _byte_views(np.ascontiguousarray(blocks, np.int32), np.ascontiguousarray(items, np.int32),
-                       np.ascontiguousarray(lit, np.float32))
+    views = _byte_views(np.ascontiguousarray(blocks, np.int32), np.ascontiguousarray(items, np.int32),
+                        np.ascontiguousarray(lit, np.float32))
+    return [None, None, None, views, None, [_NO_MOB_VIEWS] * len(_MOB_CLASSES)]
 
 
 class _Band:
@@ -356,20 +361,17 @@ def _decode(codes: bytes) -> tuple[str, ...] | None:
     return tuple([text[i:i + COLS] for i in _ROW_STARTS])
 
 
-_band: _Band | None = None     # the band read last
-
-
-def _mob_codes(state: State, level: int, r0: int, c0: int) -> list[tuple[int, int, int]]:
+def _mob_codes(state: State, level: int, r0: int, c0: int, views: list) -> list[tuple[int, int, int]]:
     """(row, column, code) in the window whose top left cell is ``(r0, c0)`` of every live mob
     and projectile of the level inside it, in drawing order (melee, passive and ranged mobs,
     the mobs' projectiles, the player's: a later one is drawn over an earlier). The one place
-    the view reads how mobs are kept (through ``_mob_views``)."""
+    the view reads how mobs are kept (through ``_mob_views``, kept by class in ``views``)."""
     marks = []
     for k, mobs in enumerate((state.melee_mobs, state.passive_mobs, state.ranged_mobs,
                               state.mob_projectiles, state.player_projectiles)):
-        held = _mobs_held[k]
+        held = views[k]
         if held[0] is not mobs.mask or held[1] is not mobs.position or held[2] is not mobs.type_id:
-            held = _mobs_held[k] = _mob_views(mobs)
+            held = views[k] = _mob_views(mobs)
         live = held[3][level].tobytes()      # (a byte a slot, 1 when live)
         if 1 in live:
             position, type_id, base = held[4], held[5], _MOB0 + 8 * k
@@ -383,50 +385,49 @@ def _mob_codes(state: State, level: int, r0: int, c0: int) -> list[tuple[int, in
     return marks
 
 
-def _mob_views(mobs) -> tuple:
+def _mob_views(mobs: Mobs) -> tuple:
     """A class's mask, position and type arrays, then memoryviews of them: each level's mask
     slots (bytes, 1 when live), the positions and the types (flat ints). Kept while the class
     holds the same arrays: the views see every edit in place. Arrays in another layout are
     read through copies in this one (a live slot is a true one), made anew each time."""
     arrays = mobs.mask, mobs.position, mobs.type_id
-    mask, position, type_id = (np.ascontiguousarray(a, t) for a, t in zip(arrays, (bool, np.int32, np.int32)))
+    mask, position, type_id = (np.ascontiguousarray(a, t)
+                               for a, t in zip(arrays, (bool, np.int32, np.int32)))
     usual = mask is arrays[0] and position is arrays[1] and type_id is arrays[2]
-    held = arrays if usual else (None, None, None)
     slots, flat = mask.shape[1], memoryview(mask).cast("B")
-    return (*held, [flat[i:i + slots] for i in range(0, len(flat), slots)],
+    return (*(arrays if usual else (None, None, None)),
+            [flat[i:i + slots] for i in range(0, len(flat), slots)],
             memoryview(position).cast("B").cast("i"), memoryview(type_id).cast("B").cast("i"))
 
 
-_mobs_held: list[tuple] = [(None,) * 6] * 5     # ``_mob_views`` of the five classes last read
+_MOB_CLASSES = ("melee_mobs", "passive_mobs", "ranged_mobs", "mob_projectiles", "player_projectiles")
+_NO_MOB_VIEWS = (None,) * 6
 
 
 def _window(state: State) -> tuple[bytes, tuple[str, ...] | None, list[tuple[int, int, int]]]:
     """The window's codes and rows before mobs (blocks, items over them, darkness over both,
     the necromancer as it shows, the player), and the mobs to draw over them (``_mob_codes``)."""
-    global _band
     level = state.player_level
     pr, pc = state.player_position.tolist()
     r0, c0 = pr - HALF_R, pc - HALF_C
-    held = _held
-    if held and held[0] is state.map and held[1] is state.item_map and held[2] is state.light_map:
-        maps = held[3]    # (``_maps``, its common case written out)
-    else:
-        maps = _maps(state)
-    rows, cols = maps[3], maps[4]
+    kept = _KEPT.get(id(state.map))
+    if kept is None or kept[1] is not state.item_map or kept[2] is not state.light_map:
+        kept = _kept(state)
+    maps = kept[3]
     band_views = maps[5].get((level, r0))
     if band_views is None:
         band_views = _band_views(maps, level, r0)
     blocks, items, light = band_views
     raw = (blocks.tobytes(), items.tobytes(), light.tobytes())
-    where = (r0, rows, cols)
-    band = _band
+    where = (r0, maps[3], maps[4])
+    band = kept[4]
     if band is None or band.raw != raw or band.where != where or (
             band.ladder and band.open != (state.monsters_killed.item(level) >= KILLS_TO_OPEN_LADDER)):
-        band = _band = _Band(where, raw, state.monsters_killed.item(level))
+        band = kept[4] = _Band(where, raw, state.monsters_killed.item(level))
     key = (c0, _PLAYER0 + (0 if state.is_sleeping else state.player_direction),
            level == BOSS_LEVEL and band.necromancer and is_boss_vulnerable(state))
     window = band.windows.get(key) or band.window(*key)
-    return window[0], window[1], _mob_codes(state, level, r0, c0)
+    return window[0], window[1], _mob_codes(state, level, r0, c0, kept[5])
 
 
 def _drawn(codes: bytes, marks: list[tuple[int, int, int]]) -> bytes:

@@ -177,6 +177,23 @@ def test_task_grid_and_hud_follow_every_edit(name):
                 assert task._hud() == plain_hud(task), (name, turn, "edited")
 
 
+def test_episodes_stepped_in_turn_each_show_their_own_state():
+    tasks = [make(f"glyphbench/craftax-{name}-v0") for name in ("firstday", "dungeonexplore",
+                                                                "fight-zombies")]
+    rng = np.random.default_rng(9)
+    for seed, task in enumerate(tasks):
+        task.reset(seed=seed)
+    for turn in range(120):
+        for task in tasks:
+            if task.done:
+                task.reset(seed=turn)
+            task.step(int(rng.integers(task.action_space.n)))
+            if turn % 2:
+                edit(task.state, rng)
+            assert task._grid() == plain_rows(task.state), turn
+            assert task._hud() == plain_hud(task), turn
+
+
 def test_view_of_edited_states_and_other_layouts():
     rng = np.random.default_rng(11)
     state = worldgen.generate(np.random.default_rng(3), Settings())
