@@ -538,11 +538,22 @@ class Scenario:
         return "when the objective is complete or you die" if self.success else "when you die"
 
     def progress(self, tally) -> str:
-        labels = _LABELS.get(self.progress_keys)
-        if labels is None:
-            labels = _LABELS[self.progress_keys] = tuple(
-                (k, k.split('.')[-1].capitalize()) for k in self.progress_keys)
-        return " ".join([f"{label} {_fmt(tally.value(k))}" for k, label in labels])
+        """The HUD's progress: each progress key's label and value (remembered by the values:
+        they change on few turns)."""
+        keys = self.progress_keys
+        if not keys:
+            return ""
+        values = tuple([tally.value(k) for k in keys])
+        key = (keys, values, tuple(map(type, values)))    # (1 and 1.0 and True print apart)
+        text = _PROGRESS.get(key)
+        if text is None:
+            labels = _LABELS.get(keys)
+            if labels is None:
+                labels = _LABELS[keys] = tuple(k.split('.')[-1].capitalize() for k in keys)
+            if len(_PROGRESS) >= 10_000:
+                _PROGRESS.clear()
+            text = _PROGRESS[key] = " ".join([f"{label} {_fmt(v)}" for label, v in zip(labels, values)])
+        return text
 
     def check(self, tally) -> None:
         """Compile every test and counter of the scenario (a KeyError names a bad one)."""
@@ -553,7 +564,8 @@ class Scenario:
             tally.getter(key)
 
 
-_LABELS: dict[tuple, tuple] = {}      # progress keys -> (key, its HUD label), ...
+_LABELS: dict[tuple, tuple] = {}      # progress keys -> their HUD labels
+_PROGRESS: dict[tuple, str] = {}     # progress keys, values, their types -> the text
 
 
 def _amount(x: float) -> str:

@@ -26,7 +26,7 @@ from codecs import charmap_decode as _charmap_decode
 import numpy as np
 
 from .mobs import is_boss_vulnerable
-from .state import Settings, State
+from .state import Mobs, Settings, State
 from .tables import (BOSS_LEVEL, DARK_LEVELS, LEVEL_NAMES, LIGHT_VISIBLE, MINING, NIGHT_LIGHT, PLACING,
                      POTION_COLOURS, RECIPES as CRAFTING, Action, BlockType, ItemType,
                      ProjectileType, max_drink, max_energy, max_food, max_health, max_mana)
@@ -155,10 +155,23 @@ _DECODING = "".join(_TABLE.get(code, "\ufffe") for code in range(256))
 
 
 # ---- the grid ----------------------------------------------------------------------------
+#
+# The grid is drawn every step, and numpy's calls cost more than the work on 99 cells, so the
+# window is read in as few calls as possible and what did not change is not worked out again.
+# The window lies in a band of the player's level (its rows, at full width); the band's blocks,
+# items and light are read as three byte strings through memoryviews of the state's arrays
+# (no numpy call) and compared with the band read last time. Only when a byte differs are the
+# band's cell codes worked out again (items over blocks, darkness over both); the window, the
+# player drawn in it, is cut from them and decoded once per column offset and facing. Mobs and
+# projectiles are read each time, through memoryviews too (``_mob_codes``): they move every
+# step. What is remembered is a function of the bytes just read (and the ladder's state); the
+# views are kept per state (``_kept``) while it holds the same arrays, so a cell edited in
+# place, or a whole array replaced, shows at once.
 
 _NECROMANCER = int(BlockType.NECROMANCER)
 _NECROMANCER_VULNERABLE = int(BlockType.NECROMANCER_VULNERABLE)
 _VISIBLE_LIGHT32 = np.float32(LIGHT_VISIBLE)      # (light_map is float32: compare as upstream)
+_LADDER_DOWN = int(ItemType.LADDER_DOWN)
 
 
 def _item_codes(ladder_open: bool) -> bytes:
@@ -170,24 +183,16 @@ def _item_codes(ladder_open: bool) -> bytes:
 
 
 _ITEM_CODES = (_item_codes(False), _item_codes(True))    # by whether the floor's ladder is open
+_OFF_MAP = int(BlockType.OUT_OF_BOUNDS)
+_CENTRE = HALF_R * COLS + HALF_C                  # the player's cell in the window
 _ROW_STARTS = tuple(range(0, ROWS * COLS, COLS))
-_OFF_MAP = bytes((int(BlockType.OUT_OF_BOUNDS),))
-_FULL_LIGHT = np.ones(ROWS * COLS, np.float32).tobytes()     # a fully lit window's light map
-_INT32 = np.dtype(np.int32)
+_FULL_LIGHT = np.float32(1).tobytes()             # one fully lit cell's light
 _LOW = 0 if sys.byteorder == "little" else 3      # (where an int32's low byte is)
 _MEMO_SIZE = 4096
-# a window's light map (float32 bytes) -> its unlit cells (a byte each, 1: unlit); the light map
-# changes only where a torch is placed, and windows recur as the player walks back and forth
+# a band's light map (float32 bytes) -> its unlit cells (a byte each, 1: unlit); the light map
+# changes only where a torch is placed, and bands recur as the player walks back and forth
 _DARKNESS: dict[bytes, bytes] = {}
-# cell codes -> the rows of glyphs (``rows``)
-_ROWS: dict[bytes, tuple[str, ...]] = {}
 _NECROMANCER_BYTES = bytes((_NECROMANCER,)), bytes((_NECROMANCER_VULNERABLE,))
-
-
-def _low_bytes(array: np.ndarray) -> bytes:
-    """The values of a small non-negative integer array (each below 256), one byte each in row
-    order (the slow path of ``_codes``, for arrays not kept as the state keeps them)."""
-    return array.astype(np.uint8).tobytes()
 
 
 def _mark(codes: bytearray, where: bytes, code) -> None:
@@ -225,95 +230,249 @@ def _merge(low: bytes, high: bytes, shift: int) -> bytes:
         len(low), "little")
 
 
-def _codes(state: State) -> bytearray:
-    """The window as cell codes, ROWS * COLS bytes row by row. Few numpy calls (on arrays this
-    small each costs about as much as the work in it): the window's blocks, items and light are
-    each read as bytes once; items and darkness go over the blocks where the window has any,
-    then mobs and projectiles (not on unlit cells), then the player."""
-    level = state.player_level
-    pr, pc = state.player_position.tolist()
-    r0, c0 = pr - HALF_R, pc - HALF_C
-    rows, cols = state.map.shape[1:]
-    ra, rb, ca, cb = max(r0, 0), min(r0 + ROWS, rows), max(c0, 0), min(c0 + COLS, cols)
-    if ra < rb and ca < cb:
-        # the part of the window on the map: blocks, items over them, darkness over all (a
-        # cell is unlit at light <= LIGHT_VISIBLE); most windows have no item and no dark cell
-        window = (level, slice(ra, rb), slice(ca, cb))
-        blocks, items = state.map[window], state.item_map[window]
-        if blocks.dtype == _INT32 and items.dtype == _INT32:     # (as the state keeps them)
-            codes, items = blocks.tobytes()[_LOW::4], items.tobytes()[_LOW::4]
-        else:
-            codes, items = _low_bytes(blocks), _low_bytes(items)
+def _is_usual(blocks: np.ndarray, items: np.ndarray, light: np.ndarray) -> bool:
+    """Whether the three maps are kept as the state keeps them (int32, int32, float32, one
+    shape, C order): then their memory is read as it is."""
+    return (blocks.dtype == np.int32 and items.dtype == np.int32 and light.dtype == np.float32
+            and blocks.ndim == 3 and blocks.shape == items.shape == light.shape
+            and blocks.flags.c_contiguous and items.flags.c_contiguous
+            and light.flags.c_contiguous)
+
+
+def _byte_views(blocks: np.ndarray, items: np.ndarray, light: np.ndarray) -> tuple:
+    """Flat byte memoryviews of the three maps (in the usual layout), then rows and columns, and
+    a dict for ``_band_views``."""
+    return (memoryview(blocks).cast("B"), memoryview(items).cast("B"),
+            memoryview(light).cast("B"), *blocks.shape[1:], {})
+
+
+def _band_views(maps: tuple, level: int, r0: int) -> tuple:
+    """Views of the band the window whose top row is ``r0`` lies in (its rows on the map of
+    ``level``, at full width) in the three maps, kept in ``maps``' last member: slicing anew
+    each step measured slower than looking them up."""
+    blocks, items, light, rows, cols, known = maps
+    ra, rb = max(r0, 0), min(r0 + ROWS, rows)
+    start = end = 0
+    if ra < rb:
+        start, end = (level * rows + ra) * cols * 4, (level * rows + rb) * cols * 4
+    if len(known) >= _MEMO_SIZE:
+        known.clear()
+    views = known[level, r0] = (blocks[start:end], items[start:end], light[start:end])
+    return views
+
+
+# what the view keeps for a state, by the id of its map array (``_kept``); several states are
+# drawn in turn when a process steps many episodes
+_KEPT: dict[int, list] = {}
+_KEPT_STATES = 64
+
+
+def _kept(state: State) -> list:
+    """What the view keeps for a state: ``[map, item_map, light_map, their _byte_views, the band
+    read last, the mobs' views (_mob_views, by class)]``, kept while the state holds the same
+    three maps (the views see every edit in place; a replaced array is another object, and all
+    is made anew). Maps in another layout are read through copies in the usual one, made each
+    time and not kept: blocks and items as int32 (their low byte, the code, is unchanged), the
+    light as 0 where unlit and 1 where lit (all the view reads of it)."""
+    blocks, items, light = state.map, state.item_map, state.light_map
+    kept = _KEPT.get(id(blocks))       # (an entry keeps its map alive: its id is not reused)
+    if kept is not None and kept[1] is items and kept[2] is light:
+        return kept
+    if _is_usual(blocks, items, light):
+        if len(_KEPT) >= _KEPT_STATES:
+            _KEPT.clear()
+        kept = _KEPT[id(blocks)] = [blocks, items, light, _byte_views(blocks, items, light),
+                                    None, [_NO_MOB_VIEWS] * len(_MOB_CLASSES)]
+        return kept
+    lit = np.where(light <= _VISIBLE_LIGHT32, np.float32(0), np.float32(1))
+    views = _byte_views(np.ascontiguousarray(blocks, np.int32), np.ascontiguousarray(items, np.int32),
+                        np.ascontiguousarray(lit, np.float32))
+    return [None, None, None, views, None, [_NO_MOB_VIEWS] * len(_MOB_CLASSES)]
+
+
+class _Band:
+    """The band of the map the window lies in (rows ``ra`` to ``rb`` of the player's level, at
+    full width) as last read: its bytes, its cell codes (the block, or the item over it, or
+    darkness) and the windows cut from them."""
+
+    __slots__ = ("where", "raw", "ladder", "open", "necromancer", "codes", "windows")
+
+    def __init__(self, where: tuple, raw: tuple[bytes, bytes, bytes], killed: int) -> None:
+        self.where, self.raw = where, raw      # where: (r0, rows, cols); raw: blocks, items, light
+        blocks, items, light = raw
+        codes, items = blocks[_LOW::4], items[_LOW::4]
+        self.ladder = _LADDER_DOWN in items    # (its glyph depends on the floor's kills)
+        self.open = self.ladder and killed >= KILLS_TO_OPEN_LADDER
         if items.count(0) != len(items):
-            open_ = state.monsters_killed.item(level) >= KILLS_TO_OPEN_LADDER
             if not items.translate(None, _BELOW[4]) and not codes.translate(None, _BELOW[64]):
-                codes = _merge(codes, items, 6).translate(_OVERLAYS[open_])
+                codes = _merge(codes, items, 6).translate(_OVERLAYS[self.open])
             else:
                 codes = bytearray(codes)
-                _mark(codes, items, _ITEM_CODES[open_])
-        light = state.light_map[window]
-        lit = light.tobytes()
-        if light.dtype != np.float32 or lit != _FULL_LIGHT[:len(lit)]:
-            # (else the window is in full light: nothing dark)
-            dark = _DARKNESS.get(lit) if light.dtype == np.float32 else None
+                _mark(codes, items, _ITEM_CODES[self.open])
+        if light != _FULL_LIGHT * (len(light) // 4):     # (else fully lit: nothing dark)
+            dark = _DARKNESS.get(light)
             if dark is None:
-                dark = np.less_equal(light, _VISIBLE_LIGHT32).tobytes()
-                if light.dtype == np.float32:
-                    if len(_DARKNESS) >= _MEMO_SIZE:
-                        _DARKNESS.clear()
-                    _DARKNESS[lit] = dark
+                dark = np.less_equal(np.frombuffer(light, np.float32), _VISIBLE_LIGHT32).tobytes()
+                if len(_DARKNESS) >= _MEMO_SIZE:
+                    _DARKNESS.clear()
+                _DARKNESS[light] = dark
             if 1 in dark:
                 if not codes.translate(None, _BELOW[128]):
                     codes = _merge(codes, dark, 7).translate(_DARKEN)
                 else:
                     codes = bytearray(codes)
                     _mark(codes, dark, _DARK_CODE)
-        inside = codes
-    else:
-        inside = b""
-    if len(inside) == ROWS * COLS:
-        codes = bytearray(inside)
-    else:       # cells off the map: their own glyph, lit
-        codes = bytearray(_OFF_MAP * (ROWS * COLS))
-        width, at = cb - ca, ca - c0
-        for j, r in enumerate(range(ra - r0, rb - r0)):
-            codes[r * COLS + at:r * COLS + at + width] = inside[j * width:(j + 1) * width]
-    if level == BOSS_LEVEL and _NECROMANCER in codes and is_boss_vulnerable(state):
-        codes = codes.replace(*_NECROMANCER_BYTES)
+        self.codes = bytes(codes)
+        self.necromancer = _NECROMANCER in self.codes      # (its glyph depends on the fight)
+        # (column offset, player's code, necromancer vulnerable) -> the window's codes and rows
+        self.windows: dict[tuple[int, int, bool], tuple[bytes, tuple[str, ...] | None]] = {}
+
+    def window(self, c0: int, player: int, vulnerable: bool) -> tuple[bytes, tuple[str, ...] | None]:
+        """The window's codes (columns ``c0`` on, the player's code in the middle, the
+        necromancer shown vulnerable or not) and its rows of glyphs (None if a code has no
+        glyph), kept in ``windows``."""
+        codes = self._cut(c0, player)
+        if vulnerable:
+            codes = codes.replace(*_NECROMANCER_BYTES)
+        window = self.windows[c0, player, vulnerable] = (codes, _decode(codes))
+        return window
+
+    def _cut(self, c0: int, player: int) -> bytes:
+        r0, rows, cols = self.where
+        band = self.codes
+        ca, cb = max(c0, 0), min(c0 + COLS, cols)
+        off = bytes((_OFF_MAP,))
+        left, right = off * (ca - c0), off * (c0 + COLS - cb)      # cells off the map: their glyph
+        inside = [left + band[i + ca:i + cb] + right for i in range(0, len(band), cols)] \
+            if ca < cb else [off * COLS] * (len(band) // cols if cols else 0)
+        codes = bytearray(off * (COLS * min(max(0, -r0), ROWS)))
+        codes += b"".join(inside)
+        codes += off * (ROWS * COLS - len(codes))
+        codes[_CENTRE] = player
+        return bytes(codes)
+
+
+def _decode(codes: bytes) -> tuple[str, ...] | None:
+    """The rows of glyphs the codes show; None when one has no glyph (decoding raises)."""
+    try:
+        text = _charmap_decode(codes, "strict", _DECODING)[0]
+    except UnicodeDecodeError:
+        return None
+    return tuple([text[i:i + COLS] for i in _ROW_STARTS])
+
+
+def _mob_codes(state: State, level: int, r0: int, c0: int, views: list) -> list[tuple[int, int, int]]:
+    """(row, column, code) in the window whose top left cell is ``(r0, c0)`` of every live mob
+    and projectile of the level inside it, in drawing order (melee, passive and ranged mobs,
+    the mobs' projectiles, the player's: a later one is drawn over an earlier). The one place
+    the view reads how mobs are kept (through ``_mob_views``, kept by class in ``views``)."""
+    marks = []
     for k, mobs in enumerate((state.melee_mobs, state.passive_mobs, state.ranged_mobs,
                               state.mob_projectiles, state.player_projectiles)):
-        live = mobs.mask[level].tolist()
-        if True not in live:
-            continue
-        base = _MOB0 + 8 * k
-        positions, types = mobs.position[level].tolist(), mobs.type_id[level].tolist()
-        for slot, on in enumerate(live):
-            if on:
-                r, c = positions[slot]
-                r -= r0
-                c -= c0
-                if 0 <= r < ROWS and 0 <= c < COLS and codes[r * COLS + c] != _DARK:
-                    codes[r * COLS + c] = base + types[slot]
-    codes[HALF_R * COLS + HALF_C] = _PLAYER0 + (0 if state.is_sleeping else state.player_direction)
-    return codes
+        held = views[k]
+        if held[0] is not mobs.mask or held[1] is not mobs.position or held[2] is not mobs.type_id:
+            held = views[k] = _mob_views(mobs)
+        live = held[3][level].tobytes()      # (a byte a slot, 1 when live)
+        if 1 in live:
+            position, type_id, base = held[4], held[5], _MOB0 + 8 * k
+            slot = level * len(live)
+            for on in live:
+                if on:
+                    r, c = position[2 * slot] - r0, position[2 * slot + 1] - c0
+                    if 0 <= r < ROWS and 0 <= c < COLS:
+                        marks.append((r, c, base + type_id[slot]))
+                slot += 1
+    return marks
+
+
+def _mob_views(mobs: Mobs) -> tuple:
+    """A class's mask, position and type arrays, then memoryviews of them: each level's mask
+    slots (bytes, 1 when live), the positions and the types (flat ints). Kept while the class
+    holds the same arrays: the views see every edit in place. Arrays in another layout are
+    read through copies in this one (a live slot is a true one), made anew each time."""
+    arrays = mobs.mask, mobs.position, mobs.type_id
+    mask, position, type_id = (np.ascontiguousarray(a, t)
+                               for a, t in zip(arrays, (bool, np.int32, np.int32)))
+    usual = mask is arrays[0] and position is arrays[1] and type_id is arrays[2]
+    slots, flat = mask.shape[1], memoryview(mask).cast("B")
+    return (*(arrays if usual else (None, None, None)),
+            [flat[i:i + slots] for i in range(0, len(flat), slots)],
+            memoryview(position).cast("B").cast("i"), memoryview(type_id).cast("B").cast("i"))
+
+
+_MOB_CLASSES = ("melee_mobs", "passive_mobs", "ranged_mobs", "mob_projectiles", "player_projectiles")
+_NO_MOB_VIEWS = (None,) * 6
+
+
+def _window(state: State) -> tuple[bytes, tuple[str, ...] | None, list[tuple[int, int, int]]]:
+    """The window's codes and rows before mobs (blocks, items over them, darkness over both,
+    the necromancer as it shows, the player), and the mobs to draw over them (``_mob_codes``)."""
+    level = state.player_level
+    pr, pc = state.player_position.tolist()
+    r0, c0 = pr - HALF_R, pc - HALF_C
+    kept = _KEPT.get(id(state.map))
+    if kept is None or kept[1] is not state.item_map or kept[2] is not state.light_map:
+        kept = _kept(state)
+    maps = kept[3]
+    band_views = maps[5].get((level, r0))
+    if band_views is None:
+        band_views = _band_views(maps, level, r0)
+    blocks, items, light = band_views
+    raw = (blocks.tobytes(), items.tobytes(), light.tobytes())
+    where = (r0, maps[3], maps[4])
+    band = kept[4]
+    if band is None or band.raw != raw or band.where != where or (
+            band.ladder and band.open != (state.monsters_killed.item(level) >= KILLS_TO_OPEN_LADDER)):
+        band = kept[4] = _Band(where, raw, state.monsters_killed.item(level))
+    key = (c0, _PLAYER0 + (0 if state.is_sleeping else state.player_direction),
+           level == BOSS_LEVEL and band.necromancer and is_boss_vulnerable(state))
+    window = band.windows.get(key) or band.window(*key)
+    return window[0], window[1], _mob_codes(state, level, r0, c0, kept[5])
+
+
+def _drawn(codes: bytes, marks: list[tuple[int, int, int]]) -> bytes:
+    """The codes with the mobs drawn over them (not on unlit cells, not on the player)."""
+    shown = bytearray(codes)
+    for r, c, code in marks:
+        i = r * COLS + c
+        if codes[i] != _DARK and i != _CENTRE:
+            shown[i] = code
+    return bytes(shown)
 
 
 def cell_codes(state: State) -> np.ndarray:
     """The window as cell codes (uint8, ROWS x COLS): what each visible cell shows, before the
     glyph lookup (``_TABLE``)."""
-    return np.frombuffer(bytes(_codes(state)), np.uint8).reshape(ROWS, COLS).copy()
+    codes, _, marks = _window(state)
+    return np.frombuffer(_drawn(codes, marks), np.uint8).reshape(ROWS, COLS).copy()
 
 
 def rows(state: State) -> tuple[str, ...]:
-    """The 9 rows of 11 glyphs around the player, as a tuple (remembered by the cell codes)."""
-    codes = bytes(_codes(state))
-    shown = _ROWS.get(codes)
-    if shown is None:
-        text = _charmap_decode(codes, "strict", _DECODING)[0]
-        if len(_ROWS) >= _MEMO_SIZE:
-            _ROWS.clear()
-        shown = _ROWS[codes] = tuple([text[i:i + COLS] for i in _ROW_STARTS])
+    """The 9 rows of 11 glyphs around the player, as a tuple: the window's rows as cut (kept
+    with the band), the glyphs of the mobs in view put in."""
+    codes, shown, marks = _window(state)
+    if shown is None:      # (a code with no glyph: decoding the drawn window raises, or not)
+        text = _charmap_decode(_drawn(codes, marks), "strict", _DECODING)[0]
+        return tuple([text[i:i + COLS] for i in _ROW_STARTS])
+    if marks:
+        last = _last_drawn
+        if shown is last[0] and marks == last[1]:    # (the same window and mobs as last time)
+            return last[2]
+        lines = list(shown)
+        for r, c, code in marks:
+            i = r * COLS + c
+            if codes[i] != _DARK and i != _CENTRE:
+                glyph = _DECODING[code]
+                if glyph == "\ufffe":       # (no glyph: decoding raises, as it always did)
+                    _charmap_decode(_drawn(codes, marks), "strict", _DECODING)
+                line = lines[r]
+                lines[r] = line[:c] + glyph + line[c + 1:]
+        last[:] = shown, marks, tuple(lines)
+        shown = last[2]
     return shown
+
+
+_last_drawn: list = [None, None, None]     # the window's rows, the mobs drawn, the rows drawn
 
 
 def grid(state: State) -> list[str]:
@@ -349,33 +508,72 @@ def _number(x: float) -> str:
     return str(int(r)) if r == int(r) else str(r)
 
 
-_HUDS: dict[tuple, str] = {}      # everything the HUD reads -> the HUD (``hud``)
+# The HUD is made every step. It is ``head | place[ | rest]``: the head (vitals, inventory, gear,
+# potions, spells, attributes) changes on few turns; the place (floor, position, facing, light,
+# kills) on most, but only in its position. ``hud`` reads everything each time (an edited state
+# shows at once) and compares it with last turn's: the head is remade only when what it reads
+# was not seen before, and the place's text around the position likewise.
+_HEADS: dict[tuple, str] = {}      # everything the head reads -> the head
+_PLACES: dict[tuple, tuple[str, str]] = {}   # floor, facing, daylight, kills -> text around the position
+# last turn's head key, head, place key, place, the parts of the line, the line
+_last: list = [None, "", None, ("", ""), None, ""]
 
 
 def hud(state: State, settings: Settings | None = None) -> str:
     """One line: vitals, inventory, equipment, potions, spells, attributes, floor, position,
-    facing, light and rest state; empty parts left out, parts joined by `` | ``. (Remembered by
-    the values it reads: most turns change few of them, and a state seen before is common.)"""
+    facing, light and rest state; empty parts left out, parts joined by `` | ``. (Its parts
+    are remembered by the values they read, see above.)"""
     del settings   # (the HUD reads only the state; kept for the engine's call shape)
-    inv, level = state.inventory, state.player_level
+    inv, last = state.inventory, _last
     key = (state.player_health, state.player_food, state.player_drink, state.player_energy,
            state.player_mana, state.player_strength, state.player_dexterity,
            state.player_intelligence, state.player_xp, inv.wood, inv.stone, inv.coal, inv.iron,
            inv.diamond, inv.sapphire, inv.ruby, inv.sapling, inv.torches, inv.arrows, inv.books,
            inv.pickaxe, inv.sword, inv.bow, state.sword_enchantment, state.bow_enchantment,
            inv.armour.tobytes(), state.armour_enchantments.tobytes(), inv.potions.tobytes(),
-           state.learned_spells.tobytes(), level, state.player_position.tobytes(),
-           state.player_direction, state.light_level >= NIGHT_LIGHT, state.monsters_killed.tobytes(),
-           state.is_sleeping, state.is_resting)
-    line = _HUDS.get(key)
-    if line is None:
-        if len(_HUDS) >= 10_000:
-            _HUDS.clear()
-        line = _HUDS[key] = _hud(state)
-    return line
+           state.learned_spells.tobytes())
+    if key == last[0]:
+        head = last[1]
+    else:
+        head = _HEADS.get(key)
+        if head is None:
+            if len(_HEADS) >= 10_000:
+                _HEADS.clear()
+            head = _HEADS[key] = _head(state)
+        last[0], last[1] = key, head
+    level = state.player_level
+    key = (level, state.player_direction, state.light_level >= NIGHT_LIGHT,
+           state.monsters_killed.item(level))
+    if key == last[2]:
+        before, after = last[3]
+    else:
+        place = _PLACES.get(key)
+        if place is None:
+            if len(_PLACES) >= 10_000:
+                _PLACES.clear()
+            place = _PLACES[key] = _place(state)
+        last[2], last[3] = key, place
+        before, after = place
+    row, col = state.player_position.tolist()
+    rest = " | Sleeping" if state.is_sleeping else " | Resting" if state.is_resting else ""
+    parts = (head, before, row, col, after, rest)
+    if parts != last[4]:        # (the player often stays put: then the line is last turn's)
+        last[4], last[5] = parts, f"{head} | {before}{row},{col}{after}{rest}"
+    return last[5]
 
 
 def _hud(state: State) -> str:
+    """The HUD made from the state (nothing remembered)."""
+    parts = [_head(state), _where(state)]
+    if state.is_sleeping:
+        parts.append("Sleeping")
+    elif state.is_resting:
+        parts.append("Resting")
+    return " | ".join(parts)
+
+
+def _head(state: State) -> str:
+    """The HUD's vitals, inventory, gear, potions, spells and attributes."""
     maxima = max_vitals(state)
     values = (_number(state.player_health), state.player_food, state.player_drink,
               state.player_energy, state.player_mana)
@@ -411,22 +609,28 @@ def _hud(state: State) -> str:
                                               ("Int", state.player_intelligence)) if v > 1]
     if state.player_xp or levels:
         parts.append(" ".join([f"XP {state.player_xp}", *levels]))
-    level = state.player_level
+    return " | ".join(parts)
+
+
+def _where(state: State) -> str:
+    """The HUD's floor, position, facing, daylight or darkness, and kills toward the ladder."""
     row, col = state.player_position.tolist()
-    where = f"Floor {level} {LEVEL_NAMES[level]} at {row},{col} facing {FACING.get(state.player_direction, '?')}"
+    before, after = _place(state)
+    return f"{before}{row},{col}{after}"
+
+
+def _place(state: State) -> tuple[str, str]:
+    """``_where``'s text before the position and after it."""
+    level = state.player_level
+    after = f" facing {FACING.get(state.player_direction, '?')}"
     if level == 0:
-        where += " Day" if state.light_level >= NIGHT_LIGHT else " Night"
+        after += " Day" if state.light_level >= NIGHT_LIGHT else " Night"
     elif level in DARK_LEVELS:
-        where += " dark"
+        after += " dark"
     killed = state.monsters_killed.tolist()[level]
     if level < len(LEVEL_NAMES) - 1 and killed < KILLS_TO_OPEN_LADDER:
-        where += f" Kills {killed}/{KILLS_TO_OPEN_LADDER}"
-    parts.append(where)
-    if state.is_sleeping:
-        parts.append("Sleeping")
-    elif state.is_resting:
-        parts.append("Resting")
-    return " | ".join(parts)
+        after += f" Kills {killed}/{KILLS_TO_OPEN_LADDER}"
+    return f"Floor {level} {LEVEL_NAMES[level]} at ", after
 
 
 def _enchanted(kind: int) -> str:
