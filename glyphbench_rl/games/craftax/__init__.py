@@ -3,8 +3,8 @@ Craftax tasks as scenarios on that one engine.
 
 Modules: ``state`` (upstream's EnvState in numpy), ``tables`` (enumerations and constant tables),
 ``bestiary`` (mobs), ``rules`` (the step), ``mobs`` (mob movement, attacks, projectiles,
-spawning), ``worldgen`` (the nine levels), ``view`` (the observation), ``task`` (the task
-class), ``scenarios`` (the tasks as data). The ``craftax`` package itself is only a test oracle.
+spawning), ``worldgen`` (the nine levels), ``view`` (the grid and the rules text), ``hud`` (the HUD
+line), ``task`` (the task class), ``scenarios`` (the tasks as data). The ``craftax`` package itself is only a test oracle.
 """
 
 from ...core import register_variants

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from ...core import register_variants
 from ...core.task import NoParams
-from . import view
+from . import hud
 from .scenarios import Scenario
 from .state import Settings
 from .tables import (ACHIEVEMENT_REWARD, ADVANCED_WEIGHT, BASIC_WEIGHT, INTERMEDIATE_WEIGHT,
@@ -62,7 +62,7 @@ class CraftaxFull(CraftaxTask):
 
     def _hud(self) -> str:
         earned = int(self.state.achievements.sum())
-        return f"{view.hud(self.state, self.settings)} | Achievements {earned}/{len(Achievement)}"
+        return f"{hud.hud(self.state, self.settings)} | Achievements {earned}/{len(Achievement)}"
 
 
 register_variants(CraftaxFull, "FullCraftax", {"glyphbench/craftaxfull-v0": {"max_turns": HORIZON}}, tier="extended")

@@ -26,7 +26,7 @@ import numpy as np
 
 from .mobs import MOB_BY_NAME, add_mob
 from .state import MOB_GROUPS, Settings
-from .tables import BlockType
+from .tables import LEVEL_NAMES, BlockType
 
 # ------------------------------------------------------------------------------------------------
 # tests over the tally
@@ -509,7 +509,6 @@ class Scenario:
 
     # -- text ---------------------------------------------------------------------------------------
     def intro(self) -> str:
-        from .view import LEVEL_NAMES
         return f"You start on floor {self.floor} ({LEVEL_NAMES[self.floor]})." if self.floor else ""
 
     def reward_text(self) -> str:

@@ -18,7 +18,7 @@ from ...core import GlyphTask
 from ...core.actions import ActionSet
 from ...core.params import param
 from ..common.lanes import Draws
-from . import rules, view
+from . import hud, rules, view
 from .bestiary import MOB_NAMES
 from .scenarios import SCENARIOS, Scenario, parse_test
 from .tables import NIGHT_LIGHT, Achievement, Action, BlockType
@@ -278,5 +278,5 @@ class CraftaxTask(GlyphTask):
 
     def _hud(self) -> str:
         goal = self.scenario.progress(self.tally)   # (a few counters, formatted)
-        hud = view.hud(self.state, self.settings)
-        return f"{hud} | {goal}" if goal else hud
+        line = hud.hud(self.state, self.settings)
+        return f"{line} | {goal}" if goal else line

@@ -1,5 +1,5 @@
-"""The Craftax observation: the 9 x 11 glyph grid around the player, the HUD line, and the rules
-text of the system prompt.
+"""The Craftax observation: the 9 x 11 glyph grid around the player, and the rules text of the
+system prompt (the HUD line is ``hud``'s).
 
 What is visible follows upstream's symbolic observation (``render_craftax_symbolic``): the
 window is upstream's ``OBS_DIM`` (9 rows, 11 columns) centred on the player; a cell whose
@@ -25,11 +25,11 @@ from codecs import charmap_decode as _charmap_decode
 
 import numpy as np
 
+from .hud import TIERS
 from .mobs import is_boss_vulnerable
-from .state import Mobs, Settings, State
-from .tables import (BOSS_LEVEL, DARK_LEVELS, LEVEL_NAMES, LIGHT_VISIBLE, MINING, NIGHT_LIGHT, PLACING,
-                     POTION_COLOURS, RECIPES as CRAFTING, Action, BlockType, ItemType,
-                     ProjectileType, max_drink, max_energy, max_food, max_health, max_mana)
+from .state import Mobs, State
+from .tables import (BOSS_LEVEL, LIGHT_VISIBLE, MINING, PLACING, RECIPES as CRAFTING, Action,
+                     BlockType, ItemType, ProjectileType)
 from .tables import MONSTERS_KILLED_TO_CLEAR_LEVEL as KILLS_TO_OPEN_LADDER
 
 ROWS, COLS = 9, 11                       # upstream's OBS_DIM
@@ -480,163 +480,6 @@ def grid(state: State) -> list[str]:
     return list(rows(state))
 
 
-# ---- the HUD -----------------------------------------------------------------------------
-
-TIERS = ("", "wood", "stone", "iron", "diamond")
-ARMOUR_TIERS = ("", "iron", "diamond")
-ARMOUR_SLOTS = ("helmet", "chest", "legs", "boots")
-ENCHANTS = ("", "fire", "ice")
-SPELLS = ("fireball", "iceball")
-VITALS = ("HP", "Food", "Drink", "Energy", "Mana")
-FACING = {Action.LEFT: "left", Action.RIGHT: "right", Action.UP: "up", Action.DOWN: "down"}
-# the inventory's countable items, in upstream's symbolic observation order
-COUNTED = ("wood", "stone", "coal", "iron", "diamond", "sapphire", "ruby", "sapling", "torches",
-           "arrows", "books")
-_COUNTED_LABELS = tuple((name, name.capitalize()) for name in COUNTED)
-
-
-def max_vitals(state: State) -> tuple[int, int, int, int, int]:
-    """Upstream's maxima (``tables.max_*``): health 8+str, food/drink/energy 7+2*dex, mana
-    6+3*int (dexterity, strength and intelligence start at 1)."""
-    dex = state.player_dexterity
-    return (max_health(state.player_strength), max_food(dex), max_drink(dex), max_energy(dex),
-            max_mana(state.player_intelligence))
-
-
-def _number(x: float) -> str:
-    r = round(x, 1)
-    return str(int(r)) if r == int(r) else str(r)
-
-
-# The HUD is made every step. It is ``head | place[ | rest]``: the head (vitals, inventory, gear,
-# potions, spells, attributes) changes on few turns; the place (floor, position, facing, light,
-# kills) on most, but only in its position. ``hud`` reads everything each time (an edited state
-# shows at once) and compares it with last turn's: the head is remade only when what it reads
-# was not seen before, and the place's text around the position likewise.
-_HEADS: dict[tuple, str] = {}      # everything the head reads -> the head
-_PLACES: dict[tuple, tuple[str, str]] = {}   # floor, facing, daylight, kills -> text around the position
-# last turn's head key, head, place key, place, the parts of the line, the line
-_last: list = [None, "", None, ("", ""), None, ""]
-
-
-def hud(state: State, settings: Settings | None = None) -> str:
-    """One line: vitals, inventory, equipment, potions, spells, attributes, floor, position,
-    facing, light and rest state; empty parts left out, parts joined by `` | ``. (Its parts
-    are remembered by the values they read, see above.)"""
-    del settings   # (the HUD reads only the state; kept for the engine's call shape)
-    inv, last = state.inventory, _last
-    key = (state.player_health, state.player_food, state.player_drink, state.player_energy,
-           state.player_mana, state.player_strength, state.player_dexterity,
-           state.player_intelligence, state.player_xp, inv.wood, inv.stone, inv.coal, inv.iron,
-           inv.diamond, inv.sapphire, inv.ruby, inv.sapling, inv.torches, inv.arrows, inv.books,
-           inv.pickaxe, inv.sword, inv.bow, state.sword_enchantment, state.bow_enchantment,
-           inv.armour.tobytes(), state.armour_enchantments.tobytes(), inv.potions.tobytes(),
-           state.learned_spells.tobytes())
-    if key == last[0]:
-        head = last[1]
-    else:
-        head = _HEADS.get(key)
-        if head is None:
-            if len(_HEADS) >= 10_000:
-                _HEADS.clear()
-            head = _HEADS[key] = _head(state)
-        last[0], last[1] = key, head
-    level = state.player_level
-    key = (level, state.player_direction, state.light_level >= NIGHT_LIGHT,
-           state.monsters_killed.item(level))
-    if key == last[2]:
-        before, after = last[3]
-    else:
-        place = _PLACES.get(key)
-        if place is None:
-            if len(_PLACES) >= 10_000:
-                _PLACES.clear()
-            place = _PLACES[key] = _place(state)
-        last[2], last[3] = key, place
-        before, after = place
-    row, col = state.player_position.tolist()
-    rest = " | Sleeping" if state.is_sleeping else " | Resting" if state.is_resting else ""
-    parts = (head, before, row, col, after, rest)
-    if parts != last[4]:        # (the player often stays put: then the line is last turn's)
-        last[4], last[5] = parts, f"{head} | {before}{row},{col}{after}{rest}"
-    return last[5]
-
-
-def _hud(state: State) -> str:
-    """The HUD made from the state (nothing remembered)."""
-    parts = [_head(state), _where(state)]
-    if state.is_sleeping:
-        parts.append("Sleeping")
-    elif state.is_resting:
-        parts.append("Resting")
-    return " | ".join(parts)
-
-
-def _head(state: State) -> str:
-    """The HUD's vitals, inventory, gear, potions, spells and attributes."""
-    maxima = max_vitals(state)
-    values = (_number(state.player_health), state.player_food, state.player_drink,
-              state.player_energy, state.player_mana)
-    if len(set(maxima)) == 1:      # (the usual case: every maximum 9) said once
-        parts = [" ".join(f"{name} {v}" for name, v in zip(VITALS, values)) + f" (max {maxima[0]})"]
-    else:
-        parts = [" ".join(f"{name} {v}/{m}" for name, v, m in zip(VITALS, values, maxima))]
-    inv = state.inventory
-    counted = [f"{label} {n}" for name, label in _COUNTED_LABELS if (n := getattr(inv, name))]
-    if counted:
-        parts.append(" ".join(counted))
-    gear = []
-    if inv.pickaxe:
-        gear.append(f"{TIERS[inv.pickaxe]} pickaxe")
-    if inv.sword:
-        gear.append(f"{_enchanted(state.sword_enchantment)}{TIERS[inv.sword]} sword")
-    if inv.bow:
-        gear.append(f"{_enchanted(state.bow_enchantment)}bow")
-    armour = []
-    if np.count_nonzero(inv.armour):
-        armour = [f"{_enchanted(e)}{ARMOUR_TIERS[t]} {slot}" for slot, t, e in
-                  zip(ARMOUR_SLOTS, inv.armour.tolist(), state.armour_enchantments.tolist()) if t]
-    if gear or armour:
-        parts.append(", ".join(gear + armour))
-    if np.count_nonzero(inv.potions):
-        parts.append("Potions " + " ".join(
-            f"{colour} {n}" for colour, n in zip(POTION_COLOURS, inv.potions.tolist()) if n))
-    if np.count_nonzero(state.learned_spells):
-        parts.append("Spells " + " ".join(
-            name for name, known in zip(SPELLS, state.learned_spells.tolist()) if known))
-    levels = [f"{name} {v}" for name, v in (("Dex", state.player_dexterity),
-                                              ("Str", state.player_strength),
-                                              ("Int", state.player_intelligence)) if v > 1]
-    if state.player_xp or levels:
-        parts.append(" ".join([f"XP {state.player_xp}", *levels]))
-    return " | ".join(parts)
-
-
-def _where(state: State) -> str:
-    """The HUD's floor, position, facing, daylight or darkness, and kills toward the ladder."""
-    row, col = state.player_position.tolist()
-    before, after = _place(state)
-    return f"{before}{row},{col}{after}"
-
-
-def _place(state: State) -> tuple[str, str]:
-    """``_where``'s text before the position and after it."""
-    level = state.player_level
-    after = f" facing {FACING.get(state.player_direction, '?')}"
-    if level == 0:
-        after += " Day" if state.light_level >= NIGHT_LIGHT else " Night"
-    elif level in DARK_LEVELS:
-        after += " dark"
-    killed = state.monsters_killed.tolist()[level]
-    if level < len(LEVEL_NAMES) - 1 and killed < KILLS_TO_OPEN_LADDER:
-        after += f" Kills {killed}/{KILLS_TO_OPEN_LADDER}"
-    return f"Floor {level} {LEVEL_NAMES[level]} at ", after
-
-
-def _enchanted(kind: int) -> str:
-    return f"{ENCHANTS[kind]} " if kind else ""
-
-
 # ---- the rules text ----------------------------------------------------------------------
 
 # (action name, cost, needs a crafting table nearby, needs a furnace nearby), from tables.py's
@@ -652,6 +495,15 @@ MINING_TIERS = tuple(sorted(((block, tier) for block, (tier, item, _) in MINING.
                              if item is not None), key=lambda pair: pair[1]))
 
 
+# inventory fields named in the plural, for a count of one
+_SINGULAR = {"torches": "torch", "arrows": "arrow", "books": "book"}
+
+
+def _count(n: int, item: str) -> str:
+    """``n`` of an inventory field: ``2 wood``, ``1 torch``."""
+    return f"{n} {_SINGULAR.get(item, item) if n == 1 else item}"
+
+
 def _recipe_lines(recipes) -> list[str]:
     """Recipes grouped by where they are made, those with equal costs merged:
     ``table: wood pickaxe/wood sword 1 wood; ...``."""
@@ -663,7 +515,7 @@ def _recipe_lines(recipes) -> list[str]:
         places.setdefault(place, {}).setdefault(tuple(cost.items()), []).append(what)
     lines = []
     for place, groups in places.items():
-        items = [f"{'/'.join(names)} {'+'.join(f'{n} {item}' for item, n in cost)}"
+        items = [f"{'/'.join(names)} {'+'.join(_count(n, item) for item, n in cost)}"
                  for cost, names in groups.items()]
         lines.append(f"{place}: " + "; ".join(items))
     return lines

@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from glyphbench_rl.games.craftax import scenarios, view, worldgen
+from glyphbench_rl.games.craftax import hud, scenarios, view, worldgen
 from glyphbench_rl.games.craftax.state import Settings
 
 
@@ -42,16 +42,16 @@ def test_unused_draws_batched_advance_the_generator_as_one_by_one():
 
 def test_remembered_hud_follows_the_state():
     state = next(_states())
-    first = view.hud(state)
-    assert first == view._hud(state)
+    first = hud.hud(state)
+    assert first == hud._hud(state)
     state.inventory.wood += 3
     state.inventory.potions[2] = 1
     state.player_position[1] += 1
-    assert view.hud(state) == view._hud(state) != first
+    assert hud.hud(state) == hud._hud(state) != first
     state.inventory.wood -= 3
     state.inventory.potions[2] = 0
     state.player_position[1] -= 1
-    assert view.hud(state) == first
+    assert hud.hud(state) == first
 
 
 def test_dark_window_and_map_edge():

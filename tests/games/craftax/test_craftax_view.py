@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 
 from glyphbench_rl.core.frame import is_single_width, legend_of, vocab_entries
-from glyphbench_rl.games.craftax import view
+from glyphbench_rl.games.craftax import hud, view
 from glyphbench_rl.games.craftax.state import Inventory, Mobs, Settings, State
 from glyphbench_rl.games.craftax.tables import Action, BlockType, ItemType, ProjectileType
 
@@ -194,7 +194,7 @@ def test_mobs_in_the_dark_are_hidden(states):
 
 def test_hud_of_a_fresh_overworld_state(states):
     state = states[0][0]
-    text = view.hud(state, Settings())
+    text = hud.hud(state, Settings())
     assert text.startswith("HP 9 Food 9 Drink 9 Energy 9 Mana 9 (max 9) | ")
     assert "Floor 0 Overworld at 24,24" in text and "Day" in text
     assert "Kills" not in text         # the overworld's ladder starts open (kills 10)
@@ -211,7 +211,7 @@ def test_hud_lists_inventory_gear_and_status(states):
     state.learned_spells[:] = (True, False)
     state.player_xp, state.player_strength, state.player_health = 2, 2, 7.25
     state.monsters_killed[1], state.is_resting = 3, True
-    text = view.hud(state)
+    text = hud.hud(state)
     for part in ("HP 7.2/10 Food 9/9 Drink 9/9 Energy 9/9 Mana 9/9", "Wood 3 Coal 2 Arrows 5", "stone pickaxe", "ice diamond sword",
                  "bow", "iron helmet", "fire diamond legs", "Potions green 2 yellow 1",
                  "Spells fireball", "XP 2 Str 2 |", "Floor 1 Dungeon", "Kills 3/8",
@@ -219,14 +219,14 @@ def test_hud_lists_inventory_gear_and_status(states):
         assert part in text, part
     assert "Stone" not in text and "chest" not in text   # zero counts and empty slots left out
     state.player_level = 8
-    assert "Kills" not in view.hud(state)   # the graveyard has no ladder down
+    assert "Kills" not in hud.hud(state)   # the graveyard has no ladder down
 
 
 def test_hud_light(states):
     night = next(s for s, _ in states if s.player_level == 0 and s.is_sleeping)
-    assert "Night" in view.hud(night) and "Sleeping" in view.hud(night)
+    assert "Night" in hud.hud(night) and "Sleeping" in hud.hud(night)
     dark = next(s for s, _ in states if s.player_level == 5)
-    assert " dark" in view.hud(dark)
+    assert " dark" in hud.hud(dark)
 
 
 # ---- the rules text ----------------------------------------------------------------------

@@ -1,11 +1,11 @@
-"""The remembered Craftax view (``view.rows``, ``view.hud``, the task's ``_grid``/``_hud``) shows
+"""The remembered Craftax view (``view.rows``, ``hud.hud``, the task's ``_grid``/``_hud``) shows
 exactly what a plain drawing of the state shows, step after step, whatever is edited in the state
 between steps: map, items, light, kill counts, mobs and projectiles, inventory and vitals, the
 player's place, facing and sleep, whole arrays replaced (also by arrays of another dtype or
 layout), other map sizes.
 
 ``plain_rows`` draws the window cell by cell straight from upstream's rules as ``view``'s module
-docstring states them; ``plain_hud`` is ``view._hud`` (the HUD written out, nothing remembered)
+docstring states them; ``plain_hud`` is ``hud._hud`` (the HUD written out, nothing remembered)
 with the scenario's progress formatted here.
 """
 
@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from glyphbench_rl.core.registry import make
-from glyphbench_rl.games.craftax import view, worldgen
+from glyphbench_rl.games.craftax import hud, view, worldgen
 from glyphbench_rl.games.craftax.mobs import is_boss_vulnerable
 from glyphbench_rl.games.craftax.state import Settings
 from glyphbench_rl.games.craftax.tables import BOSS_LEVEL, BlockType, ItemType, ProjectileType
@@ -74,10 +74,10 @@ def plain_rows(state) -> tuple[str, ...]:
 
 
 def plain_hud(task) -> str:
-    hud = view._hud(task.state)
+    line = hud._hud(task.state)
     goal = " ".join(f"{key.split('.')[-1].capitalize()} {_fmt(task.tally.value(key))}"
                     for key in task.scenario.progress_keys)
-    return f"{hud} | {goal}" if goal else hud
+    return f"{line} | {goal}" if goal else line
 
 
 def _fmt(v) -> str:
@@ -211,7 +211,7 @@ def test_view_of_edited_states_and_other_layouts():
             mobs.position = np.ascontiguousarray(mobs.position, np.int32)
             mobs.mask = np.ascontiguousarray(mobs.mask)
         assert view.rows(state) == plain_rows(state), turn
-        assert view.hud(state) == view._hud(state), turn
+        assert hud.hud(state) == hud._hud(state), turn
         codes = view.cell_codes(state)
         assert "".join(view._TABLE[code] for code in codes.ravel().tolist()) == "".join(plain_rows(state))
 
