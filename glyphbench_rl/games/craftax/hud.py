@@ -65,11 +65,7 @@ def hud(state: State, settings: Settings | None = None) -> str:
     if key == last[0]:
         head = last[1]
     else:
-        head = _HEADS.get(key)
-        if head is None:
-            if len(_HEADS) >= 10_000:
-                _HEADS.clear()
-            head = _HEADS[key] = _head(state)
+        head = _remembered(_HEADS, key, _head, state)
         last[0], last[1] = key, head
     level = state.player_level
     key = (level, state.player_direction, state.light_level >= NIGHT_LIGHT,
@@ -77,11 +73,7 @@ def hud(state: State, settings: Settings | None = None) -> str:
     if key == last[2]:
         before, after = last[3]
     else:
-        place = _PLACES.get(key)
-        if place is None:
-            if len(_PLACES) >= 10_000:
-                _PLACES.clear()
-            place = _PLACES[key] = _place(state)
+        place = _remembered(_PLACES, key, _place, state)
         last[2], last[3] = key, place
         before, after = place
     row, col = state.player_position.tolist()
@@ -90,6 +82,16 @@ def hud(state: State, settings: Settings | None = None) -> str:
     if parts != last[4]:        # (the player often stays put: then the line is last turn's)
         last[4], last[5] = parts, f"{head} | {before}{row},{col}{after}{rest}"
     return last[5]
+
+
+def _remembered(memo: dict, key: tuple, make, state: State):
+    """``memo[key]``, made by ``make(state)`` the first time (a memo holds 10,000 at most)."""
+    value = memo.get(key)
+    if value is None:
+        if len(memo) >= 10_000:
+            memo.clear()
+        value = memo[key] = make(state)
+    return value
 
 
 def _hud(state: State) -> str:
