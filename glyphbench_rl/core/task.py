@@ -29,11 +29,9 @@ import gymnasium as gym
 import numpy as np
 
 from .actions import ActionSet
-from .frame import Frame, legend_line, legends_for, render, vocab_entries
+from .frame import Frame, legend_line, legends_for, new_frame, render, vocab_entries
 from .params import ParamError, check_params
 from .seeding import MAX_SEED, check_seed, derive
-
-_tuple_new = tuple.__new__   # (a Frame made in one C call: see frame.new_frame)
 
 STANDARD_TURN_CAP = 512
 _RETURN_EPS = 1e-9
@@ -298,12 +296,10 @@ class GlyphTask(gym.Env[str, int]):
         if self.turn >= self.max_turns and not self._terminated:
             self._truncated = self.done = True
         frame = self._frame = self._build_frame()
-        # (``_info`` written out: this runs every step; the base ``_build_frame`` has just
-        # rendered its frame, a game's own ``_build_frame`` has not)
-        info = {"frame": frame, "turn": self.turn, "return": self.episode_return, "won": self.won,
-                "forfeit": forfeit, "clamped": self._clamped}
+        info = self._info(forfeit=forfeit)
         if forfeit:
             info["forfeit_reason"] = reason
+        # (the base ``_build_frame`` has just rendered its frame; a game's own has not)
         text = self._obs_text if self._plain_frame else render(
             frame, self._legend_text if frame.legend is self._legend else None)
         return text, float(reward), self._terminated, self._truncated, info
@@ -332,7 +328,7 @@ class GlyphTask(gym.Env[str, int]):
         if self._plain_frame:   # the observation text too (``render``'s, written out)
             self._obs_text = "\n".join((hud, *grid, self._legend_text, message) if message
                                    else (hud, *grid, self._legend_text))
-        return _tuple_new(Frame, (grid, self._legend, hud, message, self.axes, (), ()))
+        return new_frame(grid, self._legend, hud, message, self.axes)
 
     def _info(self, *, forfeit: bool) -> dict[str, Any]:
         return {"frame": self._frame, "turn": self.turn, "return": self.episode_return,

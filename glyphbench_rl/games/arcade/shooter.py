@@ -26,7 +26,7 @@ from dataclasses import dataclass
 from ...core.actions import ActionSet
 from ...core.params import param
 from .bodies import Body, Gun, sweep
-from .engine import NONE_DRAWN, ArcadeParams, ArcadeTask
+from .engine import ArcadeParams, ArcadeTask
 
 NOOP, LEFT, RIGHT, FIRE = 0, 1, 2, 3
 CANNON, SHOT, BOMB = "A", "|", "!"
@@ -184,33 +184,8 @@ class Shooter(ArcadeTask):
                 if lanes is None or b.c in lanes:
                     cells[b.r, b.c] = b
             find = cells.get
-            if blocks is None and lanes is not None:
-                for shot in gun.shots:
-                    if shot.dr != -1:
-                        break
-                else:   # the usual volley: every shot straight up, nothing but enemies stops one
-                    for shot in gun.shots:
-                        r, c, cell = shot.r, shot.c, None
-                        for _ in range(speed):
-                            r -= 1
-                            if r < 0:
-                                cell = r, c
-                                break
-                            foe = find((r, c))
-                            if foe is not None:
-                                cell = r, c
-                                hits.append((foe, cell))
-                                break
-                            shot.r = r
-                        shot.data -= speed
-                        if cell is not None:
-                            shot.alive = False
-                        elif shot.data <= 0:
-                            shot.alive = False
-                        else:
-                            kept.append(shot)
-                    gun.shots = kept
-                    return hits
+            # nothing but enemies stops a straight shot: they are found without a call a cell
+            direct = find if blocks is None and lanes is not None else None
 
             def stops(r: int, c: int) -> bool:   # remembers the enemy it found for the hit below
                 nonlocal foe
@@ -219,6 +194,8 @@ class Shooter(ArcadeTask):
                 foe = find((r, c))
                 return foe is not None or (blocks is not None and blocks(r, c))
         else:
+            direct = None
+
             def stops(r: int, c: int) -> bool:   # as above, asking ``at``
                 nonlocal foe
                 if r < 0:
@@ -231,12 +208,20 @@ class Shooter(ArcadeTask):
         for shot in gun.shots:
             if shot.dr == -1 and not shot.dc:
                 cell, r, c = None, shot.r, shot.c
-                for _ in range(speed):
-                    r -= 1
-                    if stops(r, c):
-                        cell = r, c
-                        break
-                    shot.r = r
+                if direct is not None:
+                    for _ in range(speed):
+                        r -= 1
+                        if r < 0 or (foe := direct((r, c))) is not None:
+                            cell = r, c
+                            break
+                        shot.r = r
+                else:
+                    for _ in range(speed):
+                        r -= 1
+                        if stops(r, c):
+                            cell = r, c
+                            break
+                        shot.r = r
             else:
                 cell = sweep(shot, stops, speed) if (shot.dr or shot.dc) else None
             shot.data -= speed
@@ -344,40 +329,11 @@ class Shooter(ArcadeTask):
             return super()._grid()
         rows = self._rows() if self._slides else self.still[:]
         self._grids += 1
-        drawn = self._drawn
-        if drawn is NONE_DRAWN:   # (rows too varied to remember: ArcadeTask._paint draws them afresh)
-            paint = self._paint
-            paint(rows, self.pack.bodies)
-            if self.gun.shots:
-                paint(rows, self.gun.shots, SHOT)
-            if self.bombs.shots:
-                paint(rows, self.bombs.shots, BOMB)
-            self._put(rows, self.row, self.col, self.cannon)
-            return rows
-        inside = range(len(rows))
-        get = drawn.get
-        for b in self.pack.bodies:   # (ArcadeTask._paint written out: this runs every turn)
-            r = b.r
-            if r in inside:
-                line = rows[r]
-                key = (line, b.c, b.glyph)
-                row = get(key)
-                if row is None:
-                    if not 0 <= key[1] < len(line):
-                        continue
-                    row = self._draw(key)
-                rows[r] = row
+        paint = self._paint
+        paint(rows, self.pack.bodies)
         if self.gun.shots:
-            self._paint(rows, self.gun.shots, SHOT)
+            paint(rows, self.gun.shots, SHOT)
         if self.bombs.shots:
-            self._paint(rows, self.bombs.shots, BOMB)
-        r, c = self.row, self.col
-        if r in inside:
-            line = rows[r]
-            key = (line, c, self.cannon)
-            row = get(key)
-            if row is None and 0 <= c < len(line):
-                row = self._draw(key)
-            if row is not None:
-                rows[r] = row
+            paint(rows, self.bombs.shots, BOMB)
+        self._put(rows, self.row, self.col, self.cannon)
         return rows
