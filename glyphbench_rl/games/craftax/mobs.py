@@ -13,7 +13,8 @@ constants and the player's side of combat (armour, the sleeping factor) are ``ta
 
 Randomness comes from ``draws``, one draw per choice that upstream makes at random, and only
 when the choice matters (upstream draws for every slot, live or not; we draw for live mobs).
-State arrays are indexed ``[level, slot]``; only the player's level moves, as upstream.
+Mob slots are Python lists indexed ``[level][slot]`` (``state.Mobs``); only the player's level
+moves, as upstream.
 """
 
 from __future__ import annotations
@@ -25,7 +26,7 @@ from .bestiary import (FLOOR_MOB_MAPPING, FLOOR_MOB_SPAWN_CHANCE, MELEE_ATTACK_C
                        MOB_TYPE_DAMAGE_MAPPING, MOB_TYPE_DEFENCE_MAPPING, MOB_TYPE_HEALTH_MAPPING,
                        PROJECTILE_DAMAGE, RANGED_ATTACK_COOLDOWN,
                        RANGED_MOB_TYPE_TO_PROJECTILE_TYPE_MAPPING)
-from .state import MAX_MELEE, MAX_PASSIVE, MAX_RANGED, Mobs, Settings, State
+from .state import MAX_MELEE, MAX_PASSIVE, MAX_RANGED, Mobs, Settings, State, float32
 from .tables import (ARMOUR_DEFENCE_PER_TIER, BOSS_FIGHT_EXTRA_DAMAGE, BOSS_FIGHT_SPAWN_TURNS,
                      BOSS_LEVEL, COW_FOOD, ENCHANTED_ARMOUR_DEFENCE, IS_SOLID,
                      MONSTERS_KILLED_TO_CLEAR_LEVEL, SLEEPING_MELEE_FACTOR, Achievement, BlockType,
@@ -66,8 +67,8 @@ def is_boss_spawn_wave(state: State) -> bool:
 def is_boss_vulnerable(state: State) -> bool:
     """No melee or ranged mob alive on the player's level and the spawn wave is over."""
     level = state.player_level
-    return (True not in state.melee_mobs.mask[level].tolist()
-            and True not in state.ranged_mobs.mask[level].tolist()
+    return (True not in state.melee_mobs.mask[level]
+            and True not in state.ranged_mobs.mask[level]
             and state.boss_timesteps_to_spawn_this_round <= 0)
 
 
@@ -132,15 +133,18 @@ def _mob_damage(damage: tuple, defence: tuple) -> float:
 
 def _attack_class(state: State, mobs: Mobs, kind: int, row: int, col: int, damage: tuple,
                   achieve: bool) -> tuple[bool, bool]:
-    """Damage the first live mob of one class at (row, col); (hit, killed)."""
+    """Damage the first live mob of one class at (row, col); (hit, killed). The health kept
+    is rounded to float32, as upstream's array keeps it; the kill is decided on the difference
+    before rounding."""
     level = state.player_level
     mask, position = mobs.mask[level], mobs.position[level]
-    for slot in range(mask.shape[0]):
-        if mask[slot] and position[slot, 0] == row and position[slot, 1] == col:
-            type_id = int(mobs.type_id[level, slot])
-            health = float(mobs.health[level, slot]) - _mob_damage(
+    cell = (row, col)
+    for slot, alive in enumerate(mask):
+        if alive and position[slot] == cell:
+            type_id = mobs.type_id[level][slot]
+            health = mobs.health[level][slot] - _mob_damage(
                 damage, MOB_TYPE_DEFENCE_MAPPING[type_id][kind])
-            mobs.health[level, slot] = health
+            mobs.health[level][slot] = float32(health)
             if health > 0:
                 return True, False
             mask[slot] = False
@@ -178,28 +182,32 @@ def attack_mob(state: State, row: int, col: int, damage: tuple, can_eat: bool) -
 # ---------------------------------------------------------------------------------------------
 # Movement
 #
-# A numpy scalar read or write costs about as much as a dozen lines of Python arithmetic, so an
-# update reads each group's slots of the player's level once, as Python lists, moves the mobs in
-# Python and writes back only what changed: a mob's cell when it moved, its mask when it died,
-# the mob map where a mob left or stands.
+# The slots are Python lists (``state.Mobs``): a mover reads and writes list items. The mob map
+# stays numpy (upstream's field, read by the rules' ``is_in_mob``, the planner and spawning);
+# an update reads it through ``.item`` and writes it only where it changes (a move, a death).
+
+_FAR = 1 << 30      # a despawn limit no distance reaches
+
 
 class _Turn:
     """What every mover of one update reads: the player's level, its map and mob map (views,
-    written in place), the player's cell, and the despawn rule."""
-    __slots__ = ("state", "draws", "level", "map", "occupied", "rows", "cols", "p_row", "p_col",
-                 "boss", "despawn")
+    written in place), the player's cell, the draws, and the despawn limits."""
+    __slots__ = ("state", "draws", "random", "level", "map", "occupied", "rows", "cols",
+                 "p_row", "p_col", "boss", "passive_limit", "monster_limit")
 
     def __init__(self, state: State, settings: Settings, draws) -> None:
-        self.state, self.draws = state, draws
+        self.state, self.draws, self.random = state, draws, draws.random
         self.level = level = state.player_level
         self.map, self.occupied = state.map[level], state.mob_map[level]
         self.rows, self.cols = self.map.shape
         self.p_row, self.p_col = state.player_position.tolist()
         self.boss = level == BOSS_LEVEL
-        # monsters beyond this Manhattan distance (measured before they move) vanish; upstream
+        # mobs at this Manhattan distance or more (measured before they move) vanish; upstream
         # keeps the boss level's monsters (not its passive mobs), and we keep all when
         # spawning is switched off
-        self.despawn = settings.mob_despawn_distance if settings.spawning else None
+        despawn = settings.mob_despawn_distance if settings.spawning else _FAR
+        self.passive_limit = despawn
+        self.monster_limit = _FAR if self.boss else despawn
 
     def can_enter(self, row: int, col: int, collision: tuple) -> bool:
         """Upstream's is_position_in_bounds_not_in_mob_not_colliding."""
@@ -220,27 +228,23 @@ class _Turn:
         """One step toward the player along the axis of the larger distance (a tie: either
         axis, evenly), upstream's player_move_direction."""
         a_row, a_col = abs(d_row), abs(d_col)
-        if a_row > a_col or (a_row == a_col and self.draws.below(2) == 0):
+        if a_row > a_col or (a_row == a_col and int(self.random() * 2) == 0):
             return (d_row > 0) - (d_row < 0), 0
         return 0, (d_col > 0) - (d_col < 0)
 
-    def relocate(self, group: Mobs, slot: int, row: int, col: int, new_row: int, new_col: int,
-                 distance: int, monster: bool) -> None:
-        """Write a mob's new cell (if it moved) and life, keeping the mob map exact: the cell
-        left is cleared, the cell stood on set (as upstream, even when it stayed). A mob whose
-        ``distance`` from the player (before it moved) is beyond the despawn distance vanishes
-        (a monster on the boss level stays)."""
-        alive = (self.despawn is None or distance < self.despawn or (monster and self.boss))
+    def relocate(self, mask: list, positions: list, slot: int, row: int, col: int,
+                 new_row: int, new_col: int, alive: bool) -> None:
+        """Write a mob's new cell (if it moved) and its death (not ``alive``: despawned),
+        keeping the mob map exact: the cell left is cleared, the cell entered set. (Upstream
+        sets the cell stood on even when the mob stayed; it is set already.)"""
         occupied = self.occupied
         if new_row != row or new_col != col:
-            position = group.position
-            position[self.level, slot, 0] = new_row
-            position[self.level, slot, 1] = new_col
+            positions[slot] = (new_row, new_col)
             occupied[row, col] = False
-        if alive:
-            occupied[new_row, new_col] = True
-        else:
-            group.mask[self.level, slot] = False
+            if alive:
+                occupied[new_row, new_col] = True
+        if not alive:
+            mask[slot] = False
             occupied[row, col] = False
 
 
@@ -249,11 +253,10 @@ def _move_melee(turn: _Turn, slot: int, row: int, col: int, type_id: int, cooldo
     an adjacent player when the cooldown is over. Returns the new cooldown."""
     d_row, d_col = turn.p_row - row, turn.p_col - col
     distance = abs(d_row) + abs(d_col)
-    draws = turn.draws
-    if (distance < 10 or turn.boss) and draws.random() < 0.75:
+    if (distance < 10 or turn.boss) and turn.random() < 0.75:
         step_row, step_col = turn.toward(d_row, d_col)
     else:
-        step_row, step_col = _STEPS[draws.below(4)]
+        step_row, step_col = _STEPS[int(turn.random() * 4)]
     new_row, new_col = row, col
     if distance == 1 and cooldown <= 0:
         hurt_player(turn.state, MOB_TYPE_DAMAGE_MAPPING[type_id][_MELEE], melee=True)
@@ -263,13 +266,15 @@ def _move_melee(turn: _Turn, slot: int, row: int, col: int, type_id: int, cooldo
         if turn.can_enter(row + step_row, col + step_col,
                           MOB_TYPE_COLLISION_MAPPING[type_id][_MELEE]):
             new_row, new_col = row + step_row, col + step_col
-    turn.relocate(turn.state.melee_mobs, slot, row, col, new_row, new_col, distance, True)
+    melee = turn.state.melee_mobs
+    turn.relocate(melee.mask[turn.level], melee.position[turn.level], slot, row, col,
+                  new_row, new_col, distance < turn.monster_limit)
     return cooldown
 
 
 def _move_passive(turn: _Turn, slot: int, row: int, col: int, type_id: int) -> None:
     """Wander: each of the four steps with 1/8, else stay (upstream's DIRECTIONS[1:9])."""
-    choice = turn.draws.below(8)
+    choice = int(turn.random() * 8)
     new_row, new_col = row, col
     if choice < 4:
         step_row, step_col = _STEPS[choice]
@@ -277,7 +282,9 @@ def _move_passive(turn: _Turn, slot: int, row: int, col: int, type_id: int) -> N
                           MOB_TYPE_COLLISION_MAPPING[type_id][_PASSIVE]):
             new_row, new_col = row + step_row, col + step_col
     distance = abs(turn.p_row - row) + abs(turn.p_col - col)
-    turn.relocate(turn.state.passive_mobs, slot, row, col, new_row, new_col, distance, False)
+    passive = turn.state.passive_mobs
+    turn.relocate(passive.mask[turn.level], passive.position[turn.level], slot, row, col,
+                  new_row, new_col, distance < turn.passive_limit)
 
 
 def _move_ranged(turn: _Turn, slot: int, row: int, col: int, type_id: int, cooldown: int) -> int:
@@ -286,14 +293,13 @@ def _move_ranged(turn: _Turn, slot: int, row: int, col: int, type_id: int, coold
     cooldown."""
     d_row, d_col = turn.p_row - row, turn.p_col - col
     distance = abs(d_row) + abs(d_col)
-    draws = turn.draws
     toward = turn.toward(d_row, d_col)
     too_close = distance <= 3
-    if draws.random() > 0.85 and (distance >= 6 or too_close):
+    if turn.random() > 0.85 and (distance >= 6 or too_close):
         sign = -1 if too_close else 1
         new_row, new_col = row + sign * toward[0], col + sign * toward[1]
     else:
-        step_row, step_col = _STEPS[draws.below(4)]
+        step_row, step_col = _STEPS[int(turn.random() * 4)]
         new_row, new_col = row + step_row, col + step_col
     can_move = turn.can_enter(new_row, new_col, MOB_TYPE_COLLISION_MAPPING[type_id][_RANGED])
     if cooldown <= 0 and (4 <= distance <= 5 or (too_close and not can_move)):
@@ -304,7 +310,9 @@ def _move_ranged(turn: _Turn, slot: int, row: int, col: int, type_id: int, coold
         cooldown -= 1
         if not can_move:
             new_row, new_col = row, col
-    turn.relocate(turn.state.ranged_mobs, slot, row, col, new_row, new_col, distance, True)
+    ranged = turn.state.ranged_mobs
+    turn.relocate(ranged.mask[turn.level], ranged.position[turn.level], slot, row, col,
+                  new_row, new_col, distance < turn.monster_limit)
     return cooldown
 
 
@@ -312,13 +320,13 @@ def _shoot(turn: _Turn, row: int, col: int, direction: tuple, kind: int) -> None
     """A mob projectile in the first free slot, if any (upstream's spawn_projectile)."""
     state, level = turn.state, turn.level
     projectiles = state.mob_projectiles
-    mask = projectiles.mask[level].tolist()
-    if all(mask):
+    mask = projectiles.mask[level]
+    if False not in mask:
         return
     slot = mask.index(False)
-    projectiles.position[level, slot] = (row, col)
-    projectiles.mask[level, slot] = True
-    projectiles.type_id[level, slot] = int(kind)
+    projectiles.position[level][slot] = (row, col)
+    mask[slot] = True
+    projectiles.type_id[level][slot] = int(kind)
     state.mob_projectile_directions[level, slot] = direction
 
 
@@ -339,10 +347,9 @@ def _move_mob_projectile(turn: _Turn, slot: int, row: int, col: int, d_row: int,
     if hit_player:
         hurt_player(turn.state, PROJECTILE_DAMAGE[kind])
     level = turn.level
-    projectiles.position[level, slot, 0] = new_row
-    projectiles.position[level, slot, 1] = new_col
+    projectiles.position[level][slot] = (new_row, new_col)
     if not flies_on:
-        projectiles.mask[level, slot] = False
+        projectiles.mask[level][slot] = False
 
 
 def player_projectile_damage(state: State, kind: int) -> tuple:
@@ -376,40 +383,37 @@ def _move_player_projectile(turn: _Turn, slot: int, row: int, col: int, d_row: i
     flies_on = (not hit and 0 <= new_row < turn.rows and 0 <= new_col < turn.cols
                 and not IS_SOLID[turn.map.item(new_row, new_col)])
     level = turn.level
-    projectiles.position[level, slot, 0] = new_row
-    projectiles.position[level, slot, 1] = new_col
+    projectiles.position[level][slot] = (new_row, new_col)
     if not flies_on:
-        projectiles.mask[level, slot] = False
+        projectiles.mask[level][slot] = False
 
 
-def _move_monsters(turn: _Turn, group: Mobs, mask: list, mover) -> None:
+def _move_monsters(turn: _Turn, group: Mobs, mover) -> None:
     """Melee or ranged mobs in slot order; dead slots only count their cooldown down, as
-    upstream (a mob spawned into a slot inherits its cooldown)."""
+    upstream (a mob spawned into a slot inherits its cooldown). (A mover changes no slot but
+    its own, so the mask is read as it goes.)"""
     level = turn.level
-    positions, types = group.position[level].tolist(), group.type_id[level].tolist()
+    positions, types = group.position[level], group.type_id[level]
     cooldowns = group.attack_cooldown[level]
-    for slot, cooldown in enumerate(cooldowns.tolist()):
-        if mask[slot]:
+    for slot, alive in enumerate(group.mask[level]):
+        if alive:
             row, col = positions[slot]
-            cooldown = mover(turn, slot, row, col, types[slot], cooldown)
+            cooldowns[slot] = mover(turn, slot, row, col, types[slot], cooldowns[slot])
         else:
-            cooldown -= 1
-        cooldowns[slot] = cooldown
+            cooldowns[slot] -= 1
 
 
 def _count_down(group: Mobs, level: int) -> None:
     """Dead slots count their cooldown down too, as upstream (a spawned mob inherits it)."""
-    cooldowns = group.attack_cooldown[level]
-    for slot, cooldown in enumerate(cooldowns.tolist()):
-        cooldowns[slot] = cooldown - 1
+    group.attack_cooldown[level] = [cooldown - 1 for cooldown in group.attack_cooldown[level]]
 
 
-def _fly(turn: _Turn, projectiles: Mobs, directions, mask: list, mover) -> None:
-    """The live projectiles of one kind in slot order, their slots read once."""
+def _fly(turn: _Turn, projectiles: Mobs, directions, mover) -> None:
+    """The live projectiles of one kind in slot order (each mover changes only its own slot)."""
     level = turn.level
-    positions, kinds = projectiles.position[level].tolist(), projectiles.type_id[level].tolist()
+    positions, kinds = projectiles.position[level], projectiles.type_id[level]
     steps = directions[level].tolist()
-    for slot, alive in enumerate(mask):
+    for slot, alive in enumerate(projectiles.mask[level]):
         if alive:
             row, col = positions[slot]
             d_row, d_col = steps[slot]
@@ -421,35 +425,35 @@ def update(state: State, settings: Settings, draws) -> None:
     order, then mob projectiles, then the player's projectiles."""
     level = state.player_level
     melee, passive, ranged = state.melee_mobs, state.passive_mobs, state.ranged_mobs
-    melee_mask, ranged_mask = melee.mask[level].tolist(), ranged.mask[level].tolist()
-    passive_mask = passive.mask[level].tolist()
-    shots = state.mob_projectiles.mask[level].tolist()
-    arrows = state.player_projectiles.mask[level].tolist()
-    if True not in melee_mask + passive_mask + ranged_mask + shots + arrows:
+    melee_mask, ranged_mask = melee.mask[level], ranged.mask[level]
+    passive_mask = passive.mask[level]
+    shots = state.mob_projectiles.mask[level]
+    arrows = state.player_projectiles.mask[level]
+    if (True not in melee_mask and True not in passive_mask and True not in ranged_mask
+            and True not in shots and True not in arrows):
         _count_down(melee, level)
         _count_down(ranged, level)
         return
     turn = _Turn(state, settings, draws)
     if True in melee_mask:
-        _move_monsters(turn, melee, melee_mask, _move_melee)
+        _move_monsters(turn, melee, _move_melee)
     else:
         _count_down(melee, level)
     if True in passive_mask:
-        positions, types = passive.position[level].tolist(), passive.type_id[level].tolist()
+        positions, types = passive.position[level], passive.type_id[level]
         for slot, alive in enumerate(passive_mask):
             if alive:
-                _move_passive(turn, slot, positions[slot][0], positions[slot][1], types[slot])
+                row, col = positions[slot]
+                _move_passive(turn, slot, row, col, types[slot])
     if True in ranged_mask:
-        _move_monsters(turn, ranged, ranged_mask, _move_ranged)
-        # (a projectile a ranged mob shot this turn flies this turn)
-        shots = state.mob_projectiles.mask[level].tolist()
+        _move_monsters(turn, ranged, _move_ranged)
     else:
         _count_down(ranged, level)
+    # (the mask lists are the state's own: a projectile a ranged mob shot this turn flies too)
     if True in shots:
-        _fly(turn, state.mob_projectiles, state.mob_projectile_directions, shots,
-             _move_mob_projectile)
+        _fly(turn, state.mob_projectiles, state.mob_projectile_directions, _move_mob_projectile)
     if True in arrows:
-        _fly(turn, state.player_projectiles, state.player_projectile_directions, arrows,
+        _fly(turn, state.player_projectiles, state.player_projectile_directions,
              _move_player_projectile)
 
 
@@ -500,17 +504,18 @@ def _add_mob(state: State, mobs: Mobs, kind: int, type_id: int, cell: tuple,
     has no free slot. The slot keeps its attack cooldown (upstream: a spawned mob inherits it)
     unless ``cooldown`` is given."""
     level = state.player_level
-    live = mobs.mask[level].tolist()
+    live = mobs.mask[level]
     if False not in live:
         return False
     slot = live.index(False)
-    mobs.position[level, slot] = cell
-    mobs.health[level, slot] = MOB_TYPE_HEALTH_MAPPING[type_id][kind]
-    mobs.mask[level, slot] = True
-    mobs.type_id[level, slot] = type_id
+    row, col = int(cell[0]), int(cell[1])
+    mobs.position[level][slot] = (row, col)
+    mobs.health[level][slot] = float32(MOB_TYPE_HEALTH_MAPPING[type_id][kind])
+    live[slot] = True
+    mobs.type_id[level][slot] = int(type_id)
     if cooldown is not None:
-        mobs.attack_cooldown[level, slot] = cooldown
-    state.mob_map[level, cell[0], cell[1]] = True
+        mobs.attack_cooldown[level][slot] = cooldown
+    state.mob_map[level, row, col] = True
     return True
 
 
@@ -555,7 +560,7 @@ def spawn(state: State, settings: Settings, draws) -> None:
     if boss:
         coeff *= 1000.0 if state.boss_timesteps_to_spawn_this_round >= 1 else 0.0
 
-    if (not boss and sum(state.passive_mobs.mask[level].tolist()) < MAX_PASSIVE
+    if (not boss and sum(state.passive_mobs.mask[level]) < MAX_PASSIVE
             and draws.random() < chances[0]):
         cell = _spawn_cell(state, _SPAWN_GROUND, 9, far, draws)
         if cell is not None:
@@ -566,14 +571,14 @@ def spawn(state: State, settings: Settings, draws) -> None:
     mob_row = FLOOR_MOB_MAPPING[state.boss_progress if boss else level]
 
     melee_chance = chances[1] + chances[3] * (1.0 - state.light_level) ** 2
-    if (sum(state.melee_mobs.mask[level].tolist()) < MAX_MELEE
+    if (sum(state.melee_mobs.mask[level]) < MAX_MELEE
             and draws.random() < melee_chance * coeff):
         cell = _spawn_cell(state, _SPAWN_GRAVES if boss else _SPAWN_GROUND, near, monster_far,
                            draws)
         if cell is not None:
             _add_mob(state, state.melee_mobs, MobType.MELEE, mob_row[MobType.MELEE], cell)
 
-    if (sum(state.ranged_mobs.mask[level].tolist()) < MAX_RANGED
+    if (sum(state.ranged_mobs.mask[level]) < MAX_RANGED
             and draws.random() < chances[2] * coeff):
         type_id = mob_row[MobType.RANGED]
         allowed = _SPAWN_GRAVES if boss else _SPAWN_WATER if type_id == _DEEP_THING else _SPAWN_GROUND

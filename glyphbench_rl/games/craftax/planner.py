@@ -43,10 +43,10 @@ def live_mobs(state) -> list[Mob]:
     level, out = state.player_level, []
     for k, kind in enumerate(MOB_GROUPS):
         mobs = getattr(state, kind)
-        for i in np.flatnonzero(mobs.mask[level]):
-            out.append(Mob((int(mobs.position[level, i, 0]), int(mobs.position[level, i, 1])), k,
-                           MOB_NAMES[k][int(mobs.type_id[level, i])], int(mobs.attack_cooldown[level, i]),
-                           float(mobs.health[level, i])))
+        for i, alive in enumerate(mobs.mask[level]):
+            if alive:
+                out.append(Mob(mobs.position[level][i], k, MOB_NAMES[k][mobs.type_id[level][i]],
+                               mobs.attack_cooldown[level][i], mobs.health[level][i]))
     return out
 
 
@@ -642,8 +642,10 @@ class Planner:
         """Cells a mob projectile hits this turn: the cell it is on and the next one on its way."""
         s, level = self.state, self.state.player_level
         out = set()
-        for i in np.flatnonzero(s.mob_projectiles.mask[level]):
-            r, c = (int(v) for v in s.mob_projectiles.position[level, i])
+        for i, alive in enumerate(s.mob_projectiles.mask[level]):
+            if not alive:
+                continue
+            r, c = s.mob_projectiles.position[level][i]
             dr, dc = (int(v) for v in s.mob_projectile_directions[level, i])
             out.update({(r, c), (r + dr, c + dc)})
         return out
@@ -719,8 +721,10 @@ class Planner:
                 d += 2.0 if m.cooldown <= 1 else 0.5
         s, level = self.state, self.state.player_level
         shots = s.mob_projectiles
-        for i in np.flatnonzero(shots.mask[level]):
-            p = (int(shots.position[level, i, 0]), int(shots.position[level, i, 1]))
+        for i, alive in enumerate(shots.mask[level]):
+            if not alive:
+                continue
+            p = shots.position[level][i]
             dr, dc = (int(v) for v in s.mob_projectile_directions[level, i])
             for k in range(0, 4):
                 if (p[0] + k * dr, p[1] + k * dc) == cell:

@@ -329,16 +329,17 @@ def add_torch_light(state: State, level: int, r: int, c: int) -> None:
 
 def _spawn_player_projectile(state: State, kind: int) -> None:
     level = state.player_level
-    i = int(np.argmin(state.player_projectiles.mask[level]))
     p = state.player_projectiles
-    p.position[level, i] = state.player_position
-    p.mask[level, i] = True
-    p.type_id[level, i] = kind
+    live = p.mask[level]
+    i = live.index(False) if False in live else 0      # (numpy's argmin of the mask)
+    p.position[level][i] = tuple(state.player_position.tolist())
+    live[i] = True
+    p.type_id[level][i] = int(kind)
     state.player_projectile_directions[level, i] = _DIR[state.player_direction]
 
 
 def _projectile_slot_free(state: State) -> bool:
-    return state.player_projectiles.mask[state.player_level].tolist().count(True) < MAX_PLAYER_PROJECTILES
+    return state.player_projectiles.mask[state.player_level].count(True) < MAX_PLAYER_PROJECTILES
 
 
 def shoot_arrow(state: State) -> None:

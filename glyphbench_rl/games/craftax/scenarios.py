@@ -280,10 +280,10 @@ def _remove_mobs(state, where) -> None:
     level = state.player_level
     for kind in MOB_GROUPS:
         mobs = getattr(state, kind)
-        for i in np.flatnonzero(mobs.mask[level]):
-            r, c = (int(v) for v in mobs.position[level, i])
-            if where(r, c):
-                mobs.mask[level, i] = False
+        for i, alive in enumerate(mobs.mask[level]):
+            r, c = mobs.position[level][i]
+            if alive and where(r, c):
+                mobs.mask[level][i] = False
                 state.mob_map[level, r, c] = False
 
 
@@ -326,7 +326,7 @@ class Context:
                 waiting.append((name, dmin, dmax))
                 continue
             known = MOB_BY_NAME.get(name)
-            if known is not None and False not in groups[known[0]].mask[level].tolist():
+            if known is not None and False not in groups[known[0]].mask[level]:
                 waiting.append((name, dmin, dmax))      # (no free slot: add_mob would refuse)
                 if unused[0] != count:
                     _draw_unused(rng, unused)

@@ -4,7 +4,8 @@ Every field keeps upstream's name, shape and meaning (``craftax/craftax/craftax_
 state converts either way without a table of renames (``State.from_upstream`` reads any object
 with upstream's attribute names: the package's own state in the fidelity tests). Arrays are
 numpy; scalar fields are plain Python numbers (the rules read and write them often, and a
-Python ``int`` is several times faster than a numpy scalar). Per-level arrays lead with the level
+Python ``int`` is several times faster than a numpy scalar), and so are the mob slots
+(``Mobs``: lists per level, for the same reason). Per-level arrays lead with the level
 axis, as upstream: ``map[level, row, col]``; positions are ``(row, col)``.
 
 Two upstream fields are not kept: ``state_rng`` (our randomness is explicit numpy streams, see
@@ -48,19 +49,56 @@ class Inventory:
 
 @dataclass
 class Mobs:
-    """One kind of mob (or projectile) on every level: slot ``i`` of level ``l`` is live when
-    ``mask[l, i]``."""
-    position: np.ndarray      # (levels, slots, 2) int32
-    health: np.ndarray        # (levels, slots) float32
-    mask: np.ndarray          # (levels, slots) bool
-    attack_cooldown: np.ndarray  # (levels, slots) int32
-    type_id: np.ndarray       # (levels, slots) int32
+    """One kind of mob (or projectile) on every level, as Python lists indexed ``[level][slot]``:
+    slot ``i`` of level ``l`` is live when ``mask[l][i]``; its cell is ``position[l][i]``, a
+    ``(row, col)`` tuple. Upstream keeps jax arrays; the rules read and write a few slots a
+    turn, and a list item costs a fraction of a numpy scalar read or write. ``from_arrays`` and
+    ``arrays`` convert from and to upstream's arrays (shapes and dtypes), for the conversion
+    from upstream's state and for comparisons. Health is float32 upstream: every value kept
+    here is one a float32 holds (``float32`` rounds a new one), so the lists hold exactly what
+    upstream's arrays would."""
+    position: list        # [level][slot] -> (row, col)
+    health: list          # [level][slot] -> float (a float32 value)
+    mask: list            # [level][slot] -> bool
+    attack_cooldown: list  # [level][slot] -> int
+    type_id: list         # [level][slot] -> int
 
     @classmethod
     def empty(cls, slots: int, levels: int = NUM_LEVELS) -> "Mobs":
-        return cls(np.zeros((levels, slots, 2), np.int32), np.ones((levels, slots), np.float32),
-                   np.zeros((levels, slots), bool), np.zeros((levels, slots), np.int32),
-                   np.zeros((levels, slots), np.int32))
+        return cls([[(0, 0)] * slots for _ in range(levels)],
+                   [[1.0] * slots for _ in range(levels)],
+                   [[False] * slots for _ in range(levels)],
+                   [[0] * slots for _ in range(levels)],
+                   [[0] * slots for _ in range(levels)])
+
+    @classmethod
+    def from_arrays(cls, position, health, mask, attack_cooldown, type_id) -> "Mobs":
+        """From upstream's arrays (anything numpy reads): position (levels, slots, 2), health,
+        mask, attack_cooldown and type_id (levels, slots)."""
+        return cls([[(int(r), int(c)) for r, c in level] for level in np.asarray(position).tolist()],
+                   np.asarray(health, np.float32).tolist(), np.asarray(mask, bool).tolist(),
+                   np.asarray(attack_cooldown, np.int32).tolist(),
+                   np.asarray(type_id, np.int32).tolist())
+
+    def arrays(self) -> dict[str, np.ndarray]:
+        """Upstream's arrays of this kind, by field name (new arrays: editing them changes
+        nothing here)."""
+        return {"position": np.array(self.position, np.int32).reshape(len(self.mask), -1, 2),
+                "health": np.array(self.health, np.float32),
+                "mask": np.array(self.mask, bool),
+                "attack_cooldown": np.array(self.attack_cooldown, np.int32),
+                "type_id": np.array(self.type_id, np.int32)}
+
+    def __deepcopy__(self, memo) -> "Mobs":
+        # (the items are immutable: copying the per-level lists is a deep copy, and much
+        # quicker than deepcopy's walk over every item)
+        return Mobs(*([list(level) for level in getattr(self, f.name)] for f in fields(Mobs)))
+
+
+def float32(value: float) -> float:
+    """``value`` rounded to the nearest float32, as a Python float: what storing it in
+    upstream's float32 health array keeps."""
+    return np.float32(value).item()
 
 
 @dataclass
@@ -143,7 +181,7 @@ _SCALAR_BOOLS = {"is_sleeping", "is_resting"}
 
 def _convert(value, name: str):
     if hasattr(value, "mask") and hasattr(value, "type_id"):
-        return Mobs(*(np.array(getattr(value, f.name)) for f in fields(Mobs)))
+        return Mobs.from_arrays(*(np.array(getattr(value, f.name)) for f in fields(Mobs)))
     if hasattr(value, "wood") and hasattr(value, "potions"):
         return Inventory(**{f.name: (np.array(getattr(value, f.name)) if f.name in ("armour", "potions")
                                      else int(getattr(value, f.name))) for f in fields(Inventory)})

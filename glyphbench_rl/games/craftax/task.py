@@ -124,13 +124,13 @@ class Tally:
         return get(self)
 
     def before_step(self, state, action: int) -> None:
-        """Remember what a step can change that the tally counts by difference. (The mob masks
-        are kept as bytes, whole: a copy each, and ``after_mobs`` looks at slots only when one
-        changed, which few turns do.)"""
+        """Remember what a step can change that the tally counts by difference. (The level's
+        mob masks, the three classes' slots in one list: ``after_mobs`` looks at slots only
+        when one changed, which few turns do.)"""
         self._vitals = (state.player_food, state.player_drink, state.player_mana)
-        self._level = state.player_level
-        self._masks = (state.passive_mobs.mask.tobytes(), state.melee_mobs.mask.tobytes(),
-                       state.ranged_mobs.mask.tobytes())
+        self._level = level = state.player_level
+        self._masks = [*state.passive_mobs.mask[level], *state.melee_mobs.mask[level],
+                       *state.ranged_mobs.mask[level]]
         if action in PLACED:
             self._ahead = self._facing_block(state)
         elif action == _PLACE_TORCH:
@@ -151,17 +151,17 @@ class Tally:
         health; spawning could reuse the slot, which is why this runs before it). Until the
         spawn no slot comes alive and no type changes, so the slots to look at are those whose
         mask went from live to dead, and the type read now is the one before."""
-        groups = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)
-        masks = (groups[0].mask.tobytes(), groups[1].mask.tobytes(), groups[2].mask.tobytes())
-        if masks == self._masks:
-            return
         level = self._level
-        for k, (mobs, before, now) in enumerate(zip(groups, self._masks, masks)):
-            if now != before:
-                was = np.frombuffer(before, bool).reshape(mobs.mask.shape)[level].tolist()
-                for i, (on, alive) in enumerate(zip(was, mobs.mask[level].tolist())):
-                    if on and not alive and mobs.health.item(level, i) <= 0:
-                        self._kill(k, mobs.type_id.item(level, i))
+        groups = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)
+        if [*groups[0].mask[level], *groups[1].mask[level], *groups[2].mask[level]] == self._masks:
+            return
+        first = 0       # where the class's slots start in the remembered list
+        for k, mobs in enumerate(groups):
+            now = mobs.mask[level]
+            for i, alive in enumerate(now):
+                if self._masks[first + i] and not alive and mobs.health[level][i] <= 0:
+                    self._kill(k, mobs.type_id[level][i])
+            first += len(now)
 
     def _kill(self, kind: int, type_id: int) -> None:
         name = MOB_NAMES[kind][type_id]

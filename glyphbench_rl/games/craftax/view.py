@@ -27,7 +27,7 @@ import numpy as np
 
 from .hud import TIERS
 from .mobs import is_boss_vulnerable
-from .state import Mobs, State
+from .state import State
 from .tables import (BOSS_LEVEL, LIGHT_VISIBLE, MINING, PLACING, RECIPES as CRAFTING, Action,
                      BlockType, ItemType, ProjectileType)
 from .tables import MONSTERS_KILLED_TO_CLEAR_LEVEL as KILLS_TO_OPEN_LADDER
@@ -163,7 +163,7 @@ _DECODING = "".join(_TABLE.get(code, "\ufffe") for code in range(256))
 # (no numpy call) and compared with the band read last time. Only when a byte differs are the
 # band's cell codes worked out again (items over blocks, darkness over both); the window, the
 # player drawn in it, is cut from them and decoded once per column offset and facing. Mobs and
-# projectiles are read each time, through memoryviews too (``_mob_codes``): they move every
+# projectiles are read each time from their slot lists (``_mob_codes``): they move every
 # step. What is remembered is a function of the bytes just read (and the ladder's state); the
 # views are kept per state (``_kept``) while it holds the same arrays, so a cell edited in
 # place, or a whole array replaced, shows at once.
@@ -269,7 +269,7 @@ _KEPT_STATES = 64
 
 def _kept(state: State) -> list:
     """What the view keeps for a state: ``[map, item_map, light_map, their _byte_views, the band
-    read last, the mobs' views (_mob_views, by class)]``, kept while the state holds the same
+    read last]``, kept while the state holds the same
     three maps (the views see every edit in place; a replaced array is another object, and all
     is made anew). Maps in another layout are read through copies in the usual one, made each
     time and not kept: blocks and items as int32 (their low byte, the code, is unchanged), the
@@ -281,13 +281,12 @@ def _kept(state: State) -> list:
     if _is_usual(blocks, items, light):
         if len(_KEPT) >= _KEPT_STATES:
             _KEPT.clear()
-        kept = _KEPT[id(blocks)] = [blocks, items, light, _byte_views(blocks, items, light),
-                                    None, [_NO_MOB_VIEWS] * len(_MOB_CLASSES)]
+        kept = _KEPT[id(blocks)] = [blocks, items, light, _byte_views(blocks, items, light), None]
         return kept
     lit = np.where(light <= _VISIBLE_LIGHT32, np.float32(0), np.float32(1))
     views = _byte_views(np.ascontiguousarray(blocks, np.int32), np.ascontiguousarray(items, np.int32),
                         np.ascontiguousarray(lit, np.float32))
-    return [None, None, None, views, None, [_NO_MOB_VIEWS] * len(_MOB_CLASSES)]
+    return [None, None, None, views, None]
 
 
 class _Band:
@@ -361,47 +360,24 @@ def _decode(codes: bytes) -> tuple[str, ...] | None:
     return tuple([text[i:i + COLS] for i in _ROW_STARTS])
 
 
-def _mob_codes(state: State, level: int, r0: int, c0: int, views: list) -> list[tuple[int, int, int]]:
+def _mob_codes(state: State, level: int, r0: int, c0: int) -> list[tuple[int, int, int]]:
     """(row, column, code) in the window whose top left cell is ``(r0, c0)`` of every live mob
     and projectile of the level inside it, in drawing order (melee, passive and ranged mobs,
     the mobs' projectiles, the player's: a later one is drawn over an earlier). The one place
-    the view reads how mobs are kept (through ``_mob_views``, kept by class in ``views``)."""
+    the view reads the mob slots."""
     marks = []
     for k, mobs in enumerate((state.melee_mobs, state.passive_mobs, state.ranged_mobs,
                               state.mob_projectiles, state.player_projectiles)):
-        held = views[k]
-        if held[0] is not mobs.mask or held[1] is not mobs.position or held[2] is not mobs.type_id:
-            held = views[k] = _mob_views(mobs)
-        live = held[3][level].tobytes()      # (a byte a slot, 1 when live)
-        if 1 in live:
-            position, type_id, base = held[4], held[5], _MOB0 + 8 * k
-            slot = level * len(live)
-            for on in live:
+        live = mobs.mask[level]
+        if True in live:
+            positions, types, base = mobs.position[level], mobs.type_id[level], _MOB0 + 8 * k
+            for slot, on in enumerate(live):
                 if on:
-                    r, c = position[2 * slot] - r0, position[2 * slot + 1] - c0
+                    row, col = positions[slot]
+                    r, c = row - r0, col - c0
                     if 0 <= r < ROWS and 0 <= c < COLS:
-                        marks.append((r, c, base + type_id[slot]))
-                slot += 1
+                        marks.append((r, c, base + types[slot]))
     return marks
-
-
-def _mob_views(mobs: Mobs) -> tuple:
-    """A class's mask, position and type arrays, then memoryviews of them: each level's mask
-    slots (bytes, 1 when live), the positions and the types (flat ints). Kept while the class
-    holds the same arrays: the views see every edit in place. Arrays in another layout are
-    read through copies in this one (a live slot is a true one), made anew each time."""
-    arrays = mobs.mask, mobs.position, mobs.type_id
-    mask, position, type_id = (np.ascontiguousarray(a, t)
-                               for a, t in zip(arrays, (bool, np.int32, np.int32)))
-    usual = mask is arrays[0] and position is arrays[1] and type_id is arrays[2]
-    slots, flat = mask.shape[1], memoryview(mask).cast("B")
-    return (*(arrays if usual else (None, None, None)),
-            [flat[i:i + slots] for i in range(0, len(flat), slots)],
-            memoryview(position).cast("B").cast("i"), memoryview(type_id).cast("B").cast("i"))
-
-
-_MOB_CLASSES = ("melee_mobs", "passive_mobs", "ranged_mobs", "mob_projectiles", "player_projectiles")
-_NO_MOB_VIEWS = (None,) * 6
 
 
 def _window(state: State) -> tuple[bytes, tuple[str, ...] | None, list[tuple[int, int, int]]]:
@@ -427,7 +403,7 @@ def _window(state: State) -> tuple[bytes, tuple[str, ...] | None, list[tuple[int
     key = (c0, _PLAYER0 + (0 if state.is_sleeping else state.player_direction),
            level == BOSS_LEVEL and band.necromancer and is_boss_vulnerable(state))
     window = band.windows.get(key) or band.window(*key)
-    return window[0], window[1], _mob_codes(state, level, r0, c0, kept[5])
+    return window[0], window[1], _mob_codes(state, level, r0, c0)
 
 
 def _drawn(codes: bytes, marks: list[tuple[int, int, int]]) -> bytes:

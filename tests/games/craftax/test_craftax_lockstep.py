@@ -79,7 +79,7 @@ def to_package(state: State, craftax_state):
     for f in fields(State):
         v = getattr(state, f.name)
         if isinstance(v, Mobs):
-            kw[f.name] = craftax_state.Mobs(**{g.name: _np(getattr(v, g.name)) for g in fields(Mobs)})
+            kw[f.name] = craftax_state.Mobs(**{name: _np(a) for name, a in v.arrays().items()})
         elif isinstance(v, Inventory):
             kw[f.name] = craftax_state.Inventory(
                 **{g.name: _np(getattr(v, g.name)) for g in fields(Inventory)})
@@ -94,7 +94,7 @@ def to_package(state: State, craftax_state):
 def strip_mobs(state: State) -> None:
     for mobs in (state.melee_mobs, state.passive_mobs, state.ranged_mobs, state.mob_projectiles,
                  state.player_projectiles):
-        mobs.mask[:] = False
+        mobs.mask = [[False] * len(slots) for slots in mobs.mask]
     state.mob_map[:] = False
 
 
@@ -209,14 +209,14 @@ class Lockstep:
                 # as the package's update_mobs does: the two must agree before mobs are removed
                 fired = (self.ours.inventory.arrows < before[0]
                          or self.ours.player_mana < before[1])   # regen adds at most 1
-                p, level = self.ours.player_projectiles, self.ours.player_level
-                q = self.theirs.player_projectiles
-                live = np.flatnonzero(p.mask[level])
+                p, level = self.ours.player_projectiles.arrays(), self.ours.player_level
+                q = self.theirs.player_projectiles.arrays()
+                live = np.flatnonzero(p["mask"][level])
                 assert live.size <= int(fired), where
-                assert live.tolist() == np.flatnonzero(q.mask[level]).tolist(), where
+                assert live.tolist() == np.flatnonzero(q["mask"][level]).tolist(), where
                 for i in live:
-                    assert p.position[level, i].tolist() == q.position[level, i].tolist(), where
-                    assert p.type_id[level, i] == q.type_id[level, i], where
+                    assert p["position"][level, i].tolist() == q["position"][level, i].tolist(), where
+                    assert p["type_id"][level, i] == q["type_id"][level, i], where
             if check is not None:
                 check(self.ours, self.theirs, where)
             strip_mobs(self.theirs)
@@ -435,8 +435,8 @@ def test_melee_hits_on_mobs(package):
         def setup(st):
             r, c = (int(x) for x in st.player_position)
             mobs = getattr(st, kind)
-            mobs.mask[0, 0], mobs.position[0, 0] = True, (r - 1, c)
-            mobs.health[0, 0], mobs.type_id[0, 0], mobs.attack_cooldown[0, 0] = health, type_id, 9
+            mobs.mask[0][0], mobs.position[0][0] = True, (r - 1, c)
+            mobs.health[0][0], mobs.type_id[0][0], mobs.attack_cooldown[0][0] = health, type_id, 9
             st.mob_map[0, r - 1, c] = True
             st.inventory.sword, st.sword_enchantment = sword, enchant
             st.player_strength, st.player_intelligence = strength, intelligence
@@ -445,9 +445,9 @@ def test_melee_hits_on_mobs(package):
 
         def check(ours, theirs, where, kind=kind):
             a, b = getattr(ours, kind), getattr(theirs, kind)
-            assert a.mask[0, 0] == b.mask[0, 0], f"{where}: {kind} alive {a.mask[0, 0]}"
-            assert np.isclose(a.health[0, 0], b.health[0, 0]), \
-                f"{where}: {kind} health {a.health[0, 0]} != {b.health[0, 0]}"
+            assert a.mask[0][0] == b.mask[0][0], f"{where}: {kind} alive {a.mask[0][0]}"
+            assert np.isclose(a.health[0][0], b.health[0][0]), \
+                f"{where}: {kind} health {a.health[0][0]} != {b.health[0][0]}"
         ls.run([A.DO], f"hit {kind} {type_id}", check=check)
     ours = ls.ours
     assert ours.achievements[Achievement.EAT_COW] and ours.achievements[Achievement.DEFEAT_ZOMBIE]

@@ -15,7 +15,7 @@ from glyphbench_rl.games.craftax import mobs
 from glyphbench_rl.games.craftax.bestiary import (FLOOR_MOB_MAPPING, MOB_NAMES,
                                                    MOB_TYPE_HEALTH_MAPPING)
 from glyphbench_rl.games.craftax.state import (MAP_SIZE, NUM_LEVELS, Inventory, Mobs, Settings,
-                                               State)
+                                               State, float32)
 from glyphbench_rl.games.craftax.tables import (BOSS_FIGHT_SPAWN_TURNS, Achievement, BlockType,
                                                 MobType, ProjectileType)
 
@@ -58,11 +58,12 @@ def put_mob(state: State, kind: int, pos, type_id: int = 0, slot: int = 0, healt
     group = {MobType.MELEE: state.melee_mobs, MobType.PASSIVE: state.passive_mobs,
              MobType.RANGED: state.ranged_mobs}[kind]
     level = state.player_level
-    group.position[level, slot] = pos
-    group.mask[level, slot] = True
-    group.type_id[level, slot] = type_id
-    group.health[level, slot] = MOB_TYPE_HEALTH_MAPPING[type_id][kind] if health is None else health
-    group.attack_cooldown[level, slot] = cooldown
+    group.position[level][slot] = (int(pos[0]), int(pos[1]))
+    group.mask[level][slot] = True
+    group.type_id[level][slot] = type_id
+    group.health[level][slot] = float32(MOB_TYPE_HEALTH_MAPPING[type_id][kind] if health is None
+                                        else health)
+    group.attack_cooldown[level][slot] = cooldown
     state.mob_map[level, pos[0], pos[1]] = True
 
 
@@ -70,9 +71,9 @@ def put_projectile(state: State, pos, direction, kind: int, slot: int = 0, playe
     group = state.player_projectiles if player else state.mob_projectiles
     directions = state.player_projectile_directions if player else state.mob_projectile_directions
     level = state.player_level
-    group.position[level, slot] = pos
-    group.mask[level, slot] = True
-    group.type_id[level, slot] = kind
+    group.position[level][slot] = (int(pos[0]), int(pos[1]))
+    group.mask[level][slot] = True
+    group.type_id[level][slot] = int(kind)
     directions[level, slot] = direction
 
 
@@ -88,7 +89,7 @@ def mob_map_is_exact(state: State) -> bool:
     expected = np.zeros_like(state.mob_map)
     for group in (state.melee_mobs, state.passive_mobs, state.ranged_mobs):
         for level, slot in zip(*np.nonzero(group.mask)):
-            row, col = group.position[level, slot]
+            row, col = group.position[level][slot]
             expected[level, row, col] = True
     return bool((expected == state.mob_map).all())
 
@@ -118,7 +119,7 @@ def test_adjacent_zombie_attacks_every_six_turns_for_two():
     lost = -np.diff([9.0] + healths)
     assert [i for i, x in enumerate(lost) if x > 0] == [0, 6, 12]
     assert lost[0] == pytest.approx(2.0)
-    assert tuple(state.melee_mobs.position[0, 0]) == (23, 24)
+    assert tuple(state.melee_mobs.position[0][0]) == (23, 24)
     assert mob_map_is_exact(state)
 
 
@@ -198,14 +199,14 @@ def test_mobs_walk_only_where_their_collision_allows(level, kind, type_id, allow
     put_mob(state, kind, start, type_id=type_id)
     group = {MobType.MELEE: state.melee_mobs, MobType.PASSIVE: state.passive_mobs,
              MobType.RANGED: state.ranged_mobs}[kind]
-    group.attack_cooldown[level, 0] = 10 ** 6       # no shooting: only movement matters
+    group.attack_cooldown[level][0] = 10 ** 6       # no shooting: only movement matters
     rng = draws(4)
     cells = set()
     for _ in range(300):
         mobs.update(state, Settings(spawning=False), rng)
-        row, col = group.position[level, 0]
+        row, col = group.position[level][0]
         assert int(state.map[level, row, col]) in allowed
-        assert group.mask[level, 0]
+        assert group.mask[level][0]
         cells.add((int(row), int(col)))
     assert len(cells) > 5
     assert mob_map_is_exact(state)
@@ -218,17 +219,17 @@ def test_skeleton_shoots_an_arrow_that_flies_and_hits():
     state = blank_state()
     put_mob(state, MobType.RANGED, (20, 24))            # 4 above the player: in range
     mobs.update(state, SETTINGS, draws(5))
-    assert state.mob_projectiles.mask[0].sum() == 1
-    assert state.mob_projectiles.type_id[0, 0] == ProjectileType.ARROW
+    assert sum(state.mob_projectiles.mask[0]) == 1
+    assert state.mob_projectiles.type_id[0][0] == ProjectileType.ARROW
     assert tuple(state.mob_projectile_directions[0, 0]) == (1, 0)
-    assert tuple(state.mob_projectiles.position[0, 0]) == (21, 24)   # it flew one cell already
-    assert state.ranged_mobs.attack_cooldown[0, 0] == 4
-    state.ranged_mobs.mask[0, 0] = False                  # only the arrow from now on
+    assert tuple(state.mob_projectiles.position[0][0]) == (21, 24)   # it flew one cell already
+    assert state.ranged_mobs.attack_cooldown[0][0] == 4
+    state.ranged_mobs.mask[0][0] = False                  # only the arrow from now on
     state.mob_map[0, 20, 24] = False
     for _ in range(3):
         mobs.update(state, SETTINGS, draws(6))
     assert state.player_health == pytest.approx(7.0)
-    assert not state.mob_projectiles.mask[0].any()
+    assert not any(state.mob_projectiles.mask[0])
 
 
 def test_mob_arrow_breaks_a_table_and_stops_at_stone():
@@ -236,18 +237,18 @@ def test_mob_arrow_breaks_a_table_and_stops_at_stone():
     put_projectile(state, (10, 10), (0, 1), ProjectileType.ARROW)
     state.map[0, 10, 12] = T
     mobs.update(state, SETTINGS, draws())
-    assert state.mob_projectiles.mask[0, 0]
+    assert state.mob_projectiles.mask[0][0]
     mobs.update(state, SETTINGS, draws())
-    assert not state.mob_projectiles.mask[0, 0]
+    assert not state.mob_projectiles.mask[0][0]
     assert state.map[0, 10, 12] == BlockType.PATH
     put_projectile(state, (10, 10), (0, 1), ProjectileType.ARROW)
     state.map[0, 10, 11] = S
     mobs.update(state, SETTINGS, draws())
-    assert not state.mob_projectiles.mask[0, 0] and state.map[0, 10, 11] == S
+    assert not state.mob_projectiles.mask[0][0] and state.map[0, 10, 11] == S
     put_projectile(state, (5, 5), (1, 0), ProjectileType.ARROW)  # water: it flies over
     state.map[0, 6, 5] = W
     mobs.update(state, SETTINGS, draws())
-    assert state.mob_projectiles.mask[0, 0]
+    assert state.mob_projectiles.mask[0][0]
 
 
 def moat_zombie(state: State, pos=(24, 30), type_id: int = 0) -> None:
@@ -266,12 +267,12 @@ def test_player_projectile_kills_a_zombie(kind, intelligence, dexterity):
     rng = draws(7)
     mobs.update(state, SETTINGS, rng)     # (24, 27)
     mobs.update(state, SETTINGS, rng)     # (24, 28)
-    assert state.melee_mobs.mask[0, 0]
+    assert state.melee_mobs.mask[0][0]
     mobs.update(state, SETTINGS, rng)     # strikes (24, 29) -> the zombie at (24, 30)?
     mobs.update(state, SETTINGS, rng)
     # arrow2 does 5 (zombie health 5); a fireball 3 x (1 + 0.5 * 2) = 6 fire
-    assert not state.melee_mobs.mask[0, 0]
-    assert not state.player_projectiles.mask[0].any()
+    assert not state.melee_mobs.mask[0][0]
+    assert not any(state.player_projectiles.mask[0])
     assert state.monsters_killed[0] == 1
     assert state.achievements[Achievement.DEFEAT_ZOMBIE]
     assert not state.mob_map[0].any()
@@ -284,9 +285,9 @@ def test_enchanted_arrow_against_a_knights_defence():
     put_projectile(state, (24, 29), (0, 1), ProjectileType.ARROW2, player=True)
     mobs.update(state, SETTINGS, draws())
     # (5 physical + 2.5 fire) x 1.4 = (7, 3.5): 3.5 + 3.5 through the defence
-    assert state.melee_mobs.health[4, 0] == pytest.approx(12 - 7.0)
-    assert state.melee_mobs.mask[4, 0] and state.monsters_killed[4] == 0
-    assert not state.player_projectiles.mask[4, 0]
+    assert state.melee_mobs.health[4][0] == pytest.approx(12 - 7.0)
+    assert state.melee_mobs.mask[4][0] and state.monsters_killed[4] == 0
+    assert not state.player_projectiles.mask[4][0]
 
 
 def test_projectile_kill_of_a_passive_mob_does_not_feed():
@@ -296,13 +297,54 @@ def test_projectile_kill_of_a_passive_mob_does_not_feed():
     put_mob(state, MobType.PASSIVE, (24, 30))           # a cow, 3 health
     put_projectile(state, (24, 29), (0, 1), ProjectileType.ARROW2, player=True)
     mobs.update(state, SETTINGS, draws())
-    assert not state.passive_mobs.mask[0, 0]
+    assert not state.passive_mobs.mask[0][0]
     assert state.player_food == 3 and not state.achievements[Achievement.EAT_COW]
     assert state.monsters_killed[0] == 0
     # a melee blow may eat it
     put_mob(state, MobType.PASSIVE, (24, 25))
     hit, killed = mobs.attack_mob(state, 24, 25, (8.0, 0.0, 0.0), can_eat=True)
     assert hit and killed and state.player_food == 9 and state.achievements[Achievement.EAT_COW]
+
+
+# ---------------------------------------------------------------------------------------------
+# Storage: the slots are lists, the health float32 as upstream's array keeps it
+
+def test_mob_health_is_rounded_as_a_float32_array_stores_it():
+    """Blows whose damage a float32 cannot hold exactly: the health kept after each is what
+    upstream's float32 array would hold (numpy's float32 store of the same difference), and the
+    rounding did happen (the unrounded difference differs)."""
+    state = blank_state(level=4)
+    moat_zombie(state, type_id=4)                       # a knight: 12 health, 50% physical defence
+    array = np.array([12.0], np.float32)
+    rounded = 0
+    for blow in (0.1, 1 / 3, 0.7, 2.2, 1e-3):
+        hit, killed = mobs.attack_mob(state, 24, 30, (blow, 0.0, 0.0), False)
+        assert hit and not killed
+        exact = float(array[0]) - 0.5 * blow
+        array[0] = exact
+        kept = state.melee_mobs.health[4][0]
+        assert type(kept) is float and kept == float(array[0])
+        rounded += kept != exact
+    assert rounded > 0
+    assert state.melee_mobs.arrays()["health"].dtype == np.float32
+
+
+def test_slot_lists_convert_to_and_from_upstreams_arrays():
+    state = blank_state(level=2)
+    put_mob(state, MobType.MELEE, (20, 21), type_id=2, slot=1, health=3.3, cooldown=-4)
+    melee = state.melee_mobs
+    arrays = melee.arrays()
+    assert arrays["position"].shape == (NUM_LEVELS, 3, 2) and arrays["position"].dtype == np.int32
+    assert arrays["mask"].dtype == bool and arrays["mask"].sum() == 1 and arrays["mask"][2, 1]
+    assert arrays["position"][2, 1].tolist() == [20, 21] and arrays["type_id"][2, 1] == 2
+    assert arrays["health"][2, 1] == np.float32(3.3) and arrays["attack_cooldown"][2, 1] == -4
+    back = Mobs.from_arrays(**arrays)
+    assert back == melee and back.position[2][1] == (20, 21)
+    assert type(back.health[2][1]) is float and type(back.type_id[2][1]) is int
+    copy = state.copy()                        # a deep copy: the slots are the copy's own
+    copy.melee_mobs.mask[2][1] = False
+    copy.melee_mobs.position[2][1] = (0, 0)
+    assert melee.mask[2][1] and melee.position[2][1] == (20, 21)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -313,20 +355,20 @@ def test_mobs_beyond_the_despawn_distance_vanish():
     put_mob(state, MobType.MELEE, (24, 38))             # 14 away: despawns
     put_mob(state, MobType.RANGED, (24, 11))            # 13 away: stays
     put_mob(state, MobType.PASSIVE, (10, 24))           # 14 away: despawns
-    state.ranged_mobs.attack_cooldown[0, 0] = 100
+    state.ranged_mobs.attack_cooldown[0][0] = 100
     mobs.update(state, SETTINGS, draws())
-    assert not state.melee_mobs.mask[0, 0] and not state.passive_mobs.mask[0, 0]
-    assert state.ranged_mobs.mask[0, 0]
+    assert not state.melee_mobs.mask[0][0] and not state.passive_mobs.mask[0][0]
+    assert state.ranged_mobs.mask[0][0]
     assert mob_map_is_exact(state)
     # the boss level keeps its monsters, and spawning off keeps everything
     state = blank_state(level=8)
     put_mob(state, MobType.MELEE, (24, 40))
     mobs.update(state, SETTINGS, draws())
-    assert state.melee_mobs.mask[8, 0]
+    assert state.melee_mobs.mask[8][0]
     state = blank_state()
     put_mob(state, MobType.MELEE, (24, 40))
     mobs.update(state, Settings(spawning=False), draws())
-    assert state.melee_mobs.mask[0, 0]
+    assert state.melee_mobs.mask[0][0]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -337,29 +379,29 @@ def test_add_mob_places_a_named_mob_until_its_class_is_full():
     type's full health, cooldown 0, the mob map set; False (and nothing changed) on a taken,
     solid or off-map cell and once the class's slots are full."""
     state = blank_state(level=3, player=(24, 24))
-    state.melee_mobs.attack_cooldown[3] = 4          # a dead slot's cooldown is not inherited
+    state.melee_mobs.attack_cooldown[3] = [4] * 3    # a dead slot's cooldown is not inherited
     assert mobs.add_mob(state, "knight", (20, 21))
     melee = state.melee_mobs
-    assert melee.mask[3, 0] and tuple(melee.position[3, 0]) == (20, 21)
-    assert melee.type_id[3, 0] == MOB_NAMES[MobType.MELEE].index("knight") == 4
-    assert melee.health[3, 0] == MOB_TYPE_HEALTH_MAPPING[4][MobType.MELEE] == 12.0
-    assert melee.attack_cooldown[3, 0] == 0 and state.mob_map[3, 20, 21]
+    assert melee.mask[3][0] and tuple(melee.position[3][0]) == (20, 21)
+    assert melee.type_id[3][0] == MOB_NAMES[MobType.MELEE].index("knight") == 4
+    assert melee.health[3][0] == MOB_TYPE_HEALTH_MAPPING[4][MobType.MELEE] == 12.0
+    assert melee.attack_cooldown[3][0] == 0 and state.mob_map[3, 20, 21]
     assert mobs.add_mob(state, "snail", (21, 21))
-    assert state.passive_mobs.mask[3, 0] and state.passive_mobs.type_id[3, 0] == 2
-    assert state.passive_mobs.health[3, 0] == MOB_TYPE_HEALTH_MAPPING[2][MobType.PASSIVE] == 6.0
+    assert state.passive_mobs.mask[3][0] and state.passive_mobs.type_id[3][0] == 2
+    assert state.passive_mobs.health[3][0] == MOB_TYPE_HEALTH_MAPPING[2][MobType.PASSIVE] == 6.0
     assert mobs.add_mob(state, "deep thing", (22, 21))
-    assert state.ranged_mobs.type_id[3, 0] == 5 and state.ranged_mobs.health[3, 0] == 4.0
-    before = (melee.mask.copy(), state.mob_map.copy())
+    assert state.ranged_mobs.type_id[3][0] == 5 and state.ranged_mobs.health[3][0] == 4.0
+    before = (melee.arrays()["mask"], state.mob_map.copy())
     state.map[3, 10, 10] = BlockType.STONE
     for cell in ((20, 21), (24, 24), (10, 10), (-1, 5), (48, 0)):   # mob, player, stone, off
         assert not mobs.add_mob(state, "zombie", cell)
-    assert (melee.mask == before[0]).all() and (state.mob_map == before[1]).all()
+    assert (melee.arrays()["mask"] == before[0]).all() and (state.mob_map == before[1]).all()
     assert mob_map_is_exact(state)
     free = [(30, c) for c in range(10, 40)]
     placed = sum(mobs.add_mob(state, "zombie", cell) for cell in free)
-    assert placed == melee.mask.shape[1] - 1 and melee.mask[3].all()   # one slot was the knight
+    assert placed == len(melee.mask[3]) - 1 and all(melee.mask[3])   # one slot was the knight
     assert not state.mob_map[3, 30, 10 + placed]
-    assert not melee.mask[0].any()                   # only the player's level
+    assert not any(melee.mask[0])                   # only the player's level
     with pytest.raises(ValueError):
         mobs.add_mob(state, "dragon", (31, 31))
 
@@ -372,7 +414,7 @@ def spawn_rate(state_maker, kind, trials=4000, seed=0):
         mobs.spawn(state, SETTINGS, rng)
         group = {MobType.MELEE: state.melee_mobs, MobType.PASSIVE: state.passive_mobs,
                  MobType.RANGED: state.ranged_mobs}[kind]
-        spawned += int(group.mask[state.player_level].sum())
+        spawned += int(sum(group.mask[state.player_level]))
     return spawned / trials
 
 
@@ -414,13 +456,13 @@ def test_spawn_places_respect_distances_caps_and_types():
             live = np.flatnonzero(group.mask[2])
             assert len(live) <= cap
             for slot in live:
-                row, col = group.position[2, slot]
+                row, col = group.position[2][slot]
                 distance = np.hypot(row - 24, col - 24)
                 assert distance < 14 and distance > (3 if kind == MobType.PASSIVE else 9)
-                assert group.type_id[2, slot] == FLOOR_MOB_MAPPING[2][kind]
-                assert group.health[2, slot] == MOB_TYPE_HEALTH_MAPPING[FLOOR_MOB_MAPPING[2][kind]][kind]
-    assert state.passive_mobs.mask[2].sum() == 3 and state.melee_mobs.mask[2].sum() == 3
-    assert state.ranged_mobs.mask[2].sum() == 2
+                assert group.type_id[2][slot] == FLOOR_MOB_MAPPING[2][kind]
+                assert group.health[2][slot] == MOB_TYPE_HEALTH_MAPPING[FLOOR_MOB_MAPPING[2][kind]][kind]
+    assert sum(state.passive_mobs.mask[2]) == 3 and sum(state.melee_mobs.mask[2]) == 3
+    assert sum(state.ranged_mobs.mask[2]) == 2
     assert mob_map_is_exact(state)
     assert not state.mob_map[[0, 1, 3]].any()
 
@@ -433,17 +475,17 @@ def test_spawn_only_on_allowed_blocks_and_deep_things_in_water():
         for group, allowed in ((state.ranged_mobs, {W}), (state.melee_mobs, {G}),
                                (state.passive_mobs, {G})):
             for slot in np.flatnonzero(group.mask[5]):
-                row, col = group.position[5, slot]
+                row, col = group.position[5][slot]
                 assert state.map[5, row, col] in allowed
         # empty the level again now and then so that spawning goes on
         if rng.random() < 0.2:
             for group in (state.ranged_mobs, state.melee_mobs, state.passive_mobs):
-                group.mask[5] = False
+                group.mask[5] = [False] * len(group.mask[5])
             state.mob_map[5] = False
     state = blank_state(level=5)                         # no water: no deep thing
     for _ in range(200):
         mobs.spawn(state, SETTINGS, rng)
-    assert not state.ranged_mobs.mask[5].any() and state.melee_mobs.mask[5].any()
+    assert not any(state.ranged_mobs.mask[5]) and any(state.melee_mobs.mask[5])
 
 
 # ---------------------------------------------------------------------------------------------
@@ -474,14 +516,14 @@ def test_necromancer_vulnerability_waves_and_progress():
     # the wave filled the graves within 6 with the monsters of level 1 (progress 1): orcs
     live = [(group, slot) for group in (state.melee_mobs, state.ranged_mobs)
             for slot in np.flatnonzero(group.mask[8])]
-    assert len(live) == 4 and not state.passive_mobs.mask[8].any()
+    assert len(live) == 4 and not any(state.passive_mobs.mask[8])
     for group, slot in live:
-        row, col = group.position[8, slot]
+        row, col = group.position[8][slot]
         assert state.map[8, row, col] == BlockType.GRAVE and np.hypot(row - 24, col - 24) <= 6
-        assert group.type_id[8, slot] == FLOOR_MOB_MAPPING[1][MobType.MELEE] == 2
+        assert group.type_id[8][slot] == FLOOR_MOB_MAPPING[1][MobType.MELEE] == 2
     assert not mobs.is_boss_vulnerable(state)
     for group, slot in live:                             # kill them: vulnerable again
-        row, col = group.position[8, slot]
+        row, col = group.position[8][slot]
         assert mobs.attack_mob(state, int(row), int(col), (100.0, 0.0, 0.0), True)[1]
     for _ in range(50):                                  # no wave, no spawning
         mobs.spawn(state, SETTINGS, rng)
@@ -542,7 +584,7 @@ def upstream():
         fields = {}
         for name, value in vars(state).items():
             if isinstance(value, Mobs):
-                value = cs.Mobs(**{k: jnp.asarray(v) for k, v in vars(value).items()})
+                value = cs.Mobs(**{k: jnp.asarray(v) for k, v in value.arrays().items()})
             elif isinstance(value, Inventory):
                 value = cs.Inventory(**{k: convert(v) for k, v in vars(value).items()})
             else:
@@ -573,7 +615,8 @@ def upstream():
     def spawn_many(state: State, samples: int):
         """Per sample and class, the spawned mob's (row, col, type), or None."""
         out = many(jax.random.split(jax.random.PRNGKey(2), samples), to_upstream(state))[1]
-        return {name: new_mobs(getattr(state, name).mask[state.player_level], *map(np.asarray, value))
+        return {name: new_mobs(np.array(getattr(state, name).mask[state.player_level]),
+                               *map(np.asarray, value))
                 for name, value in out.items()}
     run.many, run.spawn_many = run_many, spawn_many
     return run
@@ -629,7 +672,7 @@ def test_random_moves_follow_the_packages_probabilities(upstream):
         copy = state.copy()
         mobs.update(copy, SETTINGS, rng)
         for name, slot in ours:
-            ours[(name, slot)].append(tuple(getattr(copy, name).position[0, slot]))
+            ours[(name, slot)].append(tuple(getattr(copy, name).position[0][slot]))
     for key, positions in theirs.items():
         assert_same_distribution([tuple(p) for p in positions.tolist()],
                                  [(int(p[0]), int(p[1])) for p in ours[key]], key)
@@ -645,15 +688,16 @@ def assert_same_outcome(ours: State, theirs: State) -> None:
     level = ours.player_level
     for name in ("melee_mobs", "passive_mobs", "ranged_mobs", "mob_projectiles",
                  "player_projectiles"):
-        a, b = getattr(ours, name), getattr(theirs, name)
-        np.testing.assert_array_equal(a.mask, b.mask, err_msg=name)
-        live = a.mask[level]
-        np.testing.assert_array_equal(a.position[level][live], b.position[level][live], err_msg=name)
-        np.testing.assert_allclose(a.health[level][live], b.health[level][live], atol=1e-4)
-        np.testing.assert_array_equal(a.type_id[level][live], b.type_id[level][live])
+        a, b = getattr(ours, name).arrays(), getattr(theirs, name).arrays()
+        np.testing.assert_array_equal(a["mask"], b["mask"], err_msg=name)
+        live = a["mask"][level]
+        np.testing.assert_array_equal(a["position"][level][live], b["position"][level][live],
+                                      err_msg=name)
+        np.testing.assert_allclose(a["health"][level][live], b["health"][level][live], atol=1e-4)
+        np.testing.assert_array_equal(a["type_id"][level][live], b["type_id"][level][live])
         if name in ("melee_mobs", "ranged_mobs"):
-            np.testing.assert_array_equal(a.attack_cooldown[level], b.attack_cooldown[level])
-    live = ours.mob_projectiles.mask[level]
+            np.testing.assert_array_equal(a["attack_cooldown"][level], b["attack_cooldown"][level])
+    live = np.array(ours.mob_projectiles.mask[level])
     np.testing.assert_array_equal(ours.mob_projectile_directions[level][live],
                                   theirs.mob_projectile_directions[level][live])
 
@@ -726,8 +770,8 @@ def test_spawning_follows_the_packages_probabilities(upstream):
             mobs.spawn(copy, SETTINGS, rng)
             for name in theirs:
                 level = state.player_level
-                group, before = getattr(copy, name), getattr(state, name).mask[level]
-                ours[name] += new_mobs(before, [group.position[level]], [group.mask[level]],
-                                       [group.type_id[level]])
+                group, before = getattr(copy, name).arrays(), getattr(state, name).mask[level]
+                ours[name] += new_mobs(np.array(before), [group["position"][level]],
+                                       [group["mask"][level]], [group["type_id"][level]])
         for name in theirs:
             assert_same_distribution(theirs[name], ours[name], name)

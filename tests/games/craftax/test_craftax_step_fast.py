@@ -21,8 +21,9 @@ GROUPS = ("passive_mobs", "melee_mobs", "ranged_mobs")
 
 def _live(state, level):
     """The plain snapshot: (class, slot, type) of every live mob of ``level``."""
-    return [(k, i, int(getattr(state, g).type_id[level, i]))
-            for k, g in enumerate(GROUPS) for i in np.flatnonzero(getattr(state, g).mask[level])]
+    return [(k, i, getattr(state, g).type_id[level][i])
+            for k, g in enumerate(GROUPS) for i, alive in enumerate(getattr(state, g).mask[level])
+            if alive]
 
 
 @pytest.mark.parametrize("task_id", ["glyphbench/craftax-fight-zombies-v0",
@@ -45,7 +46,7 @@ def test_kills_counted_as_by_looking_at_every_live_slot(task_id):
             real_after(state)
             for k, i, type_id in plain["live"]:
                 group = getattr(state, GROUPS[k])
-                if not group.mask[plain["level"], i] and group.health[plain["level"], i] <= 0:
+                if not group.mask[plain["level"]][i] and group.health[plain["level"]][i] <= 0:
                     name = MOB_NAMES[k][type_id]
                     plain["kills"][name] = plain["kills"].get(name, 0) + 1
         tally.after_mobs = checked

@@ -41,7 +41,7 @@ def load_states(path: Path = DATA) -> list[tuple[State, np.ndarray]]:
         kw = {}
         for f in fields(State):
             if f.name in MOB_CLASSES:
-                kw[f.name] = Mobs(*(get(f"{f.name}.{g.name}").copy() for g in fields(Mobs)))
+                kw[f.name] = Mobs.from_arrays(*(get(f"{f.name}.{g.name}") for g in fields(Mobs)))
             elif f.name == "inventory":
                 kw[f.name] = Inventory(**{
                     g.name: (get(f"inventory.{g.name}").copy() if g.name in ("armour", "potions")
@@ -181,10 +181,9 @@ def test_a_down_ladder_is_locked_until_eight_kills(states):
 def test_mobs_in_the_dark_are_hidden(states):
     state = states[0][0].copy()
     level, (pr, pc) = state.player_level, state.player_position.tolist()
-    state.melee_mobs.mask[level] = False
-    state.melee_mobs.mask[level, 0] = True
-    state.melee_mobs.position[level, 0] = (pr, pc + 2)
-    state.melee_mobs.type_id[level, 0] = 0
+    state.melee_mobs.mask[level] = [True] + [False] * (len(state.melee_mobs.mask[level]) - 1)
+    state.melee_mobs.position[level][0] = (pr, pc + 2)
+    state.melee_mobs.type_id[level][0] = 0
     assert view.grid(state)[4][7] == "z"
     state.light_map[level, pr, pc + 2] = 0.05      # at the threshold: not visible
     assert view.grid(state)[4][7] == view.DARK[0]

@@ -1,8 +1,8 @@
 """The remembered Craftax view (``view.rows``, ``hud.hud``, the task's ``_grid``/``_hud``) shows
 exactly what a plain drawing of the state shows, step after step, whatever is edited in the state
 between steps: map, items, light, kill counts, mobs and projectiles, inventory and vitals, the
-player's place, facing and sleep, whole arrays replaced (also by arrays of another dtype or
-layout), other map sizes.
+player's place, facing and sleep, whole arrays and mob slot lists replaced (maps also by arrays
+of another dtype or layout), other map sizes.
 
 ``plain_rows`` draws the window cell by cell straight from upstream's rules as ``view``'s module
 docstring states them; ``plain_hud`` is ``hud._hud`` (the HUD written out, nothing remembered)
@@ -63,12 +63,12 @@ def plain_rows(state) -> tuple[str, ...]:
         grid.append(row)
     for k, name in enumerate(MOB_CLASSES):
         mobs = getattr(state, name)
-        for slot in range(mobs.mask.shape[1]):
-            if mobs.mask[level, slot]:
-                r = int(mobs.position[level, slot, 0]) - pr + 4
-                c = int(mobs.position[level, slot, 1]) - pc + 5
+        for slot, alive in enumerate(mobs.mask[level]):
+            if alive:
+                r = mobs.position[level][slot][0] - pr + 4
+                c = mobs.position[level][slot][1] - pc + 5
                 if 0 <= r < 9 and 0 <= c < 11 and grid[r][c] != view.DARK[0]:
-                    grid[r][c] = mob_glyph(k, int(mobs.type_id[level, slot]))
+                    grid[r][c] = mob_glyph(k, mobs.type_id[level][slot])
     grid[4][5] = view.PLAYER_GLYPHS[0 if state.is_sleeping else state.player_direction][0]
     return tuple("".join(row) for row in grid)
 
@@ -107,13 +107,14 @@ def edit(state, rng: np.random.Generator) -> None:
         elif what == 4:
             k = int(rng.integers(0, 5))
             mobs = getattr(state, MOB_CLASSES[k])
-            slot = int(rng.integers(0, mobs.mask.shape[1]))
-            mobs.mask[level, slot] = not mobs.mask[level, slot]
-            mobs.position[level, slot] = near()
-            mobs.type_id[level, slot] = rng.integers(0, TYPES[k])
-        elif what == 5:
+            slot = int(rng.integers(0, len(mobs.mask[level])))
+            mobs.mask[level][slot] = not mobs.mask[level][slot]
+            mobs.position[level][slot] = near()
+            mobs.type_id[level][slot] = int(rng.integers(0, TYPES[k]))
+        elif what == 5:       # a floor's slots of one class all emptied
             mobs = getattr(state, MOB_CLASSES[int(rng.integers(0, 5))])
-            mobs.mask[int(rng.integers(0, len(mobs.mask)))] = False
+            floor = int(rng.integers(0, len(mobs.mask)))
+            mobs.mask[floor] = [False] * len(mobs.mask[floor])
         elif what == 6:
             name = INVENTORY[int(rng.integers(0, len(INVENTORY)))]
             setattr(state.inventory, name, int(rng.integers(0, 4)))
@@ -144,12 +145,13 @@ def edit(state, rng: np.random.Generator) -> None:
                 r = int(rng.choice([0, 1, 3, height - 4, height - 1]))
             state.player_position[:] = (r, c)
             pr, pc = r, c
-        elif what == 13:      # whole arrays replaced by copies (the view must not keep the old)
+        elif what == 13:      # whole arrays or slot lists replaced by copies (the view must
+            # not keep the old)
             name = str(rng.choice(["map", "item_map", "light_map", "monsters_killed", *MOB_CLASSES]))
             if name in MOB_CLASSES:
                 mobs = getattr(state, name)
                 field = str(rng.choice(["mask", "position", "type_id"]))
-                setattr(mobs, field, getattr(mobs, field).copy())
+                setattr(mobs, field, [list(slots) for slots in getattr(mobs, field)])
             else:
                 setattr(state, name, getattr(state, name).copy())
         elif what == 14:      # another floor
@@ -199,17 +201,12 @@ def test_view_of_edited_states_and_other_layouts():
     state = worldgen.generate(np.random.default_rng(3), Settings())
     for turn in range(1500):
         edit(state, rng)
-        mobs = state.melee_mobs
-        if turn % 100 == 50:       # maps and mobs kept in another dtype or memory layout
+        if turn % 100 == 50:       # maps kept in another dtype or memory layout
             state.map = np.asfortranarray(state.map.astype(np.int64))
             state.light_map = state.light_map.astype(np.float64)
-            mobs.position = np.asfortranarray(mobs.position.astype(np.int64))
-            mobs.mask = np.asfortranarray(mobs.mask)
         elif turn % 100 == 99:
             state.map = np.ascontiguousarray(state.map, np.int32)
             state.light_map = np.ascontiguousarray(state.light_map, np.float32)
-            mobs.position = np.ascontiguousarray(mobs.position, np.int32)
-            mobs.mask = np.ascontiguousarray(mobs.mask)
         assert view.rows(state) == plain_rows(state), turn
         assert hud.hud(state) == hud._hud(state), turn
         codes = view.cell_codes(state)
@@ -223,7 +220,7 @@ def test_view_of_a_smaller_map():
         np.ascontiguousarray(a[:, 5:20, 10:40]) for a in (state.map, state.item_map, state.light_map))
     state.player_position[:] = (7, 15)
     for mobs in (getattr(state, name) for name in MOB_CLASSES):
-        mobs.mask[:] = False
+        mobs.mask = [[False] * len(slots) for slots in mobs.mask]
     for turn in range(600):
         edit(state, rng)
         assert view.rows(state) == plain_rows(state), turn
@@ -234,12 +231,13 @@ def test_a_mob_on_the_player_or_in_the_dark_is_not_drawn():
     level = state.player_level = 0
     pr, pc = (int(v) for v in state.player_position)
     for name in MOB_CLASSES:
-        getattr(state, name).mask[:] = False
+        mobs = getattr(state, name)
+        mobs.mask = [[False] * len(slots) for slots in mobs.mask]
     mobs = state.melee_mobs
-    mobs.mask[level, :2] = True
-    mobs.position[level, 0] = (pr, pc)                   # on the player
-    mobs.position[level, 1] = (pr - 1, pc)
-    mobs.type_id[level, :2] = 0
+    mobs.mask[level][:2] = [True, True]
+    mobs.position[level][0] = (pr, pc)                   # on the player
+    mobs.position[level][1] = (pr - 1, pc)
+    mobs.type_id[level][:2] = [0, 0]
     assert view.rows(state)[4][5] == view.PLAYER_GLYPHS[state.player_direction][0]
     assert view.rows(state)[3][5] == "z"
     state.light_map[level, pr - 1, pc] = 0.0

@@ -66,7 +66,7 @@ def test_initial_player_and_counters(worlds):
         assert not state.achievements.any() and state.achievements.shape == (67,)
         for mobs in (state.melee_mobs, state.passive_mobs, state.ranged_mobs,
                      state.mob_projectiles, state.player_projectiles):
-            assert not mobs.mask.any()
+            assert not mobs.arrays()["mask"].any()
         assert not state.mob_map.any() and not state.growing_plants_mask.any()
         assert state.boss_timesteps_to_spawn_this_round == 7 and state.timestep == 0
         assert W.walkable(state.map[0])[CENTRE]                 # the start cell is free
