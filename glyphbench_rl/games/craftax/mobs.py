@@ -192,8 +192,9 @@ _FAR = 1 << 30      # a despawn limit no distance reaches
 
 
 class _Turn:
-    """What every mover of one update reads: the player's level, its map and mob map (views,
-    written in place), the player's cell, the draws, the despawn limits, and the mask and
+    """What every mover of one update reads: the player's level, the map and mob map (the
+    whole arrays, read and written at ``[level, row, col]``: cheaper than making views of the
+    level), the player's cell, the draws, the despawn limits, and the mask and
     position lists of the class of mobs moving now (set by the loop over them)."""
     __slots__ = ("state", "draws", "random", "level", "map", "occupied", "rows", "cols",
                  "p_row", "p_col", "boss", "passive_limit", "monster_limit", "mask", "positions")
@@ -201,8 +202,8 @@ class _Turn:
     def __init__(self, state: State, settings: Settings, draws) -> None:
         self.state, self.draws, self.random = state, draws, draws.random
         self.level = level = state.player_level
-        self.map, self.occupied = state.map[level], state.mob_map[level]
-        self.rows, self.cols = self.map.shape
+        self.map, self.occupied = state.map, state.mob_map
+        self.rows, self.cols = self.map.shape[1:]
         self.p_row, self.p_col = state.player_position.tolist()
         self.boss = level == BOSS_LEVEL
         # mobs at this Manhattan distance or more (measured before they move) vanish; upstream
@@ -216,9 +217,10 @@ class _Turn:
         """Upstream's is_position_in_bounds_not_in_mob_not_colliding."""
         if not (0 <= row < self.rows and 0 <= col < self.cols):
             return False
-        if self.occupied.item(row, col) or (row == self.p_row and col == self.p_col):
+        level = self.level
+        if self.occupied.item(level, row, col) or (row == self.p_row and col == self.p_col):
             return False
-        block = self.map.item(row, col)
+        block = self.map.item(level, row, col)
         if IS_SOLID[block]:
             return False
         if block == _WATER:
@@ -240,15 +242,15 @@ class _Turn:
         """Write a mob's new cell (if it moved) and its death (not ``alive``: despawned),
         keeping the mob map exact: the cell left is cleared, the cell entered set. (Upstream
         sets the cell stood on even when the mob stayed; it is set already.)"""
-        occupied = self.occupied
+        occupied, level = self.occupied, self.level
         if new_row != row or new_col != col:
             self.positions[slot] = (new_row, new_col)
-            occupied[row, col] = False
+            occupied[level, row, col] = False
             if alive:
-                occupied[new_row, new_col] = True
+                occupied[level, new_row, new_col] = True
         if not alive:
             self.mask[slot] = False
-            occupied[row, col] = False
+            occupied[level, row, col] = False
 
 
 def _move_melee(turn: _Turn, slot: int, row: int, col: int, type_id: int, cooldown: int) -> int:
@@ -336,14 +338,15 @@ def _move_mob_projectile(turn: _Turn, slot: int, row: int, col: int, d_row: int,
     p_row, p_col = turn.p_row, turn.p_col
     hit_player = (row == p_row and col == p_col) or (new_row == p_row and new_col == p_col)
     flies_on = 0 <= new_row < turn.rows and 0 <= new_col < turn.cols
+    level = turn.level
     if flies_on:
-        block = turn.map.item(new_row, new_col)
-        flies_on = not (hit_player or IS_SOLID[block] or turn.occupied.item(new_row, new_col))
+        block = turn.map.item(level, new_row, new_col)
+        flies_on = not (hit_player or IS_SOLID[block]
+                        or turn.occupied.item(level, new_row, new_col))
         if block in _BREAKABLE:
-            turn.map[new_row, new_col] = BlockType.PATH
+            turn.map[level, new_row, new_col] = BlockType.PATH
     if hit_player:
         hurt_player(turn.state, PROJECTILE_DAMAGE[kind])
-    level = turn.level
     projectiles.position[level][slot] = (new_row, new_col)
     if not flies_on:
         projectiles.mask[level][slot] = False
@@ -373,13 +376,13 @@ def _move_player_projectile(turn: _Turn, slot: int, row: int, col: int, d_row: i
     projectiles = state.player_projectiles
     new_row, new_col = row + d_row, col + d_col
     damage = player_projectile_damage(state, kind)
-    hit = ((turn.occupied.item(row, col) and attack_mob(state, row, col, damage, False)[0])
+    level, occupied = turn.level, turn.occupied
+    hit = ((occupied.item(level, row, col) and attack_mob(state, row, col, damage, False)[0])
            or (0 <= new_row < turn.rows and 0 <= new_col < turn.cols
-               and turn.occupied.item(new_row, new_col)
+               and occupied.item(level, new_row, new_col)
                and attack_mob(state, new_row, new_col, damage, False)[0]))
     flies_on = (not hit and 0 <= new_row < turn.rows and 0 <= new_col < turn.cols
-                and not IS_SOLID[turn.map.item(new_row, new_col)])
-    level = turn.level
+                and not IS_SOLID[turn.map.item(level, new_row, new_col)])
     projectiles.position[level][slot] = (new_row, new_col)
     if not flies_on:
         projectiles.mask[level][slot] = False
