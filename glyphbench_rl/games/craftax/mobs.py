@@ -194,13 +194,13 @@ _FAR = 1 << 30      # a despawn limit no distance reaches
 class _Turn:
     """What every mover of one update reads: the player's level, the map and mob map (the
     whole arrays, read and written at ``[level, row, col]``: cheaper than making views of the
-    level), the player's cell, the draws, the despawn limits, and the mask and
+    level), the player's cell, the draws' next float, the despawn limits, and the mask and
     position lists of the class of mobs moving now (set by the loop over them)."""
-    __slots__ = ("state", "draws", "random", "level", "map", "occupied", "rows", "cols",
-                 "p_row", "p_col", "boss", "passive_limit", "monster_limit", "mask", "positions")
+    __slots__ = ("state", "random", "level", "map", "occupied", "rows", "cols", "p_row", "p_col",
+                 "boss", "passive_limit", "monster_limit", "mask", "positions")
 
     def __init__(self, state: State, settings: Settings, draws) -> None:
-        self.state, self.draws, self.random = state, draws, draws.random
+        self.state, self.random = state, draws.random
         self.level = level = state.player_level
         self.map, self.occupied = state.map, state.mob_map
         self.rows, self.cols = self.map.shape[1:]
@@ -564,31 +564,30 @@ def spawn(state: State, settings: Settings, draws) -> None:
     if boss:
         coeff *= 1000.0 if state.boss_timesteps_to_spawn_this_round >= 1 else 0.0
 
-    if (not boss and sum(state.passive_mobs.mask[level]) < MAX_PASSIVE
+    if (not boss and state.passive_mobs.mask[level].count(True) < MAX_PASSIVE
             and draws.random() < chances[0]):
         cell = _spawn_cell(state, _SPAWN_GROUND, 9, far, draws)
         if cell is not None:
-            _add_mob(state, state.passive_mobs, MobType.PASSIVE,
-                     FLOOR_MOB_MAPPING[level][MobType.PASSIVE], cell)
+            _add_mob(state, state.passive_mobs, _PASSIVE, FLOOR_MOB_MAPPING[level][_PASSIVE], cell)
 
     near, monster_far = (-1, min(far, 37)) if boss else (81, far)   # boss: d <= 6
     mob_row = FLOOR_MOB_MAPPING[state.boss_progress if boss else level]
 
     melee_chance = chances[1] + chances[3] * (1.0 - state.light_level) ** 2
-    if (sum(state.melee_mobs.mask[level]) < MAX_MELEE
+    if (state.melee_mobs.mask[level].count(True) < MAX_MELEE
             and draws.random() < melee_chance * coeff):
         cell = _spawn_cell(state, _SPAWN_GRAVES if boss else _SPAWN_GROUND, near, monster_far,
                            draws)
         if cell is not None:
-            _add_mob(state, state.melee_mobs, MobType.MELEE, mob_row[MobType.MELEE], cell)
+            _add_mob(state, state.melee_mobs, _MELEE, mob_row[_MELEE], cell)
 
-    if (sum(state.ranged_mobs.mask[level]) < MAX_RANGED
+    if (state.ranged_mobs.mask[level].count(True) < MAX_RANGED
             and draws.random() < chances[2] * coeff):
-        type_id = mob_row[MobType.RANGED]
+        type_id = mob_row[_RANGED]
         allowed = _SPAWN_GRAVES if boss else _SPAWN_WATER if type_id == _DEEP_THING else _SPAWN_GROUND
         cell = _spawn_cell(state, allowed, near, monster_far, draws)
         if cell is not None:
-            _add_mob(state, state.ranged_mobs, MobType.RANGED, type_id, cell)
+            _add_mob(state, state.ranged_mobs, _RANGED, type_id, cell)
 
 
 __all__ = ["update", "spawn", "add_mob", "boss_logic", "damage_necromancer", "attack_mob",

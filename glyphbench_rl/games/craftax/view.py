@@ -366,17 +366,19 @@ def _mob_codes(state: State, level: int, r0: int, c0: int) -> list[tuple[int, in
     the mobs' projectiles, the player's: a later one is drawn over an earlier). The one place
     the view reads the mob slots."""
     marks = []
-    for k, mobs in enumerate((state.melee_mobs, state.passive_mobs, state.ranged_mobs,
-                              state.mob_projectiles, state.player_projectiles)):
+    base = _MOB0            # the class's first code: 8 codes a class
+    for mobs in (state.melee_mobs, state.passive_mobs, state.ranged_mobs,
+                 state.mob_projectiles, state.player_projectiles):
         live = mobs.mask[level]
         if True in live:
-            positions, types, base = mobs.position[level], mobs.type_id[level], _MOB0 + 8 * k
+            positions, types = mobs.position[level], mobs.type_id[level]
             for slot, on in enumerate(live):
                 if on:
                     row, col = positions[slot]
                     r, c = row - r0, col - c0
                     if 0 <= r < ROWS and 0 <= c < COLS:
                         marks.append((r, c, base + types[slot]))
+        base += 8
     return marks
 
 
