@@ -92,7 +92,9 @@ class Mobs:
     def __deepcopy__(self, memo) -> "Mobs":
         # (the items are immutable: copying the per-level lists is a deep copy, and much
         # quicker than deepcopy's walk over every item)
-        return Mobs(*([list(level) for level in getattr(self, f.name)] for f in fields(Mobs)))
+        copied = memo[id(self)] = Mobs(*([list(level) for level in getattr(self, f.name)]
+                                         for f in fields(Mobs)))
+        return copied
 
 
 def float32(value: float) -> float:
