@@ -299,16 +299,18 @@ class Context:
         self.r0, self.c0 = (int(v) for v in state.player_position)
         self.floor = _floor_block(state)
         self.reserve: list[tuple[str, int, int]] = []
-        # draws owed to ``owed_rng`` ([their bound, how many]): made before its next used draw
-        self.owed, self.owed_rng = [0, 0], None
+        # the bounds of the draws owed to ``owed_rng``, in order: made before its next used draw
+        self.owed: list[int] = []
+        self.owed_rng = None
 
     def admit(self, state, rng) -> None:
         """Each waiting mob, in turn, takes a random free cell in its ring (one draw whenever the
         ring has a free cell, whether or not its class has a free slot). A ring's free cells are
         found once and found again only after a mob was placed. The draws of mobs with no free
-        slot, whose values go unused, are made together (``integers(n, size=k)`` advances the
-        generator exactly as k calls of ``integers(n)``), in order, before the next used one,
-        which may be turns later (``settle`` makes them before anything else draws)."""
+        slot, whose values go unused, are owed: their bounds are kept, in order, and they are
+        made together with the next used one, which may be turns later, in one call
+        (``integers(0, bounds)`` advances the generator exactly as one ``integers(bound)`` call
+        a bound, in order; ``settle`` makes them before anything else draws)."""
         waiting = []
         rings: dict[tuple[int, int], tuple] = {}
         groups = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)
@@ -316,7 +318,6 @@ class Context:
         if self.owed_rng is not rng:
             self.settle()
             self.owed_rng = rng
-        unused = self.owed          # draws owed: [their bound, how many]
         for name, dmin, dmax in self.reserve:
             ring = rings.get((dmin, dmax))
             if ring is None:
@@ -328,30 +329,29 @@ class Context:
             known = MOB_BY_NAME.get(name)
             if known is not None and False not in groups[known[0]].mask[level]:
                 waiting.append((name, dmin, dmax))      # (no free slot: add_mob would refuse)
-                if unused[0] != count:
-                    _draw_unused(rng, unused)
-                    unused[0] = count
-                unused[1] += 1
+                self.owed.append(count)
                 continue
-            _draw_unused(rng, unused)
-            k = int(np.flatnonzero(np.frombuffer(ok, np.uint8))[int(rng.integers(count))])
+            k = int(np.flatnonzero(np.frombuffer(ok, np.uint8))[self._draw(rng, count)])
             if add_mob(state, name, (r0 + k // width, c0 + k % width)):
                 rings.clear()
             else:
                 waiting.append((name, dmin, dmax))
         self.reserve = waiting
 
+    def _draw(self, rng, bound: int) -> int:
+        """A draw below ``bound``, the draws owed made first (in the same call)."""
+        if not self.owed:
+            return int(rng.integers(bound))
+        self.owed.append(bound)
+        value = int(rng.integers(0, self.owed)[-1])
+        self.owed.clear()
+        return value
+
     def settle(self) -> None:
-        """Make the draws owed (before another use of their generator)."""
-        if self.owed[1]:
-            _draw_unused(self.owed_rng, self.owed)
-
-
-def _draw_unused(rng, unused: list) -> None:
-    """Make the draws owed (``unused`` = [bound, count]), values unused."""
-    if unused[1]:
-        rng.integers(unused[0], size=unused[1])
-        unused[1] = 0
+        """Make the draws owed (before another use of their generator), values unused."""
+        if self.owed:
+            self.owed_rng.integers(0, self.owed)
+            self.owed.clear()
 
 
 def _free_ring(state, dmin: int, dmax: int, floor: int):

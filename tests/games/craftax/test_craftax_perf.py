@@ -29,15 +29,31 @@ def test_free_ring_is_the_cell_list():
             assert cells == ok.astype(np.uint8).tobytes() and n == count and box == [r0, c0, width]
 
 
-def test_unused_draws_batched_advance_the_generator_as_one_by_one():
-    for seed in range(20):
-        for bound in (1, 2, 37, 400):
-            a, b = np.random.default_rng(seed), np.random.default_rng(seed)
-            a.integers(5), b.integers(5)           # a half-used 32-bit buffer
-            for _ in range(3):
-                a.integers(bound)
-            scenarios._draw_unused(b, [bound, 3])
-            assert a.integers(1 << 40) == b.integers(1 << 40)
+def test_owed_draws_made_together_advance_the_generator_as_one_by_one():
+    """``Context``'s owed draws, made in one call with the next used draw (or by ``settle``):
+    the used value and the generator afterwards are those of one ``integers`` call a bound.
+    Bounds near 2**31 make Lemire's method reject draws often, bounds over 2**32 take the 64-bit
+    path; an odd number of 32-bit draws before leaves half a 64-bit output buffered."""
+    rng = np.random.default_rng(3)
+    for seed in range(60):
+        bounds = [int(b) for b in rng.choice([1, 2, 37, 400, 961, 2**31 + 1, 3 * 2**30, 2**32,
+                                              2**33 + 7], size=int(rng.integers(0, 9)))]
+        used = int(rng.choice([1, 37, 961, 2**31 + 1]))
+        a, b = np.random.default_rng(seed), np.random.default_rng(seed)
+        for _ in range(seed % 3):
+            a.integers(5), b.integers(5)
+        for bound in bounds:
+            a.integers(bound)
+        value = int(a.integers(used))
+        ctx = scenarios.Context.__new__(scenarios.Context)
+        ctx.owed, ctx.owed_rng = list(bounds), b
+        assert ctx._draw(b, used) == value and ctx.owed == []
+        assert a.integers(1 << 40) == b.integers(1 << 40) and a.random() == b.random()
+        for bound in bounds:                     # settle: the draws owed, no used one
+            a.integers(bound)
+        ctx.owed = list(bounds)
+        ctx.settle()
+        assert ctx.owed == [] and a.integers(1 << 40) == b.integers(1 << 40)
 
 
 def test_remembered_hud_follows_the_state():
