@@ -194,8 +194,10 @@ _FAR = 1 << 30      # a despawn limit no distance reaches
 class _Turn:
     """What every mover of one update reads: the player's level, the map and mob map (the
     whole arrays, read and written at ``[level, row, col]``: cheaper than making views of the
-    level), the player's cell, the draws' next float, the despawn limits, and the mask and
-    position lists of the class of mobs moving now (set by the loop over them)."""
+    level), the player's cell, the draws' next float (``random``: a mover draws
+    ``int(random() * n)``, which is ``draws.below(n)`` without its call), the despawn limits,
+    and the mask and position lists of the class of mobs moving now (set by the loop over
+    them)."""
     __slots__ = ("state", "random", "level", "map", "occupied", "rows", "cols", "p_row", "p_col",
                  "boss", "passive_limit", "monster_limit", "mask", "positions")
 
