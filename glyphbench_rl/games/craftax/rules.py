@@ -536,17 +536,38 @@ def update_intrinsics(state: State, action: int, settings) -> None:
     state.player_recover_mana = float(mana)
 
 
-_COUNTS = ("wood", "stone", "coal", "iron", "diamond", "sapling", "pickaxe", "sword", "bow",
-           "arrows", "torches", "ruby", "sapphire", "books")
+# the inventory's counts (every one at most STACK_LIMIT), those ``INVENTORY_ACHIEVEMENTS``
+# reads first, in its order
+_INVENTORY_NAMES = tuple(dict.fromkeys(name for name, _, _ in INVENTORY_ACHIEVEMENTS))
+_COUNTS = _INVENTORY_NAMES + ("books",)
+# (index into the held counts, at least, achievement)
+_INVENTORY_ACHIEVEMENTS = tuple((_INVENTORY_NAMES.index(name), least, int(a))
+                                for name, least, a in INVENTORY_ACHIEVEMENTS)
+
+
+# held counts (``_COUNTS`` order) -> (some count is over STACK_LIMIT, the achievements they
+# earn, those as a mask of the bits ``int.from_bytes(achievements.tobytes(), "little")`` has).
+# The inventory changes on few turns, so ``clip_vitals`` and ``inventory_achievements`` mostly
+# look the counts up here.
+_FACTS: dict[tuple, tuple[bool, tuple[int, ...], int]] = {}
+
+
+def _facts(held: tuple) -> tuple[bool, tuple[int, ...], int]:
+    """``_FACTS[held]``, made the first time."""
+    if len(_FACTS) >= 4096:
+        _FACTS.clear()
+    earned = tuple(a for i, least, a in _INVENTORY_ACHIEVEMENTS if held[i] >= least)
+    facts = _FACTS[held] = (max(held) > STACK_LIMIT, earned, sum(1 << 8 * a for a in earned))
+    return facts
 
 
 def clip_vitals(state: State, settings) -> None:
     """Inventory counts at most 99; vitals within [0, maximum] (the maxima grow with the
     attributes); god mode keeps health at least 9."""
     inv = state.inventory
-    if max(inv.wood, inv.stone, inv.coal, inv.iron, inv.diamond, inv.sapling, inv.arrows,
-           inv.torches, inv.ruby, inv.sapphire, inv.books, inv.pickaxe, inv.sword,
-           inv.bow) > STACK_LIMIT:
+    held = (inv.wood, inv.stone, inv.coal, inv.iron, inv.diamond, inv.ruby, inv.sapphire,
+            inv.sapling, inv.bow, inv.arrows, inv.torches, inv.pickaxe, inv.sword, inv.books)
+    if (_FACTS.get(held) or _facts(held))[0]:
         for name in _COUNTS:
             if getattr(inv, name) > STACK_LIMIT:
                 setattr(inv, name, STACK_LIMIT)
@@ -557,57 +578,45 @@ def clip_vitals(state: State, settings) -> None:
     if health < low or health > top:
         state.player_health = float(min(max(health, low), top))
     top = max_food(dex)    # = max_drink(dex) = max_energy(dex)
-    if not (0 <= state.player_food <= top):
-        state.player_food = min(max(state.player_food, 0), top)
-    if not (0 <= state.player_drink <= top):
-        state.player_drink = min(max(state.player_drink, 0), top)
-    if not (0 <= state.player_energy <= top):
-        state.player_energy = min(max(state.player_energy, 0), top)
-    top = max_mana(state.player_intelligence)
-    if not (0 <= state.player_mana <= top):
-        state.player_mana = min(max(state.player_mana, 0), top)
-
-
-_INVENTORY_NAMES = tuple(dict.fromkeys(name for name, _, _ in INVENTORY_ACHIEVEMENTS))
-# (index into the held counts, at least, achievement)
-_INVENTORY_ACHIEVEMENTS = tuple((_INVENTORY_NAMES.index(name), least, int(a))
-                                for name, least, a in INVENTORY_ACHIEVEMENTS)
-# the held counts of ``_INVENTORY_NAMES`` -> the achievements they earn (``inventory_achievements``)
-_EARNED: dict[tuple, tuple[int, ...]] = {}
+    food, drink, energy = state.player_food, state.player_drink, state.player_energy
+    if not (0 <= food <= top and 0 <= drink <= top and 0 <= energy <= top):
+        state.player_food = min(max(food, 0), top)
+        state.player_drink = min(max(drink, 0), top)
+        state.player_energy = min(max(energy, 0), top)
+    mana, top = state.player_mana, max_mana(state.player_intelligence)
+    if not (0 <= mana <= top):
+        state.player_mana = min(max(mana, 0), top)
 
 
 def inventory_achievements(state: State) -> None:
     """Collecting and crafting achievements read off the inventory (``INVENTORY_ACHIEVEMENTS``),
-    so a tool found in a chest counts as made. (What a tuple of counts earns is remembered: the
-    inventory changes on few turns.)"""
+    so a tool found in a chest counts as made. (What the counts earn is looked up, and written
+    only when one of them is missing.)"""
     inv = state.inventory
     held = (inv.wood, inv.stone, inv.coal, inv.iron, inv.diamond, inv.ruby, inv.sapphire,
-            inv.sapling, inv.bow, inv.arrows, inv.torches, inv.pickaxe, inv.sword)
-    earned = _EARNED.get(held)
-    if earned is None:
-        if len(_EARNED) >= 4096:
-            _EARNED.clear()
-        earned = _EARNED[held] = tuple(a for i, least, a in _INVENTORY_ACHIEVEMENTS
-                                       if held[i] >= least)
-    if earned:
-        ach = state.achievements
+            inv.sapling, inv.bow, inv.arrows, inv.torches, inv.pickaxe, inv.sword, inv.books)
+    _, earned, mask = _FACTS.get(held) or _facts(held)
+    ach = state.achievements
+    if mask and mask & ~int.from_bytes(ach.tobytes(), "little"):
         for achievement in earned:
             ach[achievement] = True
 
 
-assert _INVENTORY_NAMES == ("wood", "stone", "coal", "iron", "diamond", "ruby", "sapphire",
-                            "sapling", "bow", "arrows", "torches", "pickaxe", "sword")
+assert _COUNTS == ("wood", "stone", "coal", "iron", "diamond", "ruby", "sapphire", "sapling", "bow",
+                   "arrows", "torches", "pickaxe", "sword", "books")
 
 
-_CRAFT = frozenset(RECIPE_BY_ACTION)
-_PLACE = frozenset(_PLACING)
-_SHOOT = int(Action.SHOOT_ARROW)
-_CAST = frozenset(_SPELLS)
-_POTION = frozenset(_POTION_INDEX)
-_READ = int(Action.READ_BOOK)
-_ENCHANT = frozenset(int(a) for a in (Action.ENCHANT_SWORD, Action.ENCHANT_ARMOUR,
-                                      Action.ENCHANT_BOW))
-_LEVEL_UP = frozenset(_ATTRIBUTES)
+# each action's own rule (one dict look-up per step instead of a chain of set tests); moves
+# and level-ups come after the boss rule, as upstream's
+_DO_RULE, _CRAFT_RULE, _PLACE_RULE, _SHOOT_RULE, _CAST_RULE, _POTION_RULE, _READ_RULE, \
+    _ENCHANT_RULE, _LEVEL_UP_RULE, _MOVE_RULE = range(1, 11)
+_RULE = ({_DO: _DO_RULE, int(Action.SHOOT_ARROW): _SHOOT_RULE, int(Action.READ_BOOK): _READ_RULE}
+         | dict.fromkeys(RECIPE_BY_ACTION, _CRAFT_RULE) | dict.fromkeys(_PLACING, _PLACE_RULE)
+         | dict.fromkeys(_SPELLS, _CAST_RULE) | dict.fromkeys(_POTION_INDEX, _POTION_RULE)
+         | dict.fromkeys((int(a) for a in (Action.ENCHANT_SWORD, Action.ENCHANT_ARMOUR,
+                                           Action.ENCHANT_BOW)), _ENCHANT_RULE)
+         | dict.fromkeys(_ATTRIBUTES, _LEVEL_UP_RULE) | dict.fromkeys(MOVES, _MOVE_RULE))
+_LADDERS = (_DESCEND, _ASCEND)
 
 
 def daylight(timestep: int, settings) -> float:
@@ -619,35 +628,38 @@ def step(state: State, action: int, settings, draws, after_mobs=None) -> float:
     """One upstream step (see the module docstring); returns upstream's reward. ``after_mobs``,
     if given, is called with the state after the mobs moved and before any spawn (a task
     counting kills looks at the mob slots then, before a spawn can reuse one)."""
-    before = state.achievements.tobytes()
+    achievements = state.achievements
+    before = achievements.tobytes()
     health = state.player_health
     action = int(action)
     if state.is_sleeping or state.is_resting:
         action = _NOOP
 
-    change_floor(state, action, settings)
-    if action in _CRAFT:
-        craft(state, action)
-    elif action == _DO:
+    if state.player_level or action in _LADDERS:     # (on the surface it has nothing else to do)
+        change_floor(state, action, settings)
+    rule = _RULE.get(action, 0)
+    if rule == _DO_RULE:
         do(state, settings, draws)
-    elif action in _PLACE:
+    elif rule == _CRAFT_RULE:
+        craft(state, action)
+    elif rule == _PLACE_RULE:
         place(state, action)
-    elif action == _SHOOT:
+    elif rule == _SHOOT_RULE:
         shoot_arrow(state)
-    elif action in _CAST:
+    elif rule == _CAST_RULE:
         cast_spell(state, action)
-    elif action in _POTION:
+    elif rule == _POTION_RULE:
         drink_potion(state, action)
-    elif action == _READ:
+    elif rule == _READ_RULE:
         read_book(state, draws)
-    elif action in _ENCHANT:
+    elif rule == _ENCHANT_RULE:
         enchant(state, action, draws)
     if state.player_level == BOSS_LEVEL or state.boss_progress >= BOSS_LEVEL:
         mobs.boss_logic(state)      # (elsewhere, before the boss is beaten, it does nothing)
-    if action in _LEVEL_UP:
-        level_up(state, action, settings)
-    if action in MOVES:
+    if rule == _MOVE_RULE:
         move(state, action, settings)
+    elif rule == _LEVEL_UP_RULE:
+        level_up(state, action, settings)
 
     mobs.update(state, settings, draws)
     if after_mobs is not None:
@@ -661,9 +673,9 @@ def step(state: State, action: int, settings, draws, after_mobs=None) -> float:
     inventory_achievements(state)
 
     reward = 0.0
-    if state.achievements.tobytes() != before:
+    if achievements.tobytes() != before:
         old = np.frombuffer(before, dtype=bool)
-        reward = float(_WEIGHTS[state.achievements & ~old].sum())
+        reward = float(_WEIGHTS[achievements & ~old].sum())
     reward += (state.player_health - health) * 0.1
     state.timestep += 1
     state.light_level = daylight(state.timestep, settings)

@@ -55,6 +55,19 @@ def parse_test(text: str, tally) -> Callable:
     return lambda t: all(op(get(t), n) for get, op, n in clauses)
 
 
+def counters(text: str) -> list[str]:
+    """The counter names a test (or a bare counter) reads."""
+    if not re.search(r"[<>=]", text):
+        return [text.strip()]
+    return [_CLAUSE.match(part).group(1) for part in text.split(" and ")]
+
+
+def is_steady(text: str, tally) -> bool:
+    """The test reads only steady counters (``task.Tally``): its value changes only in a step
+    that bumps ``tally.changes``."""
+    return all(tally.steady(key) for key in counters(text))
+
+
 @dataclass(frozen=True)
 class Term:
     """A reward term: ``unit`` per unit of ``test`` (a counter, ``per`` of it making one unit,
@@ -491,14 +504,16 @@ class Scenario:
         ctx.settle()
         return state, ctx
 
-    def run_events(self, task, state, tally) -> None:
+    def run_events(self, task, state, tally, fresh: bool = True) -> None:
         """After each step: waiting mobs take free slots; events whose test now holds run once
-        (``task.ctx``, ``task.play_rng`` and ``task.fired`` are the episode's)."""
+        (``task.ctx``, ``task.play_rng`` and ``task.fired`` are the episode's; ``task.events``
+        holds (event, its test, the test is steady)). A steady test is asked only when
+        ``fresh`` (a steady counter changed since the last step's)."""
         ctx, rng = task.ctx, task.play_rng
         if ctx.reserve:
             ctx.admit(state, rng)
-        for i, (event, when) in enumerate(task.events):
-            if i not in task.fired and when(tally):
+        for i, (event, when, steady) in enumerate(task.events):
+            if (fresh or not steady) and i not in task.fired and when(tally):
                 task.fired.add(i)
                 ctx.r0, ctx.c0 = (int(v) for v in state.player_position)
                 ctx.settle()
