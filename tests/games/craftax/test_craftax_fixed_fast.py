@@ -1,0 +1,127 @@
+"""The step's fixed costs cut short give what the plain rules give: ``clip_vitals`` and
+``inventory_achievements`` looking the held counts up; the task asking a steady test (terms,
+success, events, the HUD's progress) only after a step in which a steady counter changed."""
+
+import numpy as np
+import pytest
+
+from glyphbench_rl import make
+from glyphbench_rl.games.craftax import rules, worldgen
+from glyphbench_rl.games.craftax.state import Settings
+from glyphbench_rl.games.craftax.tables import (
+    GOD_MODE_MIN_HEALTH, INVENTORY_ACHIEVEMENTS, NUM_LEVELS, STACK_LIMIT, max_food, max_health,
+    max_mana)
+
+COUNTS = ("wood", "stone", "coal", "iron", "diamond", "sapling", "pickaxe", "sword", "bow",
+          "arrows", "torches", "ruby", "sapphire", "books")
+
+
+def plain_clip_vitals(state, settings) -> None:
+    """Every count and vital clipped, as upstream writes it."""
+    inv = state.inventory
+    for name in COUNTS:
+        setattr(inv, name, min(getattr(inv, name), STACK_LIMIT))
+    low = GOD_MODE_MIN_HEALTH if settings.god_mode else 0
+    health = state.player_health
+    if health < low or health > max_health(state.player_strength):
+        state.player_health = float(min(max(health, low), max_health(state.player_strength)))
+    top = max_food(state.player_dexterity)
+    for name in ("player_food", "player_drink", "player_energy"):
+        setattr(state, name, min(max(getattr(state, name), 0), top))
+    state.player_mana = min(max(state.player_mana, 0), max_mana(state.player_intelligence))
+
+
+def plain_inventory_achievements(state) -> None:
+    for name, least, achievement in INVENTORY_ACHIEVEMENTS:
+        if getattr(state.inventory, name) >= least:
+            state.achievements[achievement] = True
+
+
+def _snapshot(state) -> tuple:
+    inv = state.inventory
+    return (tuple((getattr(inv, n), type(getattr(inv, n))) for n in COUNTS),
+            tuple((getattr(state, n), type(getattr(state, n))) for n in (
+                "player_health", "player_food", "player_drink", "player_energy", "player_mana")),
+            state.achievements.tobytes())
+
+
+@pytest.mark.parametrize("god_mode", [False, True])
+def test_clip_vitals_and_inventory_achievements_as_the_plain_rules(god_mode):
+    rng = np.random.default_rng(11)
+    settings = Settings(god_mode=god_mode)
+    base = worldgen.blank(settings)
+    for _ in range(600):
+        fast, plain = base.copy(), base.copy()
+        for state in (fast, plain):
+            state.achievements[:] = False
+        counts = rng.integers(0, 3, len(COUNTS)) * (rng.random(len(COUNTS)) < 0.4)
+        if rng.random() < 0.3:          # now and then a count over the stack limit
+            counts[int(rng.integers(len(COUNTS)))] = int(rng.integers(98, 130))
+        earned = rng.random(fast.achievements.size) < 0.3 * rng.random()
+        vitals = (float(rng.integers(-3, 14)) / (2 if rng.random() < 0.3 else 1),
+                  *(int(x) for x in rng.integers(-2, 13, 4)))
+        attributes = (int(x) for x in rng.integers(1, 4, 3))
+        for state in (fast, plain):
+            for name, n in zip(COUNTS, counts.tolist()):
+                setattr(state.inventory, name, n)
+            state.achievements[:] = earned
+            (state.player_health, state.player_food, state.player_drink, state.player_energy,
+             state.player_mana) = vitals
+        (fast.player_strength, fast.player_dexterity, fast.player_intelligence) = attributes
+        plain.player_strength, plain.player_dexterity, plain.player_intelligence = (
+            fast.player_strength, fast.player_dexterity, fast.player_intelligence)
+        rules.clip_vitals(fast, settings)
+        rules.inventory_achievements(fast)
+        plain_clip_vitals(plain, settings)
+        plain_inventory_achievements(plain)
+        assert _snapshot(fast) == _snapshot(plain)
+
+
+def _ask_everything(task) -> None:
+    """Make ``task`` ask every test after every step (the plain way)."""
+    task._live = task._open
+    task._success_live = task._success is not None
+    task.events = [(event, when, False) for event, when, _ in task.events]
+    task._goal_steady = False
+
+
+def _edit(state, rng) -> None:
+    """An edit between steps of what steady counters read off the state."""
+    what = int(rng.integers(0, 4))
+    if what == 0:
+        name = COUNTS[int(rng.integers(len(COUNTS)))]
+        setattr(state.inventory, name, int(rng.integers(0, 2 if name == "bow" else 5)))
+    elif what == 1:
+        state.achievements[int(rng.integers(state.achievements.size))] = bool(rng.integers(2))
+    elif what == 2:
+        state.player_level = int(rng.integers(0, NUM_LEVELS))
+    else:
+        state.inventory.armour[int(rng.integers(4))] = int(rng.integers(0, 3))
+
+
+@pytest.mark.parametrize("name", ["firstday", "iron-bootstrap", "gatherresources", "choptrees",
+                                  "fight-zombies", "reach-dungeon", "survivehorde",
+                                  "plant-farm", "xp-attribute-spend", "potion-id-stakes"])
+def test_steady_tests_asked_only_after_a_change_pay_and_end_as_asked_every_step(name):
+    fast, plain = make(f"glyphbench/craftax-{name}-v0"), make(f"glyphbench/craftax-{name}-v0")
+    rng = np.random.default_rng(4)
+    edits = 0
+    for seed in range(3):
+        fast.reset(seed=seed)
+        plain.reset(seed=seed)
+        _ask_everything(plain)
+        assert fast._hud() == plain._hud()
+        for turn in range(300):
+            action = int(rng.integers(fast.action_space.n))
+            a, b = fast.step(action), plain.step(action)
+            assert a[0] == b[0] and a[1:4] == b[1:4], (name, seed, turn)
+            assert fast._hud() == plain._hud(), (name, seed, turn)
+            if fast.done:
+                break
+            if seed == 2 and rng.random() < 0.2:       # the last episode edited now and then
+                state = rng.bit_generator.state
+                _edit(fast.state, rng)
+                rng.bit_generator.state = state
+                _edit(plain.state, rng)
+                edits += 1
+    assert edits > 0
