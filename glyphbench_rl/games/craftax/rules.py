@@ -455,10 +455,8 @@ def grow_plants(state: State) -> None:
     their block is a ripe plant."""
     mask = state.growing_plants_mask
     age = state.growing_plants_age
-    if not mask.tobytes().strip(b"\x00"):          # no plant growing (the common case)
-        if age.tobytes().strip(b"\x00"):
-            age[:] = 0
-        return
+    if not (mask.tobytes() + age.tobytes()).strip(b"\x00"):
+        return          # (no plant growing and every age 0, the common case: nothing changes)
     age += 1
     age *= mask
     if age.max() >= PLANT_RIPE_AGE:
@@ -477,23 +475,25 @@ def update_intrinsics(state: State, action: int, settings) -> None:
     energy never fall; sleep still restores energy (and so ends), health and mana still
     recover."""
     # (the fields are read once into locals and written once: this runs every step)
-    dex, strength = state.player_dexterity, state.player_strength
-    top_energy, top_health = max_energy(dex), max_health(strength)
+    dex, energy = state.player_dexterity, state.player_energy
+    top_energy = max_energy(dex)
     asleep = state.is_sleeping
-    if action == _SLEEP and state.player_energy < top_energy:
+    if action == _SLEEP and energy < top_energy:
         asleep = state.is_sleeping = True
-    if asleep and state.player_energy >= top_energy:
+    if asleep and energy >= top_energy:
         asleep = state.is_sleeping = False
         unlock(state, _WAKE_UP)
-    food, drink = state.player_food, state.player_drink
-    if action == _REST and state.player_health < top_health:
+    food, drink, health = state.player_food, state.player_drink, state.player_health
+    top_health = max_health(state.player_strength)
+    if action == _REST and health < top_health:
         state.is_resting = True
-    if state.is_resting and (state.player_health >= top_health or food <= 0 or drink <= 0):
+    if state.is_resting and (health >= top_health or food <= 0 or drink <= 0):
         state.is_resting = False
 
     fall = 0 if state.player_level == BOSS_LEVEL else 1
     decay = 1.0 - DEXTERITY_DECAY * (dex - 1)
-    if settings.intrinsics:
+    intrinsics = settings.intrinsics
+    if intrinsics:
         rate = (SLEEP_INTRINSIC_RATE if asleep else 1.0) * decay
         hunger = state.player_hunger + rate
         if hunger > HUNGER_LIMIT:
@@ -505,8 +505,7 @@ def update_intrinsics(state: State, action: int, settings) -> None:
             drink = state.player_drink = max(drink - fall, 0)
             thirst = 0.0
         state.player_thirst = thirst
-    if settings.intrinsics or asleep:      # (asleep, fatigue only falls: energy only grows)
-        energy = state.player_energy
+    if intrinsics or asleep:      # (asleep, fatigue only falls: energy only grows)
         fatigue = min(state.player_fatigue - 1, 0) if asleep else state.player_fatigue + decay
         if fatigue > FATIGUE_LIMIT:
             state.player_energy = max(energy - fall, 0)
@@ -521,10 +520,10 @@ def update_intrinsics(state: State, action: int, settings) -> None:
     else:
         recover = state.player_recover + DERECOVER_RATE[asleep] * fall
     if recover > RECOVER_LIMIT:
-        state.player_health = min(state.player_health + 1, top_health)
+        state.player_health = min(health + 1, top_health)
         recover = 0.0
     if recover < DERECOVER_LIMIT:
-        state.player_health = state.player_health - 1
+        state.player_health = health - 1
         recover = 0.0
     state.player_recover = recover
 
@@ -619,9 +618,21 @@ _RULE = ({_DO: _DO_RULE, int(Action.SHOOT_ARROW): _SHOOT_RULE, int(Action.READ_B
 _LADDERS = (_DESCEND, _ASCEND)
 
 
+_DAYLIGHT: dict[tuple[int, int], float] = {}     # (timestep, day length) -> light_level
+
+
 def daylight(timestep: int, settings) -> float:
-    """The light level at ``timestep``: upstream's daylight, or full day with the cycle off."""
-    return light_level(timestep, settings.day_length) if settings.daylight else 1.0
+    """The light level at ``timestep``: upstream's daylight, or full day with the cycle off.
+    (Remembered: a cosine and a cube each step otherwise.)"""
+    if not settings.daylight:
+        return 1.0
+    key = (timestep, settings.day_length)
+    light = _DAYLIGHT.get(key)
+    if light is None:
+        if len(_DAYLIGHT) >= 10_000:
+            _DAYLIGHT.clear()
+        light = _DAYLIGHT[key] = light_level(timestep, settings.day_length)
+    return light
 
 
 def step(state: State, action: int, settings, draws, after_mobs=None) -> float:

@@ -53,6 +53,12 @@ PLACED = {Action.PLACE_STONE: BlockType.STONE, Action.PLACE_TABLE: BlockType.CRA
 CASTS = frozenset(int(a) for a in (Action.CAST_FIREBALL, Action.CAST_ICEBALL))
 DRINKS = frozenset(range(Action.DRINK_POTION_RED, Action.DRINK_POTION_YELLOW + 1))
 _PLACE_TORCH, _RED = int(Action.PLACE_TORCH), int(Action.DRINK_POTION_RED)   # (ints: read each step)
+# the actions whose effect the tally finds by a difference (one look-up a step): a placement
+# (the block placed and its counter name), a torch, a potion, a spell
+_PLACING, _TORCH, _DRINKING, _CASTING = range(1, 5)
+_WATCHED = ({int(a): _PLACING for a in PLACED} | {_PLACE_TORCH: _TORCH}
+            | dict.fromkeys(DRINKS, _DRINKING) | dict.fromkeys(CASTS, _CASTING))
+_PLACED = {int(a): (int(b), b.name.lower()) for a, b in PLACED.items()}
 POTION_EFFECTS = ("heal", "harm", "mana", "drain", "energy", "tire")   # upstream's effect order
 
 
@@ -157,11 +163,12 @@ class Tally:
         self._level = state.player_level
         self._masks = (state.passive_mobs.mask.tobytes(), state.melee_mobs.mask.tobytes(),
                        state.ranged_mobs.mask.tobytes())
-        if action in PLACED:
+        watched = _WATCHED.get(action)
+        if watched == _PLACING:
             self._ahead = self._facing_block(state)
-        elif action == _PLACE_TORCH:
+        elif watched == _TORCH:
             self._torches = state.inventory.torches
-        elif action in DRINKS:
+        elif watched == _DRINKING:
             self._potions = state.inventory.potions.copy()
 
     @staticmethod
@@ -215,19 +222,23 @@ class Tally:
         if state.player_drink > drink:
             counts["drank"] += 1
             changed = True
-        if action in CASTS and state.player_mana < mana:
-            counts["cast"] += 1
-            changed = True
-        if action in PLACED:
-            block = PLACED[action]
-            if self._ahead != block and self._facing_block(state) == block:
-                self.placed[block.name.lower()] += 1
+        watched = _WATCHED.get(action)
+        if watched is None:
+            pass
+        elif watched == _CASTING:
+            if state.player_mana < mana:
+                counts["cast"] += 1
                 changed = True
-        elif action == _PLACE_TORCH:
+        elif watched == _PLACING:
+            block, name = _PLACED[action]
+            if self._ahead != block and self._facing_block(state) == block:
+                self.placed[name] += 1
+                changed = True
+        elif watched == _TORCH:
             if state.inventory.torches < self._torches:
                 self.placed["torch"] += 1
                 changed = True
-        elif action in DRINKS:
+        else:
             colour = action - _RED
             if state.inventory.potions[colour] < self._potions[colour]:
                 self.potions[POTION_EFFECTS[int(state.potion_mapping[colour])]] += 1
@@ -306,7 +317,8 @@ class CraftaxTask(GlyphTask):
         tally.after_step(state, action)
         fresh = tally.changes != self._seen     # (else the steady tests are as last step)
         self._seen = tally.changes
-        self.scenario.run_events(self, state, tally, fresh)
+        if self.events or self.ctx.reserve:     # (most scenarios have neither)
+            self.scenario.run_events(self, state, tally, fresh)
         self._score(state, tally, native, fresh)
 
     def _score(self, state, tally: Tally, native: float, fresh: bool = True) -> None:
