@@ -54,6 +54,7 @@ _SPELLS = {int(a): (i, int(p), int(ach)) for a, (i, p, ach) in SPELLS.items()}
 _PLACING = {int(a): (item, cost, None if block is None else int(block), int(ach))
             for a, (item, cost, block, ach) in PLACING.items()}
 _ENCHANT_TABLES = {int(b): v for b, v in ENCHANT_TABLES.items()}
+_RECIPE_COST = {a: tuple(r.cost.items()) for a, r in RECIPE_BY_ACTION.items()}
 _DRINK_BLOCKS = frozenset(int(b) for b in DRINK_BLOCKS)
 _GRASS, _PATH, _WATER = int(BlockType.GRASS), int(BlockType.PATH), int(BlockType.WATER)
 _LAVA, _CHEST, _RIPE = int(BlockType.LAVA), int(BlockType.CHEST), int(BlockType.RIPE_PLANT)
@@ -117,15 +118,18 @@ def facing(state: State) -> tuple[int, int]:
 
 
 def is_near_block(state: State, block: int) -> bool:
-    """``block`` is in one of the eight cells around the player (crafting stations)."""
+    """``block`` is in one of the eight cells around the player (``CLOSE_BLOCKS``: crafting
+    stations), read as the 3 x 3 window around the player (cut at the map's edge) less its
+    centre."""
     level, (r, c) = state.player_level, state.player_position.tolist()
-    rows, cols = state.map.shape[1:]
-    m = state.map
-    for dr, dc in CLOSE_BLOCKS:
-        rr, cc = r + dr, c + dc
-        if 0 <= rr < rows and 0 <= cc < cols and m.item(level, rr, cc) == block:
-            return True
-    return False
+    r0, c0 = max(r - 1, 0), max(c - 1, 0)
+    window = state.map[level, r0:r + 2, c0:c + 2].tolist()
+    window[r - r0][c - c0] = -1          # (the player's own cell is not near)
+    return any(block in row for row in window)
+
+
+assert len(CLOSE_BLOCKS) == 8 and set(CLOSE_BLOCKS) == {
+    (dr, dc) for dr in (-1, 0, 1) for dc in (-1, 0, 1) if dr or dc}
 
 
 # ------------------------------------------------------------------------------------------
@@ -160,9 +164,10 @@ def craft(state: State, action: int) -> None:
     """A recipe of ``tables.RECIPES``: its cost paid, at a crafting table (and furnace)."""
     recipe = RECIPE_BY_ACTION[action]
     inv = state.inventory
+    for item, n in _RECIPE_COST[action]:    # (the cheaper test first: both only return)
+        if getattr(inv, item) < n:
+            return
     if not is_near_block(state, _TABLE) or (recipe.furnace and not is_near_block(state, _FURNACE)):
-        return
-    if any(getattr(inv, item) < n for item, n in recipe.cost.items()):
         return
     result = recipe.result
     if result == "armour":
@@ -618,7 +623,7 @@ _RULE = ({_DO: _DO_RULE, int(Action.SHOOT_ARROW): _SHOOT_RULE, int(Action.READ_B
 _LADDERS = (_DESCEND, _ASCEND)
 
 
-_DAYLIGHT: dict[tuple[int, int], float] = {}     # (timestep, day length) -> light_level
+_DAYLIGHT: dict[int, dict[int, float]] = {}     # day length -> timestep -> light_level
 
 
 def daylight(timestep: int, settings) -> float:
@@ -626,12 +631,12 @@ def daylight(timestep: int, settings) -> float:
     (Remembered: a cosine and a cube each step otherwise.)"""
     if not settings.daylight:
         return 1.0
-    key = (timestep, settings.day_length)
-    light = _DAYLIGHT.get(key)
+    day = _DAYLIGHT.get(settings.day_length)
+    if day is None or len(day) >= 10_000:
+        day = _DAYLIGHT[settings.day_length] = {}
+    light = day.get(timestep)
     if light is None:
-        if len(_DAYLIGHT) >= 10_000:
-            _DAYLIGHT.clear()
-        light = _DAYLIGHT[key] = light_level(timestep, settings.day_length)
+        light = day[timestep] = light_level(timestep, settings.day_length)
     return light
 
 

@@ -9,8 +9,8 @@ from glyphbench_rl import make
 from glyphbench_rl.games.craftax import rules, worldgen
 from glyphbench_rl.games.craftax.state import Settings
 from glyphbench_rl.games.craftax.tables import (
-    GOD_MODE_MIN_HEALTH, INVENTORY_ACHIEVEMENTS, NUM_LEVELS, STACK_LIMIT, max_food, max_health,
-    max_mana)
+    CLOSE_BLOCKS, GOD_MODE_MIN_HEALTH, INVENTORY_ACHIEVEMENTS, NUM_LEVELS, STACK_LIMIT, BlockType,
+    light_level, max_food, max_health, max_mana)
 
 COUNTS = ("wood", "stone", "coal", "iron", "diamond", "sapling", "pickaxe", "sword", "bow",
           "arrows", "torches", "ruby", "sapphire", "books")
@@ -75,6 +75,39 @@ def test_clip_vitals_and_inventory_achievements_as_the_plain_rules(god_mode):
         plain_clip_vitals(plain, settings)
         plain_inventory_achievements(plain)
         assert _snapshot(fast) == _snapshot(plain)
+
+
+def test_is_near_block_reads_the_eight_cells_around_the_player():
+    """Also at the map's edges and corners, and with the block under the player (god mode)."""
+    rng = np.random.default_rng(2)
+    state = worldgen.blank(Settings())
+    _, rows, cols = state.map.shape
+    table = int(BlockType.CRAFTING_TABLE)
+    near = 0
+    for _ in range(3000):
+        level = int(rng.integers(NUM_LEVELS))
+        r = int(rng.choice([0, 1, rows - 2, rows - 1, int(rng.integers(rows))]))
+        c = int(rng.choice([0, 1, cols - 2, cols - 1, int(rng.integers(cols))]))
+        state.player_level, state.player_position[:] = level, (r, c)
+        state.map[level, max(r - 2, 0):r + 3, max(c - 2, 0):c + 3] = int(BlockType.GRASS)
+        for _ in range(int(rng.integers(0, 3))):
+            rr, cc = r + int(rng.integers(-2, 3)), c + int(rng.integers(-2, 3))
+            if 0 <= rr < rows and 0 <= cc < cols:
+                state.map[level, rr, cc] = table
+        plain = any(0 <= r + dr < rows and 0 <= c + dc < cols
+                    and state.map[level, r + dr, c + dc] == table for dr, dc in CLOSE_BLOCKS)
+        assert rules.is_near_block(state, table) == plain
+        near += plain
+    assert 0 < near < 3000
+
+
+def test_daylight_remembered_is_light_level():
+    rng = np.random.default_rng(3)
+    for day_length in (300, 7, 1000):
+        settings = Settings(day_length=day_length)
+        for t in [*rng.integers(0, 20_000, 300).tolist(), *range(0, 700)]:
+            assert rules.daylight(t, settings) == light_level(t, day_length)
+    assert rules.daylight(5, Settings(daylight=False)) == 1.0
 
 
 def _ask_everything(task) -> None:
