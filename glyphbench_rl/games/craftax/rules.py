@@ -90,9 +90,15 @@ def is_free(state: State, level: int, pos) -> bool:
 
 
 def player_can_enter(state: State, r: int, c: int) -> bool:
-    """Upstream's land-creature collision for the player: free, and neither water nor lava."""
+    """Upstream's land-creature collision for the player: free (``is_free``), and neither water
+    nor lava. (Written out: every move asks it.)"""
+    rows, cols = state.map.shape[1:]
+    if not (0 <= r < rows and 0 <= c < cols):
+        return False
     level = state.player_level
-    return is_free(state, level, (r, c)) and state.map.item(level, r, c) not in (_WATER, _LAVA)
+    block = state.map.item(level, r, c)
+    return (not IS_SOLID[block] and block != _WATER and block != _LAVA
+            and not is_in_mob(state, level, r, c))
 
 
 def player_damage_vector(state: State) -> tuple[float, float, float]:
@@ -654,7 +660,9 @@ def step(state: State, action: int, settings, draws, after_mobs=None) -> float:
     if state.player_level or action in _LADDERS:     # (on the surface it has nothing else to do)
         change_floor(state, action, settings)
     rule = _RULE.get(action, 0)
-    if rule == _DO_RULE:
+    if not rule or rule >= _LEVEL_UP_RULE:
+        pass        # (NOOP, SLEEP, REST, the ladders, or a rule that comes after the boss's)
+    elif rule == _DO_RULE:
         do(state, settings, draws)
     elif rule == _CRAFT_RULE:
         craft(state, action)

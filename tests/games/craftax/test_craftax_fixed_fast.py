@@ -101,6 +101,24 @@ def test_is_near_block_reads_the_eight_cells_around_the_player():
     assert 0 < near < 3000
 
 
+def test_player_can_enter_is_free_and_neither_water_nor_lava():
+    rng = np.random.default_rng(6)
+    state = worldgen.generate(rng, Settings())
+    _, rows, cols = state.map.shape
+    water, lava = int(BlockType.WATER), int(BlockType.LAVA)
+    seen = set()
+    for _ in range(4000):
+        state.player_level = level = int(rng.integers(NUM_LEVELS))
+        r, c = (int(x) for x in rng.integers(-2, [rows + 2, cols + 2]))
+        if 0 <= r < rows and 0 <= c < cols and rng.random() < 0.3:
+            state.map[level, r, c] = int(rng.choice([water, lava, int(rng.integers(len(BlockType)))]))
+        plain = (rules.is_free(state, level, (r, c))
+                 and state.map[level, r, c] not in (water, lava))
+        assert rules.player_can_enter(state, r, c) == plain
+        seen.add(plain)
+    assert seen == {True, False}
+
+
 def test_daylight_remembered_is_light_level():
     rng = np.random.default_rng(3)
     for day_length in (300, 7, 1000):
