@@ -54,7 +54,7 @@ class CraftaxFull(CraftaxTask):
     def prompt_fields(self) -> dict:
         return {**super().prompt_fields(), "achievements": achievements_text()}
 
-    def _score(self, state, tally, native: float, fresh: bool = True) -> None:
+    def _score(self, state, tally, native: float) -> None:
         self.reward(native)
         if state.player_health <= 0:
             self.say("You died.")

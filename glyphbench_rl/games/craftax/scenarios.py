@@ -504,14 +504,16 @@ class Scenario:
         ctx.settle()
         return state, ctx
 
-    def run_events(self, task, state, tally, fresh: bool = True) -> None:
+    def run_events(self, task, state, tally) -> None:
         """After each step: waiting mobs take free slots; events whose test now holds run once
-        (``task.ctx``, ``task.play_rng`` and ``task.fired`` are the episode's; ``task.events``
-        holds (event, its test, the test is steady)). A steady test is asked only when
-        ``fresh`` (a steady counter changed since the last step's)."""
+        (``task.ctx``, ``task.play_rng``, ``task.fired`` and ``task.events_at`` are the
+        episode's; ``task.events`` holds (event, its test, the test is steady)). A steady test
+        is asked only when a steady counter changed since the last step (``tally.changes``)."""
         ctx, rng = task.ctx, task.play_rng
         if ctx.reserve:
             ctx.admit(state, rng)
+        fresh = tally.changes != task.events_at
+        task.events_at = tally.changes
         for i, (event, when, steady) in enumerate(task.events):
             if (fresh or not steady) and i not in task.fired and when(tally):
                 task.fired.add(i)

@@ -305,7 +305,7 @@ class CraftaxTask(GlyphTask):
         self.events = [(e, parse_test(e.when, tally), is_steady(e.when, tally))
                        for e in scenario.events]
         self.fired: set[int] = set()             # scenario events already run
-        self._seen = None                        # ``tally.changes`` at the last step
+        self._scored_at = self.events_at = None  # ``tally.changes`` when last scored, events run
         # the HUD's progress and the ``tally.changes`` it was made at, when its keys are steady
         self._goal: tuple | None = None
         self._goal_steady = all(tally.kept(k) for k in scenario.progress_keys)
@@ -315,17 +315,17 @@ class CraftaxTask(GlyphTask):
         tally.before_step(state, action)
         native = rules.step(state, action, self.settings, self.draws, after_mobs=tally.after_mobs)
         tally.after_step(state, action)
-        fresh = tally.changes != self._seen     # (else the steady tests are as last step)
-        self._seen = tally.changes
         if self.events or self.ctx.reserve:     # (most scenarios have neither)
-            self.scenario.run_events(self, state, tally, fresh)
-        self._score(state, tally, native, fresh)
+            self.scenario.run_events(self, state, tally)
+        self._score(state, tally, native)
 
-    def _score(self, state, tally: Tally, native: float, fresh: bool = True) -> None:
+    def _score(self, state, tally: Tally, native: float) -> None:
         """Pay the scenario's terms (``native``, upstream's reward for the step, is not paid
-        here) and end the episode on death or success. Unless ``fresh`` (a steady counter
-        changed this step), only the terms and success test that read other counters are
-        asked: the others give what they gave."""
+        here) and end the episode on death or success. Unless a steady counter changed since
+        the last step (``tally.changes``), only the terms and success test that read other
+        counters are asked: the others give what they gave."""
+        fresh = tally.changes != self._scored_at
+        self._scored_at = tally.changes
         finished = False
         for entry in self._open if fresh else self._live:
             term, count, paid = entry
