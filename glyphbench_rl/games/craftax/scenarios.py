@@ -55,19 +55,6 @@ def parse_test(text: str, tally) -> Callable:
     return lambda t: all(op(get(t), n) for get, op, n in clauses)
 
 
-def counters(text: str) -> list[str]:
-    """The counter names a test (or a bare counter) reads."""
-    if not re.search(r"[<>=]", text):
-        return [text.strip()]
-    return [_CLAUSE.match(part).group(1) for part in text.split(" and ")]
-
-
-def is_steady(text: str, tally) -> bool:
-    """The test reads only steady counters (``task.Tally``): its value changes only in a step
-    that bumps ``tally.changes``."""
-    return all(tally.steady(key) for key in counters(text))
-
-
 @dataclass(frozen=True)
 class Term:
     """A reward term: ``unit`` per unit of ``test`` (a counter, ``per`` of it making one unit,
@@ -505,15 +492,12 @@ class Scenario:
         return state, ctx
 
     def run_events(self, task, state, tally) -> None:
-        """After each step: waiting mobs take free slots; events whose test now holds run once
-        (``task.ctx``, ``task.play_rng``, ``task.fired`` and ``task.events_at`` are the
-        episode's; ``task.events`` holds (event, its test, the test is steady)). A steady test
-        is asked only when a steady counter changed since the last step (``tally.changes``)."""
+        """After each step: waiting mobs take free slots; events whose test holds run once (the
+        ``task`` keeps them); a steady test only when ``tally.changes`` moved (``task.Tally``)."""
         ctx, rng = task.ctx, task.play_rng
         if ctx.reserve:
             ctx.admit(state, rng)
-        fresh = tally.changes != task.events_at
-        task.events_at = tally.changes
+        fresh, task.events_at = tally.changes != task.events_at, tally.changes
         for i, (event, when, steady) in enumerate(task.events):
             if (fresh or not steady) and i not in task.fired and when(tally):
                 task.fired.add(i)

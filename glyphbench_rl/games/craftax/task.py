@@ -10,6 +10,7 @@ changes a rule of the game: upstream's native reward is not paid; the scenario's
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -20,7 +21,7 @@ from ...core.params import param
 from ..common.lanes import Draws
 from . import hud, rules, view
 from .bestiary import MOB_NAMES
-from .scenarios import SCENARIOS, Scenario, is_steady, parse_test
+from .scenarios import SCENARIOS, Scenario, parse_test
 from .tables import NIGHT_LIGHT, Achievement, Action, BlockType
 
 SINGLE = [
@@ -148,6 +149,12 @@ class Tally:
         head, _, tail = key.partition(".")
         return (cls.kept(key) or head == "done" or (head == "holds" and tail in ITEMS)
                 or key == "level")
+
+    def steady_test(self, text: str) -> bool:
+        """A scenario test (``"got.wood >= 3 and level >= 1"``) or bare counter reads only steady
+        counters: its value changes only in a step that bumps ``changes``."""
+        return all(self.steady(key) for key in re.findall(r"[a-z_][a-z0-9_.]*", text)
+                   if key != "and")
 
     def value(self, key: str) -> float:
         get = self._getters.get(key)
@@ -299,10 +306,10 @@ class CraftaxTask(GlyphTask):
         # can pay no more. ``_live``: those that read a counter that is not steady (Tally)
         self._open = [[term, term.counter(parse_test(term.test, tally)), 0]
                       for term in scenario.terms]
-        self._live = [e for e in self._open if not is_steady(e[0].test, tally)]
+        self._live = [e for e in self._open if not tally.steady_test(e[0].test)]
         self._success = parse_test(scenario.success, tally) if scenario.success else None
-        self._success_live = bool(scenario.success) and not is_steady(scenario.success, tally)
-        self.events = [(e, parse_test(e.when, tally), is_steady(e.when, tally))
+        self._success_live = bool(scenario.success) and not tally.steady_test(scenario.success)
+        self.events = [(e, parse_test(e.when, tally), tally.steady_test(e.when))
                        for e in scenario.events]
         self.fired: set[int] = set()             # scenario events already run
         self._scored_at = self.events_at = None  # ``tally.changes`` when last scored, events run

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from glyphbench_rl import make
-from glyphbench_rl.games.craftax import rules, worldgen
+from glyphbench_rl.games.craftax import rules, upkeep, worldgen
 from glyphbench_rl.games.craftax.state import Settings
 from glyphbench_rl.games.craftax.tables import (
     CLOSE_BLOCKS, GOD_MODE_MIN_HEALTH, INVENTORY_ACHIEVEMENTS, NUM_LEVELS, STACK_LIMIT, BlockType,
@@ -70,8 +70,8 @@ def test_clip_vitals_and_inventory_achievements_as_the_plain_rules(god_mode):
         (fast.player_strength, fast.player_dexterity, fast.player_intelligence) = attributes
         plain.player_strength, plain.player_dexterity, plain.player_intelligence = (
             fast.player_strength, fast.player_dexterity, fast.player_intelligence)
-        rules.clip_vitals(fast, settings)
-        rules.inventory_achievements(fast)
+        upkeep.clip_vitals(fast, settings)
+        upkeep.inventory_achievements(fast)
         plain_clip_vitals(plain, settings)
         plain_inventory_achievements(plain)
         assert _snapshot(fast) == _snapshot(plain)
@@ -124,8 +124,8 @@ def test_daylight_remembered_is_light_level():
     for day_length in (300, 7, 1000):
         settings = Settings(day_length=day_length)
         for t in [*rng.integers(0, 20_000, 300).tolist(), *range(0, 700)]:
-            assert rules.daylight(t, settings) == light_level(t, day_length)
-    assert rules.daylight(5, Settings(daylight=False)) == 1.0
+            assert upkeep.daylight(t, settings) == light_level(t, day_length)
+    assert upkeep.daylight(5, Settings(daylight=False)) == 1.0
 
 
 def _ask_everything(task) -> None:
