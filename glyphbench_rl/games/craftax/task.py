@@ -215,7 +215,9 @@ class Tally:
         counts = self.counts
         counts["turn"] += 1
         changed = False          # a steady counter changed (``changes``)
-        held = self._holdings(state)
+        inv = state.inventory    # (``_holdings``, written out: this runs every step)
+        held = (inv.wood, inv.stone, inv.coal, inv.iron, inv.diamond, inv.sapling, inv.ruby,
+                inv.sapphire, inv.arrows, inv.torches, inv.books, inv.pickaxe, inv.sword, inv.bow)
         if held != self._held:
             for k, old, new in zip(ITEMS, self._held, held):
                 if new > old:

@@ -176,3 +176,16 @@ def test_steady_tests_asked_only_after_a_change_pay_and_end_as_asked_every_step(
                 _edit(plain.state, rng)
                 edits += 1
     assert edits > 0
+
+
+def test_tally_follows_the_holdings_it_writes_out():
+    """``after_step`` reads the counts written out in ``_holdings``' order."""
+    task = make("glyphbench/craftax-choptrees-v0")
+    task.reset(seed=0)
+    rng = np.random.default_rng(9)
+    for _ in range(50):
+        name = COUNTS[int(rng.integers(len(COUNTS)))]
+        setattr(task.state.inventory, name, int(rng.integers(0, 5)))
+        task.tally.before_step(task.state, 0)
+        task.tally.after_step(task.state, 0)
+        assert task.tally._held == task.tally._holdings(task.state)
