@@ -52,6 +52,9 @@ def parse_test(text: str, tally) -> Callable:
     if len(clauses) == 1:
         (get, op, n), = clauses
         return lambda t: op(get(t), n)
+    if len(clauses) == 2:       # (written out: a term's test may be asked every step)
+        (get, op, n), (get2, op2, n2) = clauses
+        return lambda t: op(get(t), n) and op2(get2(t), n2)
     return lambda t: all(op(get(t), n) for get, op, n in clauses)
 
 
@@ -74,12 +77,11 @@ class Term:
     def counter(self, fn) -> Callable:
         """``units`` as one function of the tally, made once (the task pays every step)."""
         per, cap = self.per, self.cap
+        if not self.counts:         # a test (its function gives a bool): one unit while it holds
+            return lambda tally: 1 if fn(tally) else 0
 
-        def units(tally) -> int:
-            value = fn(tally)
-            if isinstance(value, bool):
-                return int(value)
-            return min(int(value) // per, cap)
+        def units(tally) -> int:    # (a counter: a number, never a bool)
+            return min(int(fn(tally)) // per, cap)
         return units
 
     @property
@@ -547,9 +549,7 @@ class Scenario:
         key = (keys, values, tuple(map(type, values)))    # (1 and 1.0 and True print apart)
         text = _PROGRESS.get(key)
         if text is None:
-            labels = _LABELS.get(keys)
-            if labels is None:
-                labels = _LABELS[keys] = tuple(k.split('.')[-1].capitalize() for k in keys)
+            labels = [k.split('.')[-1].capitalize() for k in keys]
             if len(_PROGRESS) >= 10_000:
                 _PROGRESS.clear()
             text = _PROGRESS[key] = " ".join([f"{label} {_fmt(v)}" for label, v in zip(labels, values)])
@@ -564,7 +564,6 @@ class Scenario:
             tally.getter(key)
 
 
-_LABELS: dict[tuple, tuple] = {}      # progress keys -> their HUD labels
 _PROGRESS: dict[tuple, str] = {}     # progress keys, values, their types -> the text
 
 

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from glyphbench_rl import make
-from glyphbench_rl.games.craftax import rules, upkeep, worldgen
+from glyphbench_rl.games.craftax import rules, scenarios, upkeep, worldgen
 from glyphbench_rl.games.craftax.state import Settings
 from glyphbench_rl.games.craftax.tables import (
     CLOSE_BLOCKS, GOD_MODE_MIN_HEALTH, INVENTORY_ACHIEVEMENTS, NUM_LEVELS, STACK_LIMIT, BlockType,
@@ -189,3 +189,26 @@ def test_tally_follows_the_holdings_it_writes_out():
         task.tally.before_step(task.state, 0)
         task.tally.after_step(task.state, 0)
         assert task.tally._held == task.tally._holdings(task.state)
+
+
+class _Values:
+    """A stand-in tally: counters read from a dict."""
+
+    def __init__(self, values):
+        self.values = values
+
+    def getter(self, key):
+        return lambda t: t.values[key]
+
+
+def test_term_units_as_the_plain_rule():
+    rng = np.random.default_rng(8)
+    for _ in range(500):
+        text = str(rng.choice(["x", "x >= 2", "x >= 1 and y < 3", "x > 1 and y >= 1 and x < 4"]))
+        term = scenarios.Term("t", text, 0.5, "", cap=int(rng.integers(1, 6)),
+                              per=int(rng.integers(1, 4)))
+        tally = _Values({"x": int(rng.integers(0, 12)), "y": int(rng.integers(0, 5))})
+        fn = scenarios.parse_test(text, tally)
+        value = fn(tally)
+        plain = int(value) if isinstance(value, bool) else min(int(value) // term.per, term.cap)
+        assert term.counter(fn)(tally) == plain
