@@ -94,7 +94,7 @@ class Tally:
         self._held = self._holdings(state)
         self._getters: dict = {}       # key -> getter, compiled once (``value``)
         self.changes = 0
-        self._last_level = state.player_level     # after the last step
+        self._last_level, self._last_kills = state.player_level, 0     # after the last step
         self._achieved = None     # the achievements' bytes after the last step (a test reads one)
 
     @staticmethod
@@ -209,7 +209,6 @@ class Tally:
         self.kills["all"] += 1
         if kind:
             self.kills["monsters"] += 1
-        self.changes += 1
 
     def after_step(self, state, action: int) -> None:
         counts = self.counts
@@ -252,6 +251,9 @@ class Tally:
             if state.inventory.potions[colour] < self._potions[colour]:
                 self.potions[POTION_EFFECTS[int(state.potion_mapping[colour])]] += 1
                 changed = True
+        if self.kills["all"] != self._last_kills:      # (every kill counts in "all")
+            self._last_kills = self.kills["all"]
+            changed = True
         level = state.player_level
         if level == 0 and state.light_level < NIGHT_LIGHT:
             counts["night"] += 1

@@ -9,8 +9,8 @@ from glyphbench_rl import make
 from glyphbench_rl.games.craftax import rules, scenarios, upkeep, worldgen
 from glyphbench_rl.games.craftax.state import Settings
 from glyphbench_rl.games.craftax.tables import (
-    CLOSE_BLOCKS, GOD_MODE_MIN_HEALTH, INVENTORY_ACHIEVEMENTS, NUM_LEVELS, STACK_LIMIT, BlockType,
-    light_level, max_food, max_health, max_mana)
+    CLOSE_BLOCKS, GOD_MODE_MIN_HEALTH, INVENTORY_ACHIEVEMENTS, NUM_LEVELS, STACK_LIMIT, Action,
+    BlockType, light_level, max_food, max_health, max_mana)
 
 COUNTS = ("wood", "stone", "coal", "iron", "diamond", "sapling", "pickaxe", "sword", "bow",
           "arrows", "torches", "ruby", "sapphire", "books")
@@ -163,13 +163,14 @@ def test_steady_tests_asked_only_after_a_change_pay_and_end_as_asked_every_step(
         _ask_everything(plain)
         assert fast._hud() == plain._hud()
         for turn in range(300):
-            action = int(rng.integers(fast.action_space.n))
+            # (DO two turns in five: kills and gathering happen)
+            action = int(Action.DO) if rng.random() < 0.4 else int(rng.integers(fast.action_space.n))
             a, b = fast.step(action), plain.step(action)
             assert a[0] == b[0] and a[1:4] == b[1:4], (name, seed, turn)
             assert fast._hud() == plain._hud(), (name, seed, turn)
             if fast.done:
                 break
-            if seed == 2 and rng.random() < 0.2:       # the last episode edited now and then
+            if seed and rng.random() < 0.2:       # the later episodes edited now and then
                 state = rng.bit_generator.state
                 _edit(fast.state, rng)
                 rng.bit_generator.state = state
@@ -212,3 +213,21 @@ def test_term_units_as_the_plain_rule():
         value = fn(tally)
         plain = int(value) if isinstance(value, bool) else min(int(value) // term.per, term.cap)
         assert term.counter(fn)(tally) == plain
+
+
+def test_a_kill_or_a_new_floor_is_a_change_of_the_steady_counters():
+    """However the kills are counted, a step after which ``kills`` or the floor differ bumps
+    ``changes`` (a kill term is then asked)."""
+    task = make("glyphbench/craftax-fight-zombies-v0")
+    task.reset(seed=0)
+    tally, state = task.tally, task.state
+    for change in ("none", "kill", "floor", "none"):
+        before = tally.changes
+        tally.before_step(state, 0)
+        if change == "kill":
+            tally.kills["zombie"] = tally.kills.get("zombie", 0) + 1
+            tally.kills["all"] += 1
+        elif change == "floor":
+            state.player_level += 1
+        tally.after_step(state, 0)
+        assert tally.changes == before + (change != "none"), change
