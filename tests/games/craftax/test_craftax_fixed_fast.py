@@ -1,6 +1,8 @@
 """The step's fixed costs cut short give what the plain rules give: ``clip_vitals`` and
-``inventory_achievements`` looking the held counts up; the task asking a steady test (terms,
-success, events, the HUD's progress) only after a step in which a steady counter changed."""
+``inventory_achievements`` looking the held counts up; ``is_near_block`` reading a window;
+``player_can_enter`` written out; ``daylight`` remembered; a term's units; the tally's
+holdings written out; the task asking a steady test (terms, success, events, the HUD's
+progress) only after a step in which a steady counter changed."""
 
 import numpy as np
 import pytest
