@@ -38,15 +38,17 @@ def _number(x: float) -> str:
     return str(int(r)) if r == int(r) else str(r)
 
 
-# The HUD is made every step. It is ``head | place[ | rest]``: the head (vitals, inventory, gear,
-# potions, spells, attributes) changes on few turns; the place (floor, position, facing, light,
-# kills) on most, but only in its position. ``hud`` reads everything each time (an edited state
-# shows at once) and compares it with last turn's: the head is remade only when what it reads
-# was not seen before, and the place's text around the position likewise.
-_HEADS: dict[tuple, str] = {}      # everything the head reads -> the head
+# The HUD is made every step. It is ``head | place[ | rest]``: the head is the vitals (which
+# change on many turns, in a fight to values not seen before) and the kit (inventory, gear,
+# potions, spells, attributes: few turns); the place (floor, position, facing, light, kills)
+# changes on most turns, but only in its position. ``hud`` reads everything each time (an
+# edited state shows at once) and compares it with last turn's: each part is remade only when
+# what it reads was not seen before, and the place's text around the position likewise.
+_VITALS: dict[tuple, str] = {}     # what the vitals read -> their text
+_KITS: dict[tuple, str] = {}       # what the kit reads -> its text ("" for none)
 _PLACES: dict[tuple, tuple[str, str]] = {}   # floor, facing, daylight, kills -> text around the position
-# last turn's head key, head, place key, place, the parts of the line, the line
-_last: list = [None, "", None, ("", ""), None, ""]
+# last turn's vitals key, vitals, kit key, kit, place key, place, the parts of the line, the line
+_last: list = [None, "", None, "", None, ("", ""), None, ""]
 
 
 def hud(state: State, settings: Settings | None = None) -> str:
@@ -55,33 +57,40 @@ def hud(state: State, settings: Settings | None = None) -> str:
     are remembered by the values they read, see above.)"""
     del settings   # (the HUD reads only the state; kept for the engine's call shape)
     inv, last = state.inventory, _last
+    strength, dex, intelligence = (state.player_strength, state.player_dexterity,
+                                   state.player_intelligence)
     key = (state.player_health, state.player_food, state.player_drink, state.player_energy,
-           state.player_mana, state.player_strength, state.player_dexterity,
-           state.player_intelligence, state.player_xp, inv.wood, inv.stone, inv.coal, inv.iron,
-           inv.diamond, inv.sapphire, inv.ruby, inv.sapling, inv.torches, inv.arrows, inv.books,
-           inv.pickaxe, inv.sword, inv.bow, state.sword_enchantment, state.bow_enchantment,
-           inv.armour.tobytes(), state.armour_enchantments.tobytes(), inv.potions.tobytes(),
-           state.learned_spells.tobytes())
+           state.player_mana, strength, dex, intelligence)
     if key == last[0]:
-        head = last[1]
+        vitals = last[1]
     else:
-        head = _remembered(_HEADS, key, _head, state)
-        last[0], last[1] = key, head
+        vitals = _remembered(_VITALS, key, _vitals, state)
+        last[0], last[1] = key, vitals
+    key = (state.player_xp, strength, dex, intelligence, inv.wood, inv.stone, inv.coal,
+           inv.iron, inv.diamond, inv.sapphire, inv.ruby, inv.sapling, inv.torches, inv.arrows,
+           inv.books, inv.pickaxe, inv.sword, inv.bow, state.sword_enchantment,
+           state.bow_enchantment, inv.armour.tobytes(), state.armour_enchantments.tobytes(),
+           inv.potions.tobytes(), state.learned_spells.tobytes())
+    if key == last[2]:
+        kit = last[3]
+    else:
+        kit = _remembered(_KITS, key, _kit, state)
+        last[2], last[3] = key, kit
     level = state.player_level
     key = (level, state.player_direction, state.light_level >= NIGHT_LIGHT,
            state.monsters_killed.item(level))
-    if key == last[2]:
-        before, after = last[3]
+    if key == last[4]:
+        before, after = last[5]
     else:
         place = _remembered(_PLACES, key, _place, state)
-        last[2], last[3] = key, place
+        last[4], last[5] = key, place
         before, after = place
     row, col = state.player_position.tolist()
     rest = " | Sleeping" if state.is_sleeping else " | Resting" if state.is_resting else ""
-    parts = (head, before, row, col, after, rest)
-    if parts != last[4]:        # (the player often stays put: then the line is last turn's)
-        last[4], last[5] = parts, f"{head} | {before}{row},{col}{after}{rest}"
-    return last[5]
+    parts = (vitals, kit, before, row, col, after, rest)
+    if parts != last[6]:        # (the player often stays put: then the line is last turn's)
+        last[6], last[7] = parts, f"{vitals}{kit} | {before}{row},{col}{after}{rest}"
+    return last[7]
 
 
 def _remembered(memo: dict, key: tuple, make, state: State):
@@ -106,13 +115,23 @@ def _hud(state: State) -> str:
 
 def _head(state: State) -> str:
     """The HUD's vitals, inventory, gear, potions, spells and attributes."""
+    return _vitals(state) + _kit(state)
+
+
+def _vitals(state: State) -> str:
+    """The HUD's vitals with their maxima."""
     maxima = max_vitals(state)
     values = (_number(state.player_health), state.player_food, state.player_drink,
               state.player_energy, state.player_mana)
     if len(set(maxima)) == 1:      # (the usual case: every maximum 9) said once
-        parts = [" ".join(f"{name} {v}" for name, v in zip(VITALS, values)) + f" (max {maxima[0]})"]
-    else:
-        parts = [" ".join(f"{name} {v}/{m}" for name, v, m in zip(VITALS, values, maxima))]
+        return " ".join(f"{name} {v}" for name, v in zip(VITALS, values)) + f" (max {maxima[0]})"
+    return " ".join(f"{name} {v}/{m}" for name, v, m in zip(VITALS, values, maxima))
+
+
+def _kit(state: State) -> str:
+    """The HUD's inventory, gear, potions, spells and attributes, each part after `` | ``
+    ("" when there are none)."""
+    parts = [""]
     inv = state.inventory
     counted = [f"{label} {n}" for name, label in _COUNTED_LABELS if (n := getattr(inv, name))]
     if counted:

@@ -11,8 +11,9 @@ weights of the achievements unlocked this step plus 0.1 x the change in health).
    ``enchant``; then the boss rule (``mobs.boss_logic``, every step) and ``level_up``;
 4. ``move`` (the move actions only);
 5. ``mobs.update`` and ``mobs.spawn`` (``settings.spawning`` off skips the spawn);
-6. ``grow_plants``, ``update_intrinsics``, ``clip_vitals``, ``inventory_achievements``;
-7. the reward, ``timestep`` + 1 and the light level of the new timestep.
+6. the upkeep (``upkeep``): ``grow_plants``, ``update_intrinsics``, ``clip_vitals``,
+   ``inventory_achievements``;
+7. the reward, ``timestep`` + 1 and the light level of the new timestep (``upkeep.daylight``).
 
 Randomness is explicit: ``draws`` (``games.common.lanes.Draws``) gives the uniform draws for
 the sapling found on grass, chest loot, the spell a book teaches and the armour piece an
@@ -34,18 +35,15 @@ from .state import MAX_PLAYER_PROJECTILES, State
 from .tables import (
     ACHIEVEMENT_REWARD, BOOK_CHEST_LEVELS, BOSS_LEVEL, BOW_CHEST_LEVEL, CAN_PLACE_ITEM,
     CHEST_ARROWS, CHEST_ORES, CHEST_ORE_CHANCE, CHEST_POTION, CHEST_TOOL_CHANCE,
-    CHEST_TOOL_TIER_WEIGHTS, CHEST_TORCH, CLOSE_BLOCKS, DERECOVER_LIMIT, DERECOVER_RATE,
-    DEXTERITY_DECAY, DIRECTIONS, DRINK_BLOCKS, ENCHANT_DAMAGE_FRACTION, ENCHANT_MANA_COST,
-    ENCHANT_TABLES, FATIGUE_LIMIT, FATIGUE_RESTED, GOD_MODE_MIN_HEALTH, HUNGER_LIMIT,
-    INTELLIGENCE_ENCHANT_BONUS, INTELLIGENCE_MANA_BONUS, INVENTORY_ACHIEVEMENTS, IS_SOLID,
-    LEARN_SPELL_ACHIEVEMENT, LEVEL_ACHIEVEMENT, MANA_LIMIT, MANA_RATE, MINING_BY_BLOCK,
-    MONSTERS_KILLED_TO_CLEAR_LEVEL, MOVES, NUM_LEVELS, PLACING, PLANT_RIPE_AGE, PLAYER_ARROW,
-    POTION_ACTIONS, POTION_EFFECTS, RECIPE_BY_ACTION, RECOVER_LIMIT, RECOVER_RATE,
-    RIPE_PLANT_FOOD, SAPLING_CHANCE, SLEEP_INTRINSIC_RATE, SPELLS, SPELL_MANA_COST,
-    STACK_LIMIT, STRENGTH_DAMAGE_BONUS, SWORD_DAMAGE, THIRST_LIMIT, TORCH_LIGHT_HALF,
-    TORCH_LIGHT_MAP, XP_PER_NEW_LEVEL, Achievement, Action, BlockType, ItemType, light_level,
-    max_drink, max_energy, max_food, max_health, max_mana,
+    CHEST_TOOL_TIER_WEIGHTS, CHEST_TORCH, CLOSE_BLOCKS, DIRECTIONS, DRINK_BLOCKS,
+    ENCHANT_DAMAGE_FRACTION, ENCHANT_MANA_COST, ENCHANT_TABLES, INTELLIGENCE_ENCHANT_BONUS,
+    IS_SOLID, LEARN_SPELL_ACHIEVEMENT, LEVEL_ACHIEVEMENT, MINING_BY_BLOCK,
+    MONSTERS_KILLED_TO_CLEAR_LEVEL, MOVES, NUM_LEVELS, PLACING, PLAYER_ARROW, POTION_ACTIONS,
+    POTION_EFFECTS, RECIPE_BY_ACTION, RIPE_PLANT_FOOD, SAPLING_CHANCE, SPELLS, SPELL_MANA_COST,
+    STACK_LIMIT, STRENGTH_DAMAGE_BONUS, SWORD_DAMAGE, TORCH_LIGHT_HALF, TORCH_LIGHT_MAP,
+    XP_PER_NEW_LEVEL, Achievement, Action, BlockType, ItemType, max_drink, max_food,
 )
+from .upkeep import clip_vitals, daylight, grow_plants, inventory_achievements, update_intrinsics
 
 _WEIGHTS = np.array(ACHIEVEMENT_REWARD, np.float64)
 _DIR = {int(a): d for a, d in DIRECTIONS.items()}
@@ -54,14 +52,14 @@ _SPELLS = {int(a): (i, int(p), int(ach)) for a, (i, p, ach) in SPELLS.items()}
 _PLACING = {int(a): (item, cost, None if block is None else int(block), int(ach))
             for a, (item, cost, block, ach) in PLACING.items()}
 _ENCHANT_TABLES = {int(b): v for b, v in ENCHANT_TABLES.items()}
+_RECIPE_COST = {a: tuple(r.cost.items()) for a, r in RECIPE_BY_ACTION.items()}
 _DRINK_BLOCKS = frozenset(int(b) for b in DRINK_BLOCKS)
 _GRASS, _PATH, _WATER = int(BlockType.GRASS), int(BlockType.PATH), int(BlockType.WATER)
 _LAVA, _CHEST, _RIPE = int(BlockType.LAVA), int(BlockType.CHEST), int(BlockType.RIPE_PLANT)
 _PLANT, _NECRO = int(BlockType.PLANT), int(BlockType.NECROMANCER)
 _TABLE, _FURNACE = int(BlockType.CRAFTING_TABLE), int(BlockType.FURNACE)
-_NOOP, _DO, _SLEEP, _REST = int(Action.NOOP), int(Action.DO), int(Action.SLEEP), int(Action.REST)
+_NOOP, _DO = int(Action.NOOP), int(Action.DO)
 _DESCEND, _ASCEND = int(Action.DESCEND), int(Action.ASCEND)
-_WAKE_UP = int(Achievement.WAKE_UP)
 
 # ------------------------------------------------------------------------------------------
 # helpers shared with the other modules
@@ -89,9 +87,15 @@ def is_free(state: State, level: int, pos) -> bool:
 
 
 def player_can_enter(state: State, r: int, c: int) -> bool:
-    """Upstream's land-creature collision for the player: free, and neither water nor lava."""
+    """Upstream's land-creature collision for the player: free (``is_free``), and neither water
+    nor lava. (Written out: every move asks it.)"""
+    rows, cols = state.map.shape[1:]
+    if not (0 <= r < rows and 0 <= c < cols):
+        return False
     level = state.player_level
-    return is_free(state, level, (r, c)) and state.map.item(level, r, c) not in (_WATER, _LAVA)
+    block = state.map.item(level, r, c)
+    return (not IS_SOLID[block] and block != _WATER and block != _LAVA
+            and not is_in_mob(state, level, r, c))
 
 
 def player_damage_vector(state: State) -> tuple[float, float, float]:
@@ -117,15 +121,18 @@ def facing(state: State) -> tuple[int, int]:
 
 
 def is_near_block(state: State, block: int) -> bool:
-    """``block`` is in one of the eight cells around the player (crafting stations)."""
+    """``block`` is in one of the eight cells around the player (``CLOSE_BLOCKS``: crafting
+    stations), read as the 3 x 3 window around the player (cut at the map's edge) less its
+    centre."""
     level, (r, c) = state.player_level, state.player_position.tolist()
-    rows, cols = state.map.shape[1:]
-    m = state.map
-    for dr, dc in CLOSE_BLOCKS:
-        rr, cc = r + dr, c + dc
-        if 0 <= rr < rows and 0 <= cc < cols and m.item(level, rr, cc) == block:
-            return True
-    return False
+    r0, c0 = max(r - 1, 0), max(c - 1, 0)
+    window = state.map[level, r0:r + 2, c0:c + 2].tolist()
+    window[r - r0][c - c0] = -1          # (the player's own cell is not near)
+    return any(block in row for row in window)
+
+
+assert len(CLOSE_BLOCKS) == 8 and set(CLOSE_BLOCKS) == {
+    (dr, dc) for dr in (-1, 0, 1) for dc in (-1, 0, 1) if dr or dc}
 
 
 # ------------------------------------------------------------------------------------------
@@ -160,9 +167,10 @@ def craft(state: State, action: int) -> None:
     """A recipe of ``tables.RECIPES``: its cost paid, at a crafting table (and furnace)."""
     recipe = RECIPE_BY_ACTION[action]
     inv = state.inventory
+    for item, n in _RECIPE_COST[action]:    # (the cheaper test first: both only return)
+        if getattr(inv, item) < n:
+            return
     if not is_near_block(state, _TABLE) or (recipe.furnace and not is_near_block(state, _FURNACE)):
-        return
-    if any(getattr(inv, item) < n for item, n in recipe.cost.items()):
         return
     result = recipe.result
     if result == "armour":
@@ -451,204 +459,57 @@ def move(state: State, action: int, settings) -> None:
     state.player_direction = action
 
 
-def grow_plants(state: State) -> None:
-    """Growing plants (level 0) age by one (a free slot's age stays 0); at ``PLANT_RIPE_AGE``
-    their block is a ripe plant."""
-    mask = state.growing_plants_mask
-    age = state.growing_plants_age
-    if not mask.tobytes().strip(b"\x00"):          # no plant growing (the common case)
-        if age.tobytes().strip(b"\x00"):
-            age[:] = 0
-        return
-    age += 1
-    age *= mask
-    if age.max() >= PLANT_RIPE_AGE:
-        for i in np.flatnonzero(age >= PLANT_RIPE_AGE):
-            r, c = state.growing_plants_positions[i]
-            state.map[0, r, c] = _RIPE
-
-
-def update_intrinsics(state: State, action: int, settings) -> None:
-    """Sleep and rest start and end; hunger, thirst and fatigue accumulate (slower with
-    dexterity, hunger and thirst at half speed asleep) and cost food, drink, energy at their
-    limits; sleep restores energy; health recovers while food, drink and energy (or sleep) last
-    and is lost otherwise; mana recovers (faster with intelligence, double asleep). In the boss
-    fight the needs do not fall and health is not lost. ``settings.intrinsics`` off stops the
-    drains: hunger, thirst and an awake player's fatigue no longer grow, so food, drink and
-    energy never fall; sleep still restores energy (and so ends), health and mana still
-    recover."""
-    # (the fields are read once into locals and written once: this runs every step)
-    dex, strength = state.player_dexterity, state.player_strength
-    top_energy, top_health = max_energy(dex), max_health(strength)
-    asleep = state.is_sleeping
-    if action == _SLEEP and state.player_energy < top_energy:
-        asleep = state.is_sleeping = True
-    if asleep and state.player_energy >= top_energy:
-        asleep = state.is_sleeping = False
-        unlock(state, _WAKE_UP)
-    food, drink = state.player_food, state.player_drink
-    if action == _REST and state.player_health < top_health:
-        state.is_resting = True
-    if state.is_resting and (state.player_health >= top_health or food <= 0 or drink <= 0):
-        state.is_resting = False
-
-    fall = 0 if state.player_level == BOSS_LEVEL else 1
-    decay = 1.0 - DEXTERITY_DECAY * (dex - 1)
-    if settings.intrinsics:
-        rate = (SLEEP_INTRINSIC_RATE if asleep else 1.0) * decay
-        hunger = state.player_hunger + rate
-        if hunger > HUNGER_LIMIT:
-            food = state.player_food = max(food - fall, 0)
-            hunger = 0.0
-        state.player_hunger = hunger
-        thirst = state.player_thirst + rate
-        if thirst > THIRST_LIMIT:
-            drink = state.player_drink = max(drink - fall, 0)
-            thirst = 0.0
-        state.player_thirst = thirst
-    if settings.intrinsics or asleep:      # (asleep, fatigue only falls: energy only grows)
-        energy = state.player_energy
-        fatigue = min(state.player_fatigue - 1, 0) if asleep else state.player_fatigue + decay
-        if fatigue > FATIGUE_LIMIT:
-            state.player_energy = max(energy - fall, 0)
-            fatigue = 0.0
-        if fatigue < FATIGUE_RESTED:
-            state.player_energy = min(energy + 1, top_energy)
-            fatigue = 0.0
-        state.player_fatigue = float(fatigue)
-
-    if food > 0 and drink > 0 and (state.player_energy > 0 or asleep):   # the needs are met
-        recover = state.player_recover + RECOVER_RATE[asleep]
-    else:
-        recover = state.player_recover + DERECOVER_RATE[asleep] * fall
-    if recover > RECOVER_LIMIT:
-        state.player_health = min(state.player_health + 1, top_health)
-        recover = 0.0
-    if recover < DERECOVER_LIMIT:
-        state.player_health = state.player_health - 1
-        recover = 0.0
-    state.player_recover = recover
-
-    mana = (state.player_recover_mana + MANA_RATE[asleep]) * (
-        1 + INTELLIGENCE_MANA_BONUS * (state.player_intelligence - 1))
-    if mana > MANA_LIMIT:
-        state.player_mana += 1
-        mana = 0.0
-    state.player_recover_mana = float(mana)
-
-
-_COUNTS = ("wood", "stone", "coal", "iron", "diamond", "sapling", "pickaxe", "sword", "bow",
-           "arrows", "torches", "ruby", "sapphire", "books")
-
-
-def clip_vitals(state: State, settings) -> None:
-    """Inventory counts at most 99; vitals within [0, maximum] (the maxima grow with the
-    attributes); god mode keeps health at least 9."""
-    inv = state.inventory
-    if max(inv.wood, inv.stone, inv.coal, inv.iron, inv.diamond, inv.sapling, inv.arrows,
-           inv.torches, inv.ruby, inv.sapphire, inv.books, inv.pickaxe, inv.sword,
-           inv.bow) > STACK_LIMIT:
-        for name in _COUNTS:
-            if getattr(inv, name) > STACK_LIMIT:
-                setattr(inv, name, STACK_LIMIT)
-    # (armour is at most 2; potions only grow in chests, whose loot clips them)
-    dex = state.player_dexterity
-    low = GOD_MODE_MIN_HEALTH if settings.god_mode else 0
-    health, top = state.player_health, max_health(state.player_strength)
-    if health < low or health > top:
-        state.player_health = float(min(max(health, low), top))
-    top = max_food(dex)    # = max_drink(dex) = max_energy(dex)
-    if not (0 <= state.player_food <= top):
-        state.player_food = min(max(state.player_food, 0), top)
-    if not (0 <= state.player_drink <= top):
-        state.player_drink = min(max(state.player_drink, 0), top)
-    if not (0 <= state.player_energy <= top):
-        state.player_energy = min(max(state.player_energy, 0), top)
-    top = max_mana(state.player_intelligence)
-    if not (0 <= state.player_mana <= top):
-        state.player_mana = min(max(state.player_mana, 0), top)
-
-
-_INVENTORY_NAMES = tuple(dict.fromkeys(name for name, _, _ in INVENTORY_ACHIEVEMENTS))
-# (index into the held counts, at least, achievement)
-_INVENTORY_ACHIEVEMENTS = tuple((_INVENTORY_NAMES.index(name), least, int(a))
-                                for name, least, a in INVENTORY_ACHIEVEMENTS)
-# the held counts of ``_INVENTORY_NAMES`` -> the achievements they earn (``inventory_achievements``)
-_EARNED: dict[tuple, tuple[int, ...]] = {}
-
-
-def inventory_achievements(state: State) -> None:
-    """Collecting and crafting achievements read off the inventory (``INVENTORY_ACHIEVEMENTS``),
-    so a tool found in a chest counts as made. (What a tuple of counts earns is remembered: the
-    inventory changes on few turns.)"""
-    inv = state.inventory
-    held = (inv.wood, inv.stone, inv.coal, inv.iron, inv.diamond, inv.ruby, inv.sapphire,
-            inv.sapling, inv.bow, inv.arrows, inv.torches, inv.pickaxe, inv.sword)
-    earned = _EARNED.get(held)
-    if earned is None:
-        if len(_EARNED) >= 4096:
-            _EARNED.clear()
-        earned = _EARNED[held] = tuple(a for i, least, a in _INVENTORY_ACHIEVEMENTS
-                                       if held[i] >= least)
-    if earned:
-        ach = state.achievements
-        for achievement in earned:
-            ach[achievement] = True
-
-
-assert _INVENTORY_NAMES == ("wood", "stone", "coal", "iron", "diamond", "ruby", "sapphire",
-                            "sapling", "bow", "arrows", "torches", "pickaxe", "sword")
-
-
-_CRAFT = frozenset(RECIPE_BY_ACTION)
-_PLACE = frozenset(_PLACING)
-_SHOOT = int(Action.SHOOT_ARROW)
-_CAST = frozenset(_SPELLS)
-_POTION = frozenset(_POTION_INDEX)
-_READ = int(Action.READ_BOOK)
-_ENCHANT = frozenset(int(a) for a in (Action.ENCHANT_SWORD, Action.ENCHANT_ARMOUR,
-                                      Action.ENCHANT_BOW))
-_LEVEL_UP = frozenset(_ATTRIBUTES)
-
-
-def daylight(timestep: int, settings) -> float:
-    """The light level at ``timestep``: upstream's daylight, or full day with the cycle off."""
-    return light_level(timestep, settings.day_length) if settings.daylight else 1.0
+# each action's own rule (one dict look-up per step instead of a chain of set tests); moves
+# and level-ups come after the boss rule, as upstream's
+_DO_RULE, _CRAFT_RULE, _PLACE_RULE, _SHOOT_RULE, _CAST_RULE, _POTION_RULE, _READ_RULE, \
+    _ENCHANT_RULE, _LEVEL_UP_RULE, _MOVE_RULE = range(1, 11)
+_RULE = ({_DO: _DO_RULE, int(Action.SHOOT_ARROW): _SHOOT_RULE, int(Action.READ_BOOK): _READ_RULE}
+         | dict.fromkeys(RECIPE_BY_ACTION, _CRAFT_RULE) | dict.fromkeys(_PLACING, _PLACE_RULE)
+         | dict.fromkeys(_SPELLS, _CAST_RULE) | dict.fromkeys(_POTION_INDEX, _POTION_RULE)
+         | dict.fromkeys((int(a) for a in (Action.ENCHANT_SWORD, Action.ENCHANT_ARMOUR,
+                                           Action.ENCHANT_BOW)), _ENCHANT_RULE)
+         | dict.fromkeys(_ATTRIBUTES, _LEVEL_UP_RULE) | dict.fromkeys(MOVES, _MOVE_RULE))
+_LADDERS = (_DESCEND, _ASCEND)
 
 
 def step(state: State, action: int, settings, draws, after_mobs=None) -> float:
     """One upstream step (see the module docstring); returns upstream's reward. ``after_mobs``,
     if given, is called with the state after the mobs moved and before any spawn (a task
     counting kills looks at the mob slots then, before a spawn can reuse one)."""
-    before = state.achievements.tobytes()
+    achievements = state.achievements
+    before = achievements.tobytes()
     health = state.player_health
     action = int(action)
     if state.is_sleeping or state.is_resting:
         action = _NOOP
 
-    change_floor(state, action, settings)
-    if action in _CRAFT:
-        craft(state, action)
-    elif action == _DO:
+    if state.player_level or action in _LADDERS:     # (on the surface it has nothing else to do)
+        change_floor(state, action, settings)
+    rule = _RULE.get(action, 0)
+    if not rule or rule >= _LEVEL_UP_RULE:
+        pass        # (NOOP, SLEEP, REST, the ladders, or a rule that comes after the boss's)
+    elif rule == _DO_RULE:
         do(state, settings, draws)
-    elif action in _PLACE:
+    elif rule == _CRAFT_RULE:
+        craft(state, action)
+    elif rule == _PLACE_RULE:
         place(state, action)
-    elif action == _SHOOT:
+    elif rule == _SHOOT_RULE:
         shoot_arrow(state)
-    elif action in _CAST:
+    elif rule == _CAST_RULE:
         cast_spell(state, action)
-    elif action in _POTION:
+    elif rule == _POTION_RULE:
         drink_potion(state, action)
-    elif action == _READ:
+    elif rule == _READ_RULE:
         read_book(state, draws)
-    elif action in _ENCHANT:
+    elif rule == _ENCHANT_RULE:
         enchant(state, action, draws)
     if state.player_level == BOSS_LEVEL or state.boss_progress >= BOSS_LEVEL:
         mobs.boss_logic(state)      # (elsewhere, before the boss is beaten, it does nothing)
-    if action in _LEVEL_UP:
-        level_up(state, action, settings)
-    if action in MOVES:
+    if rule == _MOVE_RULE:
         move(state, action, settings)
+    elif rule == _LEVEL_UP_RULE:
+        level_up(state, action, settings)
 
     mobs.update(state, settings, draws)
     if after_mobs is not None:
@@ -662,9 +523,9 @@ def step(state: State, action: int, settings, draws, after_mobs=None) -> float:
     inventory_achievements(state)
 
     reward = 0.0
-    if state.achievements.tobytes() != before:
+    if achievements.tobytes() != before:
         old = np.frombuffer(before, dtype=bool)
-        reward = float(_WEIGHTS[state.achievements & ~old].sum())
+        reward = float(_WEIGHTS[achievements & ~old].sum())
     reward += (state.player_health - health) * 0.1
     state.timestep += 1
     state.light_level = daylight(state.timestep, settings)

@@ -52,6 +52,9 @@ def parse_test(text: str, tally) -> Callable:
     if len(clauses) == 1:
         (get, op, n), = clauses
         return lambda t: op(get(t), n)
+    if len(clauses) == 2:       # (written out: a term's test may be asked every step)
+        (get, op, n), (get2, op2, n2) = clauses
+        return lambda t: op(get(t), n) and op2(get2(t), n2)
     return lambda t: all(op(get(t), n) for get, op, n in clauses)
 
 
@@ -74,12 +77,11 @@ class Term:
     def counter(self, fn) -> Callable:
         """``units`` as one function of the tally, made once (the task pays every step)."""
         per, cap = self.per, self.cap
+        if not self.counts:         # a test (its function gives a bool): one unit while it holds
+            return lambda tally: 1 if fn(tally) else 0
 
-        def units(tally) -> int:
-            value = fn(tally)
-            if isinstance(value, bool):
-                return int(value)
-            return min(int(value) // per, cap)
+        def units(tally) -> int:    # (a counter: a number, never a bool)
+            return min(int(fn(tally)) // per, cap)
         return units
 
     @property
@@ -492,13 +494,14 @@ class Scenario:
         return state, ctx
 
     def run_events(self, task, state, tally) -> None:
-        """After each step: waiting mobs take free slots; events whose test now holds run once
-        (``task.ctx``, ``task.play_rng`` and ``task.fired`` are the episode's)."""
+        """After each step: waiting mobs take free slots; events whose test holds run once (the
+        ``task`` keeps them); a steady test only when ``tally.changes`` moved (``task.Tally``)."""
         ctx, rng = task.ctx, task.play_rng
         if ctx.reserve:
             ctx.admit(state, rng)
-        for i, (event, when) in enumerate(task.events):
-            if i not in task.fired and when(tally):
+        fresh, task.events_at = tally.changes != task.events_at, tally.changes
+        for i, (event, when, steady) in enumerate(task.events):
+            if (fresh or not steady) and i not in task.fired and when(tally):
                 task.fired.add(i)
                 ctx.r0, ctx.c0 = (int(v) for v in state.player_position)
                 ctx.settle()
@@ -546,9 +549,7 @@ class Scenario:
         key = (keys, values, tuple(map(type, values)))    # (1 and 1.0 and True print apart)
         text = _PROGRESS.get(key)
         if text is None:
-            labels = _LABELS.get(keys)
-            if labels is None:
-                labels = _LABELS[keys] = tuple(k.split('.')[-1].capitalize() for k in keys)
+            labels = [k.split('.')[-1].capitalize() for k in keys]
             if len(_PROGRESS) >= 10_000:
                 _PROGRESS.clear()
             text = _PROGRESS[key] = " ".join([f"{label} {_fmt(v)}" for label, v in zip(labels, values)])
@@ -563,7 +564,6 @@ class Scenario:
             tally.getter(key)
 
 
-_LABELS: dict[tuple, tuple] = {}      # progress keys -> their HUD labels
 _PROGRESS: dict[tuple, str] = {}     # progress keys, values, their types -> the text
 
 

@@ -10,6 +10,7 @@ changes a rule of the game: upstream's native reward is not paid; the scenario's
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -53,6 +54,12 @@ PLACED = {Action.PLACE_STONE: BlockType.STONE, Action.PLACE_TABLE: BlockType.CRA
 CASTS = frozenset(int(a) for a in (Action.CAST_FIREBALL, Action.CAST_ICEBALL))
 DRINKS = frozenset(range(Action.DRINK_POTION_RED, Action.DRINK_POTION_YELLOW + 1))
 _PLACE_TORCH, _RED = int(Action.PLACE_TORCH), int(Action.DRINK_POTION_RED)   # (ints: read each step)
+# the actions whose effect the tally finds by a difference (one look-up a step): a placement
+# (the block placed and its counter name), a torch, a potion, a spell
+_PLACING, _TORCH, _DRINKING, _CASTING = range(1, 5)
+_WATCHED = ({int(a): _PLACING for a in PLACED} | {_PLACE_TORCH: _TORCH}
+            | dict.fromkeys(DRINKS, _DRINKING) | dict.fromkeys(CASTS, _CASTING))
+_PLACED = {int(a): (int(b), b.name.lower()) for a, b in PLACED.items()}
 POTION_EFFECTS = ("heal", "harm", "mana", "drain", "energy", "tire")   # upstream's effect order
 
 
@@ -66,7 +73,15 @@ class Tally:
     ``enchant.sword``, ``spells``, ``gate`` (the level's kill count toward its ladder), ``boss``.
 
     ``getter(key)`` compiles a counter to a function of the tally, once; a step only updates the
-    few running counts (items got, kills, placements), so a test costs a few attribute reads."""
+    few running counts (items got, kills, placements), so a test costs a few attribute reads.
+
+    ``changes`` counts the steps after which a *steady* counter (``steady``) differed from what it
+    was after the step before: the counts the tally keeps (``kept``: all but ``turn`` and
+    ``night``), and ``holds.X`` (not armour), ``level`` and ``done.X``, read off the state (which
+    scenario events do not edit). A test asked right after a step that reads only steady
+    counters gives what it gave when ``changes`` was last the same, so it need not be asked
+    again (``CraftaxTask._score``, ``run_events``); the HUD's progress, made whenever asked, may
+    do so only for kept counts (the state may have been edited since the step)."""
 
     def __init__(self, state) -> None:
         self.state = state
@@ -78,6 +93,9 @@ class Tally:
         self.potions = dict.fromkeys(POTION_EFFECTS, 0)
         self._held = self._holdings(state)
         self._getters: dict = {}       # key -> getter, compiled once (``value``)
+        self.changes = 0
+        self._last_level, self._last_kills = state.player_level, 0     # after the last step
+        self._achieved = None     # the achievements' bytes after the last step (a test reads one)
 
     @staticmethod
     def _holdings(state) -> tuple:
@@ -112,10 +130,31 @@ class Tally:
             return lambda t: t.potions[tail]
         if head == "done" and tail.upper() in Achievement.__members__:
             index = Achievement[tail.upper()].value
-            return lambda t: int(t.state.achievements[index])
+            if self._achieved is None:      # (a test reads achievements: each step compares them)
+                self._achieved = b""
+            return lambda t: int(t.state.achievements.item(index))
         if key == "enchant.sword":
             return lambda t: t.state.sword_enchantment
         raise KeyError(f"unknown Craftax counter {key!r} (see task.Tally)")
+
+    @staticmethod
+    def kept(key: str) -> bool:
+        """``key`` is a count the tally keeps that only a step bumping ``changes`` changes."""
+        return (key.partition(".")[0] in ("got", "kills", "placed", "potion")
+                or key in ("ate", "drank", "cast", "deepest"))
+
+    @classmethod
+    def steady(cls, key: str) -> bool:
+        """``key`` is kept, or read off the state and followed by ``changes`` (see the class)."""
+        head, _, tail = key.partition(".")
+        return (cls.kept(key) or head == "done" or (head == "holds" and tail in ITEMS)
+                or key == "level")
+
+    def steady_test(self, text: str) -> bool:
+        """A scenario test (``"got.wood >= 3 and level >= 1"``) or bare counter reads only steady
+        counters: its value changes only in a step that bumps ``changes``."""
+        return all(self.steady(key) for key in re.findall(r"[a-z_][a-z0-9_.]*", text)
+                   if key != "and")
 
     def value(self, key: str) -> float:
         get = self._getters.get(key)
@@ -131,11 +170,12 @@ class Tally:
         self._level = level = state.player_level
         self._masks = [*state.passive_mobs.mask[level], *state.melee_mobs.mask[level],
                        *state.ranged_mobs.mask[level]]
-        if action in PLACED:
+        watched = _WATCHED.get(action)
+        if watched == _PLACING:
             self._ahead = self._facing_block(state)
-        elif action == _PLACE_TORCH:
+        elif watched == _TORCH:
             self._torches = state.inventory.torches
-        elif action in DRINKS:
+        elif watched == _DRINKING:
             self._potions = state.inventory.potions.copy()
 
     @staticmethod
@@ -173,34 +213,63 @@ class Tally:
     def after_step(self, state, action: int) -> None:
         counts = self.counts
         counts["turn"] += 1
-        held = self._holdings(state)
+        changed = False          # a steady counter changed (``changes``)
+        inv = state.inventory    # (``_holdings``, written out: this runs every step)
+        held = (inv.wood, inv.stone, inv.coal, inv.iron, inv.diamond, inv.sapling, inv.ruby,
+                inv.sapphire, inv.arrows, inv.torches, inv.books, inv.pickaxe, inv.sword, inv.bow)
         if held != self._held:
             for k, old, new in zip(ITEMS, self._held, held):
                 if new > old:
                     self.got[k] += new - old
             self._held = held
+            changed = True
         food, drink, mana = self._vitals
         if state.player_food > food:
             counts["ate"] += 1
+            changed = True
         if state.player_drink > drink:
             counts["drank"] += 1
-        if action in CASTS and state.player_mana < mana:
-            counts["cast"] += 1
-        if action in PLACED:
-            block = PLACED[action]
+            changed = True
+        watched = _WATCHED.get(action)
+        if watched is None:
+            pass
+        elif watched == _CASTING:
+            if state.player_mana < mana:
+                counts["cast"] += 1
+                changed = True
+        elif watched == _PLACING:
+            block, name = _PLACED[action]
             if self._ahead != block and self._facing_block(state) == block:
-                self.placed[block.name.lower()] += 1
-        elif action == _PLACE_TORCH:
+                self.placed[name] += 1
+                changed = True
+        elif watched == _TORCH:
             if state.inventory.torches < self._torches:
                 self.placed["torch"] += 1
-        elif action in DRINKS:
+                changed = True
+        else:
             colour = action - _RED
             if state.inventory.potions[colour] < self._potions[colour]:
                 self.potions[POTION_EFFECTS[int(state.potion_mapping[colour])]] += 1
-        if state.player_level == 0 and state.light_level < NIGHT_LIGHT:
+                changed = True
+        if self.kills["all"] != self._last_kills:      # (every kill counts in "all")
+            self._last_kills = self.kills["all"]
+            changed = True
+        level = state.player_level
+        if level == 0 and state.light_level < NIGHT_LIGHT:
             counts["night"] += 1
-        if state.player_level > counts["deepest"]:
-            counts["deepest"] = state.player_level
+        if level != self._last_level:
+            self._last_level = level
+            changed = True
+        if level > counts["deepest"]:
+            counts["deepest"] = level
+            changed = True
+        if self._achieved is not None:
+            achieved = state.achievements.tobytes()
+            if achieved != self._achieved:
+                self._achieved = achieved
+                changed = True
+        if changed:
+            self.changes += 1
 
 
 @dataclass(frozen=True)
@@ -236,27 +305,40 @@ class CraftaxTask(GlyphTask):
         self.state, self.ctx = self.scenario.build(rng)
         self.play_rng = self.stream("scenario")
         self.tally = Tally(self.state)
+        tally, scenario = self.tally, self.scenario
         # (term, its units as a function of the tally, units paid); a term drops out once it
-        # can pay no more
-        self._open = [[term, term.counter(parse_test(term.test, self.tally)), 0]
-                      for term in self.scenario.terms]
-        self._success = parse_test(self.scenario.success, self.tally) if self.scenario.success else None
-        self.events = [(e, parse_test(e.when, self.tally)) for e in self.scenario.events]
+        # can pay no more. ``_live``: those that read a counter that is not steady (Tally)
+        self._open = [[term, term.counter(parse_test(term.test, tally)), 0]
+                      for term in scenario.terms]
+        self._live = [e for e in self._open if not tally.steady_test(e[0].test)]
+        self._success = parse_test(scenario.success, tally) if scenario.success else None
+        self._success_live = bool(scenario.success) and not tally.steady_test(scenario.success)
+        self.events = [(e, parse_test(e.when, tally), tally.steady_test(e.when))
+                       for e in scenario.events]
         self.fired: set[int] = set()             # scenario events already run
+        self._scored_at = self.events_at = None  # ``tally.changes`` when last scored, events run
+        # the HUD's progress and the ``tally.changes`` it was made at, when its keys are steady
+        self._goal: tuple | None = None
+        self._goal_steady = all(tally.kept(k) for k in scenario.progress_keys)
 
     def _act(self, action: int) -> None:
         state, tally = self.state, self.tally
         tally.before_step(state, action)
         native = rules.step(state, action, self.settings, self.draws, after_mobs=tally.after_mobs)
         tally.after_step(state, action)
-        self.scenario.run_events(self, state, tally)
+        if self.events or self.ctx.reserve:     # (most scenarios have neither)
+            self.scenario.run_events(self, state, tally)
         self._score(state, tally, native)
 
     def _score(self, state, tally: Tally, native: float) -> None:
         """Pay the scenario's terms (``native``, upstream's reward for the step, is not paid
-        here) and end the episode on death or success."""
+        here) and end the episode on death or success. Unless a steady counter changed since
+        the last step (``tally.changes``), only the terms and success test that read other
+        counters are asked: the others give what they gave."""
+        fresh = tally.changes != self._scored_at
+        self._scored_at = tally.changes
         finished = False
-        for entry in self._open:
+        for entry in self._open if fresh else self._live:
             term, count, paid = entry
             units = count(tally)
             if units > paid:
@@ -265,11 +347,12 @@ class CraftaxTask(GlyphTask):
                 finished = finished or units >= term.cap
         if finished:
             self._open = [e for e in self._open if e[2] < e[0].cap]
+            self._live = [e for e in self._live if e[2] < e[0].cap]
         if state.player_health <= 0:
             self.reward(self.scenario.death)
             self.say("You died.")
             self.finish(won=False)
-        elif self._success is not None and self._success(tally):
+        elif self._success is not None and (fresh or self._success_live) and self._success(tally):
             self.say(self.scenario.success_message)
             self.finish(won=True)
 
@@ -277,6 +360,9 @@ class CraftaxTask(GlyphTask):
         return view.rows(self.state)
 
     def _hud(self) -> str:
-        goal = self.scenario.progress(self.tally)   # (a few counters, formatted)
+        tally, goal = self.tally, self._goal
+        if goal is None or goal[0] != tally.changes or not self._goal_steady:
+            goal = self._goal = (tally.changes, self.scenario.progress(tally))  # (a few counters)
+        goal = goal[1]
         line = hud.hud(self.state, self.settings)
         return f"{line} | {goal}" if goal else line

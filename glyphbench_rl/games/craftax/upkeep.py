@@ -1,0 +1,196 @@
+"""The upkeep at the end of each Craftax step (upstream ``craftax_step``'s last sub-rules, in
+its order, called by ``rules.step``): ``grow_plants``, ``update_intrinsics``, ``clip_vitals``,
+``inventory_achievements``, and ``daylight``, the light level of the new timestep.
+
+They run every step whatever the action, so each reads its fields once into locals and returns
+early in the common case (no plant growing, vitals in range, an inventory seen before).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .state import State
+from .tables import (
+    BOSS_LEVEL, DERECOVER_LIMIT, DERECOVER_RATE, DEXTERITY_DECAY, FATIGUE_LIMIT, FATIGUE_RESTED,
+    GOD_MODE_MIN_HEALTH, HUNGER_LIMIT, INTELLIGENCE_MANA_BONUS, INVENTORY_ACHIEVEMENTS,
+    MANA_LIMIT, MANA_RATE, PLANT_RIPE_AGE, RECOVER_LIMIT, RECOVER_RATE, SLEEP_INTRINSIC_RATE,
+    STACK_LIMIT, THIRST_LIMIT, Achievement, Action, BlockType, light_level, max_energy, max_food,
+    max_health, max_mana,
+)
+
+_RIPE = int(BlockType.RIPE_PLANT)
+_SLEEP, _REST = int(Action.SLEEP), int(Action.REST)
+_WAKE_UP = int(Achievement.WAKE_UP)
+
+
+def grow_plants(state: State) -> None:
+    """Growing plants (level 0) age by one (a free slot's age stays 0); at ``PLANT_RIPE_AGE``
+    their block is a ripe plant."""
+    mask = state.growing_plants_mask
+    age = state.growing_plants_age
+    if not (mask.tobytes() + age.tobytes()).strip(b"\x00"):
+        return          # (no plant growing and every age 0, the common case: nothing changes)
+    age += 1
+    age *= mask
+    if age.max() >= PLANT_RIPE_AGE:
+        for i in np.flatnonzero(age >= PLANT_RIPE_AGE):
+            r, c = state.growing_plants_positions[i]
+            state.map[0, r, c] = _RIPE
+
+
+def update_intrinsics(state: State, action: int, settings) -> None:
+    """Sleep and rest start and end; hunger, thirst and fatigue accumulate (slower with
+    dexterity, hunger and thirst at half speed asleep) and cost food, drink, energy at their
+    limits; sleep restores energy; health recovers while food, drink and energy (or sleep) last
+    and is lost otherwise; mana recovers (faster with intelligence, double asleep). In the boss
+    fight the needs do not fall and health is not lost. ``settings.intrinsics`` off stops the
+    drains: hunger, thirst and an awake player's fatigue no longer grow, so food, drink and
+    energy never fall; sleep still restores energy (and so ends), health and mana still
+    recover."""
+    # (the fields are read once into locals and written once: this runs every step)
+    dex, energy = state.player_dexterity, state.player_energy
+    top_energy = max_energy(dex)
+    asleep = state.is_sleeping
+    if action == _SLEEP and energy < top_energy:
+        asleep = state.is_sleeping = True
+    if asleep and energy >= top_energy:
+        asleep = state.is_sleeping = False
+        state.achievements[_WAKE_UP] = True
+    food, drink, health = state.player_food, state.player_drink, state.player_health
+    top_health = max_health(state.player_strength)
+    if action == _REST and health < top_health:
+        state.is_resting = True
+    if state.is_resting and (health >= top_health or food <= 0 or drink <= 0):
+        state.is_resting = False
+
+    fall = 0 if state.player_level == BOSS_LEVEL else 1
+    decay = 1.0 - DEXTERITY_DECAY * (dex - 1)
+    intrinsics = settings.intrinsics
+    if intrinsics:
+        rate = (SLEEP_INTRINSIC_RATE if asleep else 1.0) * decay
+        hunger = state.player_hunger + rate
+        if hunger > HUNGER_LIMIT:
+            food = state.player_food = max(food - fall, 0)
+            hunger = 0.0
+        state.player_hunger = hunger
+        thirst = state.player_thirst + rate
+        if thirst > THIRST_LIMIT:
+            drink = state.player_drink = max(drink - fall, 0)
+            thirst = 0.0
+        state.player_thirst = thirst
+    if intrinsics or asleep:      # (asleep, fatigue only falls: energy only grows)
+        fatigue = min(state.player_fatigue - 1, 0) if asleep else state.player_fatigue + decay
+        if fatigue > FATIGUE_LIMIT:
+            state.player_energy = max(energy - fall, 0)
+            fatigue = 0.0
+        if fatigue < FATIGUE_RESTED:
+            state.player_energy = min(energy + 1, top_energy)
+            fatigue = 0.0
+        state.player_fatigue = float(fatigue)
+
+    if food > 0 and drink > 0 and (state.player_energy > 0 or asleep):   # the needs are met
+        recover = state.player_recover + RECOVER_RATE[asleep]
+    else:
+        recover = state.player_recover + DERECOVER_RATE[asleep] * fall
+    if recover > RECOVER_LIMIT:
+        state.player_health = min(health + 1, top_health)
+        recover = 0.0
+    if recover < DERECOVER_LIMIT:
+        state.player_health = health - 1
+        recover = 0.0
+    state.player_recover = recover
+
+    mana = (state.player_recover_mana + MANA_RATE[asleep]) * (
+        1 + INTELLIGENCE_MANA_BONUS * (state.player_intelligence - 1))
+    if mana > MANA_LIMIT:
+        state.player_mana += 1
+        mana = 0.0
+    state.player_recover_mana = float(mana)
+
+
+# the inventory's counts (every one at most STACK_LIMIT), those ``INVENTORY_ACHIEVEMENTS``
+# reads first, in its order
+_INVENTORY_NAMES = tuple(dict.fromkeys(name for name, _, _ in INVENTORY_ACHIEVEMENTS))
+_COUNTS = _INVENTORY_NAMES + ("books",)
+# (index into the held counts, at least, achievement)
+_INVENTORY_ACHIEVEMENTS = tuple((_INVENTORY_NAMES.index(name), least, int(a))
+                                for name, least, a in INVENTORY_ACHIEVEMENTS)
+
+
+# held counts (``_COUNTS`` order) -> (some count is over STACK_LIMIT, the achievements they
+# earn, those as a mask of the bits ``int.from_bytes(achievements.tobytes(), "little")`` has).
+# The inventory changes on few turns, so ``clip_vitals`` and ``inventory_achievements`` mostly
+# look the counts up here.
+_FACTS: dict[tuple, tuple[bool, tuple[int, ...], int]] = {}
+
+
+def _facts(held: tuple) -> tuple[bool, tuple[int, ...], int]:
+    """``_FACTS[held]``, made the first time."""
+    if len(_FACTS) >= 4096:
+        _FACTS.clear()
+    earned = tuple(a for i, least, a in _INVENTORY_ACHIEVEMENTS if held[i] >= least)
+    facts = _FACTS[held] = (max(held) > STACK_LIMIT, earned, sum(1 << 8 * a for a in earned))
+    return facts
+
+
+def clip_vitals(state: State, settings) -> None:
+    """Inventory counts at most 99; vitals within [0, maximum] (the maxima grow with the
+    attributes); god mode keeps health at least 9."""
+    inv = state.inventory
+    held = (inv.wood, inv.stone, inv.coal, inv.iron, inv.diamond, inv.ruby, inv.sapphire,
+            inv.sapling, inv.bow, inv.arrows, inv.torches, inv.pickaxe, inv.sword, inv.books)
+    if (_FACTS.get(held) or _facts(held))[0]:
+        for name in _COUNTS:
+            if getattr(inv, name) > STACK_LIMIT:
+                setattr(inv, name, STACK_LIMIT)
+    # (armour is at most 2; potions only grow in chests, whose loot clips them)
+    dex = state.player_dexterity
+    low = GOD_MODE_MIN_HEALTH if settings.god_mode else 0
+    health, top = state.player_health, max_health(state.player_strength)
+    if health < low or health > top:
+        state.player_health = float(min(max(health, low), top))
+    top = max_food(dex)    # = max_drink(dex) = max_energy(dex)
+    food, drink, energy = state.player_food, state.player_drink, state.player_energy
+    if not (0 <= food <= top and 0 <= drink <= top and 0 <= energy <= top):
+        state.player_food = min(max(food, 0), top)
+        state.player_drink = min(max(drink, 0), top)
+        state.player_energy = min(max(energy, 0), top)
+    mana, top = state.player_mana, max_mana(state.player_intelligence)
+    if not (0 <= mana <= top):
+        state.player_mana = min(max(mana, 0), top)
+
+
+def inventory_achievements(state: State) -> None:
+    """Collecting and crafting achievements read off the inventory (``INVENTORY_ACHIEVEMENTS``),
+    so a tool found in a chest counts as made. (What the counts earn is looked up, and written
+    only when one of them is missing.)"""
+    inv = state.inventory
+    held = (inv.wood, inv.stone, inv.coal, inv.iron, inv.diamond, inv.ruby, inv.sapphire,
+            inv.sapling, inv.bow, inv.arrows, inv.torches, inv.pickaxe, inv.sword, inv.books)
+    _, earned, mask = _FACTS.get(held) or _facts(held)
+    ach = state.achievements
+    if mask and mask & ~int.from_bytes(ach.tobytes(), "little"):
+        for achievement in earned:
+            ach[achievement] = True
+
+
+assert _COUNTS == ("wood", "stone", "coal", "iron", "diamond", "ruby", "sapphire", "sapling", "bow",
+                   "arrows", "torches", "pickaxe", "sword", "books")
+
+
+_DAYLIGHT: dict[int, dict[int, float]] = {}     # day length -> timestep -> light_level
+
+
+def daylight(timestep: int, settings) -> float:
+    """The light level at ``timestep``: upstream's daylight, or full day with the cycle off.
+    (Remembered: a cosine and a cube each step otherwise.)"""
+    if not settings.daylight:
+        return 1.0
+    day = _DAYLIGHT.get(settings.day_length)
+    if day is None or len(day) >= 10_000:
+        day = _DAYLIGHT[settings.day_length] = {}
+    light = day.get(timestep)
+    if light is None:
+        light = day[timestep] = light_level(timestep, settings.day_length)
+    return light
