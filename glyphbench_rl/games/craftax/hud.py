@@ -105,17 +105,12 @@ def _remembered(memo: dict, key: tuple, make, state: State):
 
 def _hud(state: State) -> str:
     """The HUD made from the state (nothing remembered)."""
-    parts = [_head(state), _where(state)]
+    parts = [_vitals(state) + _kit(state), _where(state)]
     if state.is_sleeping:
         parts.append("Sleeping")
     elif state.is_resting:
         parts.append("Resting")
     return " | ".join(parts)
-
-
-def _head(state: State) -> str:
-    """The HUD's vitals, inventory, gear, potions, spells and attributes."""
-    return _vitals(state) + _kit(state)
 
 
 def _vitals(state: State) -> str:

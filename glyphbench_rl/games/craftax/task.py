@@ -23,6 +23,7 @@ from . import hud, rules, view
 from .bestiary import MOB_NAMES
 from .scenarios import SCENARIOS, Scenario, parse_test
 from .tables import NIGHT_LIGHT, Achievement, Action, BlockType
+from .upkeep import COUNTS, held_counts
 
 SINGLE = [
     ("NOOP", "do nothing"),
@@ -46,9 +47,8 @@ GROUPS = [
 # numbered as upstream's Action (index i is Action(i)); the prompt groups similar actions
 ACTIONS = ActionSet(SINGLE, groups=GROUPS, noop="NOOP", order=[a.name for a in Action])
 
-# inventory fields the tally follows (counts; tools are tiers)
-ITEMS = ("wood", "stone", "coal", "iron", "diamond", "sapling", "ruby", "sapphire", "arrows",
-         "torches", "books", "pickaxe", "sword", "bow")
+# inventory fields the tally follows (counts; tools are tiers), in ``held_counts``' order
+ITEMS = COUNTS
 PLACED = {Action.PLACE_STONE: BlockType.STONE, Action.PLACE_TABLE: BlockType.CRAFTING_TABLE,
           Action.PLACE_FURNACE: BlockType.FURNACE, Action.PLACE_PLANT: BlockType.PLANT}
 CASTS = frozenset(int(a) for a in (Action.CAST_FIREBALL, Action.CAST_ICEBALL))
@@ -99,9 +99,7 @@ class Tally:
 
     @staticmethod
     def _holdings(state) -> tuple:
-        inv = state.inventory
-        return (inv.wood, inv.stone, inv.coal, inv.iron, inv.diamond, inv.sapling, inv.ruby,
-                inv.sapphire, inv.arrows, inv.torches, inv.books, inv.pickaxe, inv.sword, inv.bow)
+        return held_counts(state.inventory)
 
     def getter(self, key: str):
         head, _, tail = key.partition(".")
@@ -214,9 +212,7 @@ class Tally:
         counts = self.counts
         counts["turn"] += 1
         changed = False          # a steady counter changed (``changes``)
-        inv = state.inventory    # (``_holdings``, written out: this runs every step)
-        held = (inv.wood, inv.stone, inv.coal, inv.iron, inv.diamond, inv.sapling, inv.ruby,
-                inv.sapphire, inv.arrows, inv.torches, inv.books, inv.pickaxe, inv.sword, inv.bow)
+        held = held_counts(state.inventory)
         if held != self._held:
             for k, old, new in zip(ITEMS, self._held, held):
                 if new > old:

@@ -110,15 +110,26 @@ def update_intrinsics(state: State, action: int, settings) -> None:
 
 
 # the inventory's counts (every one at most STACK_LIMIT), those ``INVENTORY_ACHIEVEMENTS``
-# reads first, in its order
+# reads first, in its order; ``held_counts`` reads them (the tally too)
 _INVENTORY_NAMES = tuple(dict.fromkeys(name for name, _, _ in INVENTORY_ACHIEVEMENTS))
-_COUNTS = _INVENTORY_NAMES + ("books",)
+COUNTS = _INVENTORY_NAMES + ("books",)
 # (index into the held counts, at least, achievement)
 _INVENTORY_ACHIEVEMENTS = tuple((_INVENTORY_NAMES.index(name), least, int(a))
                                 for name, least, a in INVENTORY_ACHIEVEMENTS)
 
 
-# held counts (``_COUNTS`` order) -> (some count is over STACK_LIMIT, the achievements they
+def held_counts(inv) -> tuple:
+    """The inventory's ``COUNTS``, in that order. (Written out: it runs several times a step,
+    and attribute reads cost half of ``operator.attrgetter``'s.)"""
+    return (inv.wood, inv.stone, inv.coal, inv.iron, inv.diamond, inv.ruby, inv.sapphire,
+            inv.sapling, inv.bow, inv.arrows, inv.torches, inv.pickaxe, inv.sword, inv.books)
+
+
+assert COUNTS == ("wood", "stone", "coal", "iron", "diamond", "ruby", "sapphire", "sapling", "bow",
+                  "arrows", "torches", "pickaxe", "sword", "books")
+
+
+# held counts (``COUNTS`` order) -> (some count is over STACK_LIMIT, the achievements they
 # earn, those as a mask of the bits ``int.from_bytes(achievements.tobytes(), "little")`` has).
 # The inventory changes on few turns, so ``clip_vitals`` and ``inventory_achievements`` mostly
 # look the counts up here.
@@ -138,10 +149,9 @@ def clip_vitals(state: State, settings) -> None:
     """Inventory counts at most 99; vitals within [0, maximum] (the maxima grow with the
     attributes); god mode keeps health at least 9."""
     inv = state.inventory
-    held = (inv.wood, inv.stone, inv.coal, inv.iron, inv.diamond, inv.ruby, inv.sapphire,
-            inv.sapling, inv.bow, inv.arrows, inv.torches, inv.pickaxe, inv.sword, inv.books)
+    held = held_counts(inv)
     if (_FACTS.get(held) or _facts(held))[0]:
-        for name in _COUNTS:
+        for name in COUNTS:
             if getattr(inv, name) > STACK_LIMIT:
                 setattr(inv, name, STACK_LIMIT)
     # (armour is at most 2; potions only grow in chests, whose loot clips them)
@@ -166,17 +176,13 @@ def inventory_achievements(state: State) -> None:
     so a tool found in a chest counts as made. (What the counts earn is looked up, and written
     only when one of them is missing.)"""
     inv = state.inventory
-    held = (inv.wood, inv.stone, inv.coal, inv.iron, inv.diamond, inv.ruby, inv.sapphire,
-            inv.sapling, inv.bow, inv.arrows, inv.torches, inv.pickaxe, inv.sword, inv.books)
+    held = held_counts(inv)
     _, earned, mask = _FACTS.get(held) or _facts(held)
     ach = state.achievements
     if mask and mask & ~int.from_bytes(ach.tobytes(), "little"):
         for achievement in earned:
             ach[achievement] = True
 
-
-assert _COUNTS == ("wood", "stone", "coal", "iron", "diamond", "ruby", "sapphire", "sapling", "bow",
-                   "arrows", "torches", "pickaxe", "sword", "books")
 
 
 _DAYLIGHT: dict[int, dict[int, float]] = {}     # day length -> timestep -> light_level
