@@ -182,7 +182,7 @@ def test_steady_tests_asked_only_after_a_change_pay_and_end_as_asked_every_step(
 
 
 def test_tally_follows_the_holdings_it_writes_out():
-    """``after_step`` reads the counts written out in ``_holdings``' order."""
+    """``after_step`` keeps the holdings as ``_holdings`` reads them (``upkeep.held_counts``)."""
     task = make("glyphbench/craftax-choptrees-v0")
     task.reset(seed=0)
     rng = np.random.default_rng(9)
