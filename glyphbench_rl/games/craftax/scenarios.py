@@ -301,26 +301,20 @@ class Context:
         self.r0, self.c0 = (int(v) for v in state.player_position)
         self.floor = _floor_block(state)
         self.reserve: list[tuple[str, int, int]] = []
-        # the bounds of the draws owed to ``owed_rng``, in order: made before its next used draw
-        self.owed: list[int] = []
-        self.owed_rng = None
 
     def admit(self, state, rng) -> None:
-        """Each waiting mob, in turn, takes a random free cell in its ring (one draw whenever the
-        ring has a free cell, whether or not its class has a free slot). A ring's free cells are
-        found once and found again only after a mob was placed. The draws of mobs with no free
-        slot, whose values go unused, are owed: their bounds are kept, in order, and they are
-        made together with the next used one, which may be turns later, in one call
-        (``integers(0, bounds)`` advances the generator exactly as one ``integers(bound)`` call
-        a bound, in order; ``settle`` makes them before anything else draws)."""
+        """Each waiting mob, in turn, whose class has a free slot takes a random free cell in
+        its ring (one draw, when the ring has a free cell); the others wait, drawing nothing.
+        A ring's free cells are found once and found again only after a mob was placed."""
         waiting = []
         rings: dict[tuple[int, int], tuple] = {}
         groups = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)
         level = state.player_level
-        if self.owed_rng is not rng:
-            self.settle()
-            self.owed_rng = rng
         for name, dmin, dmax in self.reserve:
+            known = MOB_BY_NAME.get(name)
+            if known is not None and False not in groups[known[0]].mask[level]:
+                waiting.append((name, dmin, dmax))      # (no free slot: add_mob would refuse)
+                continue
             ring = rings.get((dmin, dmax))
             if ring is None:
                 ring = rings[dmin, dmax] = _free_cells(state, dmin, dmax, self.floor)
@@ -328,32 +322,12 @@ class Context:
             if not count:
                 waiting.append((name, dmin, dmax))
                 continue
-            known = MOB_BY_NAME.get(name)
-            if known is not None and False not in groups[known[0]].mask[level]:
-                waiting.append((name, dmin, dmax))      # (no free slot: add_mob would refuse)
-                self.owed.append(count)
-                continue
-            k = int(np.flatnonzero(np.frombuffer(ok, np.uint8))[self._draw(rng, count)])
+            k = int(np.flatnonzero(np.frombuffer(ok, np.uint8))[rng.integers(count)])
             if add_mob(state, name, (r0 + k // width, c0 + k % width)):
                 rings.clear()
             else:
                 waiting.append((name, dmin, dmax))
         self.reserve = waiting
-
-    def _draw(self, rng, bound: int) -> int:
-        """A draw below ``bound``, the draws owed made first (in the same call)."""
-        if not self.owed:
-            return int(rng.integers(bound))
-        self.owed.append(bound)
-        value = int(rng.integers(0, self.owed)[-1])
-        self.owed.clear()
-        return value
-
-    def settle(self) -> None:
-        """Make the draws owed (before another use of their generator), values unused."""
-        if self.owed:
-            self.owed_rng.integers(0, self.owed)
-            self.owed.clear()
 
 
 def _free_ring(state, dmin: int, dmax: int, floor: int):
@@ -490,7 +464,6 @@ class Scenario:
         ctx = Context(state)
         for edit in self.edits:
             edit.apply(state, rng, ctx)
-        ctx.settle()
         return state, ctx
 
     def run_events(self, task, state, tally) -> None:
@@ -504,7 +477,6 @@ class Scenario:
             if (fresh or not steady) and i not in task.fired and when(tally):
                 task.fired.add(i)
                 ctx.r0, ctx.c0 = (int(v) for v in state.player_position)
-                ctx.settle()
                 for edit in event.edits:
                     edit.apply(state, rng, ctx)
                 if event.says:

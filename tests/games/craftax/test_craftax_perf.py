@@ -2,6 +2,7 @@
 
 import numpy as np
 
+from glyphbench_rl.core import registry
 from glyphbench_rl.games.craftax import hud, scenarios, view, worldgen
 from glyphbench_rl.games.craftax.state import Settings
 
@@ -29,31 +30,31 @@ def test_free_ring_is_the_cell_list():
             assert cells == ok.astype(np.uint8).tobytes() and n == count and box == [r0, c0, width]
 
 
-def test_owed_draws_made_together_advance_the_generator_as_one_by_one():
-    """``Context``'s owed draws, made in one call with the next used draw (or by ``settle``):
-    the used value and the generator afterwards are those of one ``integers`` call a bound.
-    Bounds near 2**31 make Lemire's method reject draws often, bounds over 2**32 take the 64-bit
-    path; an odd number of 32-bit draws before leaves half a 64-bit output buffered."""
-    rng = np.random.default_rng(3)
-    for seed in range(60):
-        bounds = [int(b) for b in rng.choice([1, 2, 37, 400, 961, 2**31 + 1, 3 * 2**30, 2**32,
-                                              2**33 + 7], size=int(rng.integers(0, 9)))]
-        used = int(rng.choice([1, 37, 961, 2**31 + 1]))
-        a, b = np.random.default_rng(seed), np.random.default_rng(seed)
-        for _ in range(seed % 3):
-            a.integers(5), b.integers(5)
-        for bound in bounds:
-            a.integers(bound)
-        value = int(a.integers(used))
-        ctx = scenarios.Context.__new__(scenarios.Context)
-        ctx.owed, ctx.owed_rng = list(bounds), b
-        assert ctx._draw(b, used) == value and ctx.owed == []
-        assert a.integers(1 << 40) == b.integers(1 << 40) and a.random() == b.random()
-        for bound in bounds:                     # settle: the draws owed, no used one
-            a.integers(bound)
-        ctx.owed = list(bounds)
-        ctx.settle()
-        assert ctx.owed == [] and a.integers(1 << 40) == b.integers(1 << 40)
+def test_waiting_mobs_take_free_slots_and_draw_only_then():
+    """A scenario's waiting mobs (``Context.reserve``): one whose class is full waits and
+    draws nothing; once a slot frees, it takes a free floor cell of its ring, with one draw."""
+    task = registry.make("glyphbench/craftax-fight-zombies-v0")
+    task.reset(seed=0)
+    state, ctx, rng = task.state, task.ctx, task.play_rng
+    level = state.player_level
+    zombies = state.melee_mobs
+    assert ctx.reserve and False not in zombies.mask[level]      # full: the rest wait
+    before = rng.bit_generator.state
+    waiting = list(ctx.reserve)
+    ctx.admit(state, rng)
+    assert ctx.reserve == waiting and rng.bit_generator.state == before
+    slot = 0
+    r, c = zombies.position[level][slot]
+    zombies.mask[level][slot] = False
+    state.mob_map[level, r, c] = False
+    name, dmin, dmax = ctx.reserve[0]
+    ctx.admit(state, rng)
+    assert ctx.reserve == waiting[1:] and rng.bit_generator.state != before
+    assert zombies.mask[level][slot]
+    r, c = zombies.position[level][slot]
+    pr, pc = state.player_position.tolist()
+    assert dmin <= abs(r - pr) + abs(c - pc) <= dmax and state.mob_map[level, r, c]
+    assert state.map[level, r, c] == ctx.floor
 
 
 def test_remembered_hud_follows_the_state():
