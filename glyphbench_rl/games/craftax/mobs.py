@@ -106,12 +106,16 @@ def damage_to_player(state: State, damage: tuple) -> float:
     """Upstream's get_damage_done_to_player: armour blocks 10% physical damage per tier (summed
     over the four pieces), each fire (ice) enchanted piece 20% of fire (ice) damage; damage is
     x1.5 on the boss level."""
-    enchant = state.armour_enchantments.tolist()
-    defence = (ARMOUR_DEFENCE_PER_TIER * sum(state.inventory.armour.tolist()),
-               ENCHANTED_ARMOUR_DEFENCE * enchant.count(1),
-               ENCHANTED_ARMOUR_DEFENCE * enchant.count(2))
+    physical, fire, ice = damage
     scale = 1.0 + BOSS_FIGHT_EXTRA_DAMAGE if state.player_level == BOSS_LEVEL else 1.0
-    return sum((1.0 - d) * x * scale for d, x in zip(defence, damage))
+    lost = (1.0 - ARMOUR_DEFENCE_PER_TIER * sum(state.inventory.armour.tolist())) * physical * scale
+    if not (fire or ice):
+        # (most blows: the elements' terms are +0.0 (a defence is at most 0.8), and the sum
+        # (0 + lost + 0.0 + 0.0) is ``lost`` itself; the enchantments need not be read)
+        return lost
+    enchant = state.armour_enchantments.tolist()
+    return sum((lost, (1.0 - ENCHANTED_ARMOUR_DEFENCE * enchant.count(1)) * fire * scale,
+                (1.0 - ENCHANTED_ARMOUR_DEFENCE * enchant.count(2)) * ice * scale))
 
 
 def hurt_player(state: State, damage: tuple, melee: bool = False) -> float:
@@ -187,19 +191,32 @@ def attack_mob(state: State, row: int, col: int, damage: tuple, can_eat: bool) -
 # The slots are Python lists (``state.Mobs``): a mover reads and writes list items. The mob map
 # stays numpy (upstream's field, read by the rules' ``is_in_mob``, the planner and spawning);
 # an update reads it through ``.item`` and writes it only where it changes (a move, a death).
+# A class's mobs move in one loop (``_move_melee_mobs`` ...: upstream's rule for one mob, run
+# for each live slot in order), which reads what it needs of the turn once.
 
 _FAR = 1 << 30      # a despawn limit no distance reaches
+
+
+def _enterable(collision: tuple) -> tuple:
+    """For each block: a mob whose collision triple (ground, water, lava) is ``collision`` may
+    step onto it (it is not solid, and the triple lets the mob onto its kind of ground)."""
+    return tuple(not IS_SOLID[block]
+                 and not collision[1 if block == _WATER else 2 if block == _LAVA else 0]
+                 for block in range(len(BlockType)))
+
+
+# [type_id][class] -> [block] -> may enter: MOB_TYPE_COLLISION_MAPPING applied to every block
+_ENTERABLE = tuple(tuple(_enterable(collision) for collision in row)
+                   for row in MOB_TYPE_COLLISION_MAPPING)
 
 
 class _Turn:
     """What every mover of one update reads: the player's level, the map and mob map (the
     whole arrays, read and written at ``[level, row, col]``: cheaper than making views of the
     level), the player's cell, the draws' next float (``random``: a mover draws
-    ``int(random() * n)``, which is ``draws.below(n)`` without its call), the despawn limits,
-    and the mask and position lists of the class of mobs moving now (set by the loop over
-    them)."""
+    ``int(random() * n)``, which is ``draws.below(n)`` without its call), the despawn limits."""
     __slots__ = ("state", "random", "level", "map", "occupied", "rows", "cols", "p_row", "p_col",
-                 "boss", "passive_limit", "monster_limit", "mask", "positions")
+                 "boss", "passive_limit", "monster_limit")
 
     def __init__(self, state: State, settings: Settings, draws) -> None:
         self.state, self.random = state, draws.random
@@ -215,106 +232,129 @@ class _Turn:
         self.passive_limit = despawn
         self.monster_limit = _FAR if self.boss else despawn
 
-    def can_enter(self, row: int, col: int, collision: tuple) -> bool:
-        """Upstream's is_position_in_bounds_not_in_mob_not_colliding."""
-        if not (0 <= row < self.rows and 0 <= col < self.cols):
-            return False
-        level = self.level
-        if self.occupied.item(level, row, col) or (row == self.p_row and col == self.p_col):
-            return False
-        block = self.map.item(level, row, col)
-        if IS_SOLID[block]:
-            return False
-        if block == _WATER:
-            return not collision[1]
-        if block == _LAVA:
-            return not collision[2]
-        return not collision[0]
 
-    def toward(self, d_row: int, d_col: int) -> tuple[int, int]:
-        """One step toward the player along the axis of the larger distance (a tie: either
-        axis, evenly), upstream's player_move_direction."""
-        a_row, a_col = abs(d_row), abs(d_col)
-        if a_row > a_col or (a_row == a_col and int(self.random() * 2) == 0):
-            return (d_row > 0) - (d_row < 0), 0
-        return 0, (d_col > 0) - (d_col < 0)
+def _can_enter(turn: _Turn, row: int, col: int, enterable: tuple) -> bool:
+    """Upstream's is_position_in_bounds_not_in_mob_not_colliding, for a mob that may enter
+    the blocks ``enterable`` marks (``_ENTERABLE``)."""
+    if (not (0 <= row < turn.rows and 0 <= col < turn.cols)
+            or (row == turn.p_row and col == turn.p_col)):
+        return False
+    level = turn.level
+    return (not turn.occupied.item(level, row, col)
+            and enterable[turn.map.item(level, row, col)])
 
-    def relocate(self, slot: int, row: int, col: int, new_row: int, new_col: int,
-                 alive: bool) -> None:
-        """Write a mob's new cell (if it moved) and its death (not ``alive``: despawned),
-        keeping the mob map exact: the cell left is cleared, the cell entered set. (Upstream
-        sets the cell stood on even when the mob stayed; it is set already.)"""
-        occupied, level = self.occupied, self.level
-        if new_row != row or new_col != col:
-            self.positions[slot] = (new_row, new_col)
-            occupied[level, row, col] = False
-            if alive:
-                occupied[level, new_row, new_col] = True
+
+def _toward(random, d_row: int, d_col: int) -> tuple[int, int]:
+    """One step toward the player along the axis of the larger distance (a tie: either axis,
+    evenly, one draw of ``random``), upstream's player_move_direction."""
+    a_row, a_col = abs(d_row), abs(d_col)
+    if a_row > a_col or (a_row == a_col and int(random() * 2) == 0):
+        return (d_row > 0) - (d_row < 0), 0
+    return 0, (d_col > 0) - (d_col < 0)
+
+
+def _move_melee_mobs(turn: _Turn, mobs: Mobs) -> None:
+    """Upstream's melee mob move, for each live slot in order: chase the player (within 10,
+    or always on the boss level: 75% of turns) or wander; hit an adjacent player when the
+    cooldown is over. Dead slots count their cooldown down too, as upstream (a mob spawned
+    into a slot inherits it)."""
+    level, random, p_row, p_col = turn.level, turn.random, turn.p_row, turn.p_col
+    occupied, chases_anywhere, limit = turn.occupied, turn.boss, turn.monster_limit
+    mask, positions = mobs.mask[level], mobs.position[level]
+    types, cooldowns = mobs.type_id[level], mobs.attack_cooldown[level]
+    for slot, alive in enumerate(mask):
+        cooldown = cooldowns[slot]
         if not alive:
-            self.mask[slot] = False
+            cooldowns[slot] = cooldown - 1
+            continue
+        row, col = positions[slot]
+        type_id = types[slot]
+        d_row, d_col = p_row - row, p_col - col
+        distance = abs(d_row) + abs(d_col)
+        if (distance < 10 or chases_anywhere) and random() < 0.75:
+            step_row, step_col = _toward(random, d_row, d_col)
+        else:
+            step_row, step_col = _STEPS[int(random() * 4)]
+        if distance == 1 and cooldown <= 0:
+            hurt_player(turn.state, MOB_TYPE_DAMAGE_MAPPING[type_id][_MELEE], melee=True)
+            cooldowns[slot] = MELEE_ATTACK_COOLDOWN
+        else:
+            cooldowns[slot] = cooldown - 1
+            new_row, new_col = row + step_row, col + step_col
+            if _can_enter(turn, new_row, new_col, _ENTERABLE[type_id][_MELEE]):
+                positions[slot] = (new_row, new_col)
+                occupied[level, row, col] = False
+                occupied[level, new_row, new_col] = True
+                row, col = new_row, new_col
+        if distance >= limit:
+            mask[slot] = False
             occupied[level, row, col] = False
 
 
-def _move_melee(turn: _Turn, slot: int, row: int, col: int, type_id: int, cooldown: int) -> int:
-    """Chase the player (within 10, or always on the boss level: 75% of turns) or wander; hit
-    an adjacent player when the cooldown is over. Returns the new cooldown."""
-    d_row, d_col = turn.p_row - row, turn.p_col - col
-    distance = abs(d_row) + abs(d_col)
-    if (distance < 10 or turn.boss) and turn.random() < 0.75:
-        step_row, step_col = turn.toward(d_row, d_col)
-    else:
-        step_row, step_col = _STEPS[int(turn.random() * 4)]
-    new_row, new_col = row, col
-    if distance == 1 and cooldown <= 0:
-        hurt_player(turn.state, MOB_TYPE_DAMAGE_MAPPING[type_id][_MELEE], melee=True)
-        cooldown = MELEE_ATTACK_COOLDOWN
-    else:
-        cooldown -= 1
-        if turn.can_enter(row + step_row, col + step_col,
-                          MOB_TYPE_COLLISION_MAPPING[type_id][_MELEE]):
+def _move_passive_mobs(turn: _Turn, mobs: Mobs) -> None:
+    """Upstream's passive mob move, for each live slot in order: wander, each of the four
+    steps with 1/8, else stay (upstream's DIRECTIONS[1:9])."""
+    level, random, p_row, p_col = turn.level, turn.random, turn.p_row, turn.p_col
+    occupied, limit = turn.occupied, turn.passive_limit
+    mask, positions, types = mobs.mask[level], mobs.position[level], mobs.type_id[level]
+    for slot, alive in enumerate(mask):
+        if not alive:
+            continue
+        row, col = positions[slot]
+        choice = int(random() * 8)
+        distance = abs(p_row - row) + abs(p_col - col)
+        if choice < 4:
+            step_row, step_col = _STEPS[choice]
             new_row, new_col = row + step_row, col + step_col
-    turn.relocate(slot, row, col, new_row, new_col, distance < turn.monster_limit)
-    return cooldown
+            if _can_enter(turn, new_row, new_col, _ENTERABLE[types[slot]][_PASSIVE]):
+                positions[slot] = (new_row, new_col)
+                occupied[level, row, col] = False
+                occupied[level, new_row, new_col] = True
+                row, col = new_row, new_col
+        if distance >= limit:
+            mask[slot] = False
+            occupied[level, row, col] = False
 
 
-def _move_passive(turn: _Turn, slot: int, row: int, col: int, type_id: int) -> None:
-    """Wander: each of the four steps with 1/8, else stay (upstream's DIRECTIONS[1:9])."""
-    choice = int(turn.random() * 8)
-    new_row, new_col = row, col
-    if choice < 4:
-        step_row, step_col = _STEPS[choice]
-        if turn.can_enter(row + step_row, col + step_col,
-                          MOB_TYPE_COLLISION_MAPPING[type_id][_PASSIVE]):
+def _move_ranged_mobs(turn: _Turn, mobs: Mobs) -> None:
+    """Upstream's ranged mob move, for each live slot in order: keep a shooting distance (15%
+    of turns: closer when 6+ away, back when 3 or less; else wander); shoot at range 4-5, or
+    when it wants to back off but cannot. Dead slots count their cooldown down too."""
+    level, random, p_row, p_col = turn.level, turn.random, turn.p_row, turn.p_col
+    occupied, limit = turn.occupied, turn.monster_limit
+    mask, positions = mobs.mask[level], mobs.position[level]
+    types, cooldowns = mobs.type_id[level], mobs.attack_cooldown[level]
+    for slot, alive in enumerate(mask):
+        cooldown = cooldowns[slot]
+        if not alive:
+            cooldowns[slot] = cooldown - 1
+            continue
+        row, col = positions[slot]
+        type_id = types[slot]
+        d_row, d_col = p_row - row, p_col - col
+        distance = abs(d_row) + abs(d_col)
+        toward = _toward(random, d_row, d_col)
+        too_close = distance <= 3
+        if random() > 0.85 and (distance >= 6 or too_close):
+            sign = -1 if too_close else 1
+            new_row, new_col = row + sign * toward[0], col + sign * toward[1]
+        else:
+            step_row, step_col = _STEPS[int(random() * 4)]
             new_row, new_col = row + step_row, col + step_col
-    distance = abs(turn.p_row - row) + abs(turn.p_col - col)
-    turn.relocate(slot, row, col, new_row, new_col, distance < turn.passive_limit)
-
-
-def _move_ranged(turn: _Turn, slot: int, row: int, col: int, type_id: int, cooldown: int) -> int:
-    """Keep a shooting distance (15% of turns: closer when 6+ away, back when 3 or less; else
-    wander); shoot at range 4-5, or when it wants to back off but cannot. Returns the new
-    cooldown."""
-    d_row, d_col = turn.p_row - row, turn.p_col - col
-    distance = abs(d_row) + abs(d_col)
-    toward = turn.toward(d_row, d_col)
-    too_close = distance <= 3
-    if turn.random() > 0.85 and (distance >= 6 or too_close):
-        sign = -1 if too_close else 1
-        new_row, new_col = row + sign * toward[0], col + sign * toward[1]
-    else:
-        step_row, step_col = _STEPS[int(turn.random() * 4)]
-        new_row, new_col = row + step_row, col + step_col
-    can_move = turn.can_enter(new_row, new_col, MOB_TYPE_COLLISION_MAPPING[type_id][_RANGED])
-    if cooldown <= 0 and (4 <= distance <= 5 or (too_close and not can_move)):
-        _shoot(turn, row, col, toward, RANGED_MOB_TYPE_TO_PROJECTILE_TYPE_MAPPING[type_id])
-        cooldown = RANGED_ATTACK_COOLDOWN
-        new_row, new_col = row, col
-    else:
-        cooldown -= 1
-        if not can_move:
-            new_row, new_col = row, col
-    turn.relocate(slot, row, col, new_row, new_col, distance < turn.monster_limit)
-    return cooldown
+        can_move = _can_enter(turn, new_row, new_col, _ENTERABLE[type_id][_RANGED])
+        if cooldown <= 0 and (4 <= distance <= 5 or (too_close and not can_move)):
+            _shoot(turn, row, col, toward, RANGED_MOB_TYPE_TO_PROJECTILE_TYPE_MAPPING[type_id])
+            cooldowns[slot] = RANGED_ATTACK_COOLDOWN
+        else:
+            cooldowns[slot] = cooldown - 1
+            if can_move:
+                positions[slot] = (new_row, new_col)
+                occupied[level, row, col] = False
+                occupied[level, new_row, new_col] = True
+                row, col = new_row, new_col
+        if distance >= limit:
+            mask[slot] = False
+            occupied[level, row, col] = False
 
 
 def _shoot(turn: _Turn, row: int, col: int, direction: tuple, kind: int) -> None:
@@ -390,24 +430,9 @@ def _move_player_projectile(turn: _Turn, slot: int, row: int, col: int, d_row: i
         projectiles.mask[level][slot] = False
 
 
-def _move_monsters(turn: _Turn, group: Mobs, mover) -> None:
-    """Melee or ranged mobs in slot order; dead slots only count their cooldown down, as
-    upstream (a mob spawned into a slot inherits its cooldown). (A mover changes no slot but
-    its own, so the mask is read as it goes.)"""
-    level = turn.level
-    mask, positions = group.mask[level], group.position[level]
-    types, cooldowns = group.type_id[level], group.attack_cooldown[level]
-    turn.mask, turn.positions = mask, positions
-    for slot, alive in enumerate(mask):
-        if alive:
-            row, col = positions[slot]
-            cooldowns[slot] = mover(turn, slot, row, col, types[slot], cooldowns[slot])
-        else:
-            cooldowns[slot] -= 1
-
-
 def _count_down(group: Mobs, level: int) -> None:
-    """Dead slots count their cooldown down too, as upstream (a spawned mob inherits it)."""
+    """A class with no live mob on the level: its slots' cooldowns count down (as upstream's
+    do for dead slots: a mob spawned into a slot inherits the cooldown)."""
     group.attack_cooldown[level] = [cooldown - 1 for cooldown in group.attack_cooldown[level]]
 
 
@@ -439,18 +464,13 @@ def update(state: State, settings: Settings, draws) -> None:
         return
     turn = _Turn(state, settings, draws)
     if True in melee_mask:
-        _move_monsters(turn, melee, _move_melee)
+        _move_melee_mobs(turn, melee)
     else:
         _count_down(melee, level)
     if True in passive_mask:
-        positions, types = passive.position[level], passive.type_id[level]
-        turn.mask, turn.positions = passive_mask, positions
-        for slot, alive in enumerate(passive_mask):
-            if alive:
-                row, col = positions[slot]
-                _move_passive(turn, slot, row, col, types[slot])
+        _move_passive_mobs(turn, passive)
     if True in ranged_mask:
-        _move_monsters(turn, ranged, _move_ranged)
+        _move_ranged_mobs(turn, ranged)
     else:
         _count_down(ranged, level)
     # (the mask lists are the state's own: a projectile a ranged mob shot this turn flies too)
