@@ -26,7 +26,7 @@ from .bestiary import (FLOOR_MOB_MAPPING, FLOOR_MOB_SPAWN_CHANCE, MELEE_ATTACK_C
                        MOB_TYPE_DAMAGE_MAPPING, MOB_TYPE_DEFENCE_MAPPING, MOB_TYPE_HEALTH_MAPPING,
                        PROJECTILE_DAMAGE, RANGED_ATTACK_COOLDOWN,
                        RANGED_MOB_TYPE_TO_PROJECTILE_TYPE_MAPPING)
-from .state import MAX_MELEE, MAX_PASSIVE, MAX_RANGED, Mobs, Settings, State, float32
+from .state import MAP_SIZE, MAX_MELEE, MAX_PASSIVE, MAX_RANGED, Mobs, Settings, State, float32
 from .tables import (ARMOUR_DEFENCE_PER_TIER, BOSS_FIGHT_EXTRA_DAMAGE, BOSS_FIGHT_SPAWN_TURNS,
                      BOSS_LEVEL, COW_FOOD, ENCHANTED_ARMOUR_DEFENCE, IS_SOLID,
                      MONSTERS_KILLED_TO_CLEAR_LEVEL, SLEEPING_MELEE_FACTOR, Achievement, BlockType,
@@ -192,9 +192,12 @@ def attack_mob(state: State, row: int, col: int, damage: tuple, can_eat: bool) -
 # stays numpy (upstream's field, read by the rules' ``is_in_mob``, the planner and spawning);
 # an update reads it through ``.item`` and writes it only where it changes (a move, a death).
 # A class's mobs move in one loop (``_move_melee_mobs`` ...: upstream's rule for one mob, run
-# for each live slot in order), which reads what it needs of the turn once.
+# for each live slot in order), given what every loop reads: the player's cell, the draws'
+# next float (``random``: a mover draws ``int(random() * n)``, which is ``draws.below(n)``
+# without its call) and the despawn limit.
 
 _FAR = 1 << 30      # a despawn limit no distance reaches
+_ROWS, _COLS = MAP_SIZE     # every state's map (state.py; world generation makes them so)
 
 
 def _enterable(collision: tuple) -> tuple:
@@ -210,38 +213,14 @@ _ENTERABLE = tuple(tuple(_enterable(collision) for collision in row)
                    for row in MOB_TYPE_COLLISION_MAPPING)
 
 
-class _Turn:
-    """What every mover of one update reads: the player's level, the map and mob map (the
-    whole arrays, read and written at ``[level, row, col]``: cheaper than making views of the
-    level), the player's cell, the draws' next float (``random``: a mover draws
-    ``int(random() * n)``, which is ``draws.below(n)`` without its call), the despawn limits."""
-    __slots__ = ("state", "random", "level", "map", "occupied", "rows", "cols", "p_row", "p_col",
-                 "boss", "passive_limit", "monster_limit")
-
-    def __init__(self, state: State, settings: Settings, draws) -> None:
-        self.state, self.random = state, draws.random
-        self.level = level = state.player_level
-        self.map, self.occupied = state.map, state.mob_map
-        self.rows, self.cols = self.map.shape[1:]
-        self.p_row, self.p_col = state.player_position.tolist()
-        self.boss = level == BOSS_LEVEL
-        # mobs at this Manhattan distance or more (measured before they move) vanish; upstream
-        # keeps the boss level's monsters (not its passive mobs), and we keep all when
-        # spawning is switched off
-        despawn = settings.mob_despawn_distance if settings.spawning else _FAR
-        self.passive_limit = despawn
-        self.monster_limit = _FAR if self.boss else despawn
-
-
-def _can_enter(turn: _Turn, row: int, col: int, enterable: tuple) -> bool:
+def _can_enter(state: State, level: int, row: int, col: int, p_row: int, p_col: int,
+               enterable: tuple) -> bool:
     """Upstream's is_position_in_bounds_not_in_mob_not_colliding, for a mob that may enter
-    the blocks ``enterable`` marks (``_ENTERABLE``)."""
-    if (not (0 <= row < turn.rows and 0 <= col < turn.cols)
-            or (row == turn.p_row and col == turn.p_col)):
-        return False
-    level = turn.level
-    return (not turn.occupied.item(level, row, col)
-            and enterable[turn.map.item(level, row, col)])
+    the blocks ``enterable`` marks (``_ENTERABLE``): on the map, not the player's cell
+    (p_row, p_col), no mob there, and an enterable block."""
+    return (0 <= row < _ROWS and 0 <= col < _COLS and (row != p_row or col != p_col)
+            and not state.mob_map.item(level, row, col)
+            and enterable[state.map.item(level, row, col)])
 
 
 def _toward(random, d_row: int, d_col: int) -> tuple[int, int]:
@@ -253,13 +232,14 @@ def _toward(random, d_row: int, d_col: int) -> tuple[int, int]:
     return 0, (d_col > 0) - (d_col < 0)
 
 
-def _move_melee_mobs(turn: _Turn, mobs: Mobs) -> None:
+def _move_melee_mobs(state: State, mobs: Mobs, p_row: int, p_col: int, random,
+                     limit: int) -> None:
     """Upstream's melee mob move, for each live slot in order: chase the player (within 10,
     or always on the boss level: 75% of turns) or wander; hit an adjacent player when the
-    cooldown is over. Dead slots count their cooldown down too, as upstream (a mob spawned
-    into a slot inherits it)."""
-    level, random, p_row, p_col = turn.level, turn.random, turn.p_row, turn.p_col
-    occupied, chases_anywhere, limit = turn.occupied, turn.boss, turn.monster_limit
+    cooldown is over; vanish at ``limit`` or more from the player. Dead slots count their
+    cooldown down too, as upstream (a mob spawned into a slot inherits it)."""
+    level = state.player_level
+    occupied, chases_anywhere = state.mob_map, level == BOSS_LEVEL
     mask, positions = mobs.mask[level], mobs.position[level]
     types, cooldowns = mobs.type_id[level], mobs.attack_cooldown[level]
     for slot, alive in enumerate(mask):
@@ -276,12 +256,13 @@ def _move_melee_mobs(turn: _Turn, mobs: Mobs) -> None:
         else:
             step_row, step_col = _STEPS[int(random() * 4)]
         if distance == 1 and cooldown <= 0:
-            hurt_player(turn.state, MOB_TYPE_DAMAGE_MAPPING[type_id][_MELEE], melee=True)
+            hurt_player(state, MOB_TYPE_DAMAGE_MAPPING[type_id][_MELEE], melee=True)
             cooldowns[slot] = MELEE_ATTACK_COOLDOWN
         else:
             cooldowns[slot] = cooldown - 1
             new_row, new_col = row + step_row, col + step_col
-            if _can_enter(turn, new_row, new_col, _ENTERABLE[type_id][_MELEE]):
+            if _can_enter(state, level, new_row, new_col, p_row, p_col,
+                          _ENTERABLE[type_id][_MELEE]):
                 positions[slot] = (new_row, new_col)
                 occupied[level, row, col] = False
                 occupied[level, new_row, new_col] = True
@@ -291,11 +272,13 @@ def _move_melee_mobs(turn: _Turn, mobs: Mobs) -> None:
             occupied[level, row, col] = False
 
 
-def _move_passive_mobs(turn: _Turn, mobs: Mobs) -> None:
+def _move_passive_mobs(state: State, mobs: Mobs, p_row: int, p_col: int, random,
+                       limit: int) -> None:
     """Upstream's passive mob move, for each live slot in order: wander, each of the four
-    steps with 1/8, else stay (upstream's DIRECTIONS[1:9])."""
-    level, random, p_row, p_col = turn.level, turn.random, turn.p_row, turn.p_col
-    occupied, limit = turn.occupied, turn.passive_limit
+    steps with 1/8, else stay (upstream's DIRECTIONS[1:9]); vanish at ``limit`` or more from
+    the player."""
+    level = state.player_level
+    occupied = state.mob_map
     mask, positions, types = mobs.mask[level], mobs.position[level], mobs.type_id[level]
     for slot, alive in enumerate(mask):
         if not alive:
@@ -306,7 +289,8 @@ def _move_passive_mobs(turn: _Turn, mobs: Mobs) -> None:
         if choice < 4:
             step_row, step_col = _STEPS[choice]
             new_row, new_col = row + step_row, col + step_col
-            if _can_enter(turn, new_row, new_col, _ENTERABLE[types[slot]][_PASSIVE]):
+            if _can_enter(state, level, new_row, new_col, p_row, p_col,
+                          _ENTERABLE[types[slot]][_PASSIVE]):
                 positions[slot] = (new_row, new_col)
                 occupied[level, row, col] = False
                 occupied[level, new_row, new_col] = True
@@ -316,12 +300,14 @@ def _move_passive_mobs(turn: _Turn, mobs: Mobs) -> None:
             occupied[level, row, col] = False
 
 
-def _move_ranged_mobs(turn: _Turn, mobs: Mobs) -> None:
+def _move_ranged_mobs(state: State, mobs: Mobs, p_row: int, p_col: int, random,
+                      limit: int) -> None:
     """Upstream's ranged mob move, for each live slot in order: keep a shooting distance (15%
     of turns: closer when 6+ away, back when 3 or less; else wander); shoot at range 4-5, or
-    when it wants to back off but cannot. Dead slots count their cooldown down too."""
-    level, random, p_row, p_col = turn.level, turn.random, turn.p_row, turn.p_col
-    occupied, limit = turn.occupied, turn.monster_limit
+    when it wants to back off but cannot; vanish at ``limit`` or more from the player. Dead
+    slots count their cooldown down too."""
+    level = state.player_level
+    occupied = state.mob_map
     mask, positions = mobs.mask[level], mobs.position[level]
     types, cooldowns = mobs.type_id[level], mobs.attack_cooldown[level]
     for slot, alive in enumerate(mask):
@@ -341,9 +327,11 @@ def _move_ranged_mobs(turn: _Turn, mobs: Mobs) -> None:
         else:
             step_row, step_col = _STEPS[int(random() * 4)]
             new_row, new_col = row + step_row, col + step_col
-        can_move = _can_enter(turn, new_row, new_col, _ENTERABLE[type_id][_RANGED])
+        can_move = _can_enter(state, level, new_row, new_col, p_row, p_col,
+                              _ENTERABLE[type_id][_RANGED])
         if cooldown <= 0 and (4 <= distance <= 5 or (too_close and not can_move)):
-            _shoot(turn, row, col, toward, RANGED_MOB_TYPE_TO_PROJECTILE_TYPE_MAPPING[type_id])
+            _shoot(state, level, row, col, toward,
+                   RANGED_MOB_TYPE_TO_PROJECTILE_TYPE_MAPPING[type_id])
             cooldowns[slot] = RANGED_ATTACK_COOLDOWN
         else:
             cooldowns[slot] = cooldown - 1
@@ -357,9 +345,8 @@ def _move_ranged_mobs(turn: _Turn, mobs: Mobs) -> None:
             occupied[level, row, col] = False
 
 
-def _shoot(turn: _Turn, row: int, col: int, direction: tuple, kind: int) -> None:
+def _shoot(state: State, level: int, row: int, col: int, direction: tuple, kind: int) -> None:
     """A mob projectile in the first free slot, if any (upstream's spawn_projectile)."""
-    state, level = turn.state, turn.level
     projectiles = state.mob_projectiles
     mask = projectiles.mask[level]
     if False not in mask:
@@ -371,27 +358,35 @@ def _shoot(turn: _Turn, row: int, col: int, direction: tuple, kind: int) -> None
     state.mob_projectile_directions[level, slot] = direction
 
 
-def _move_mob_projectile(turn: _Turn, slot: int, row: int, col: int, d_row: int, d_col: int,
-                         kind: int) -> None:
-    """Fly one cell; hit the player (on its cell or the next), stop at solid blocks (not
-    water or lava), mobs and the map's edge; break a table or furnace in its way."""
-    projectiles = turn.state.mob_projectiles
-    new_row, new_col = row + d_row, col + d_col
-    p_row, p_col = turn.p_row, turn.p_col
-    hit_player = (row == p_row and col == p_col) or (new_row == p_row and new_col == p_col)
-    flies_on = 0 <= new_row < turn.rows and 0 <= new_col < turn.cols
-    level = turn.level
-    if flies_on:
-        block = turn.map.item(level, new_row, new_col)
-        flies_on = not (hit_player or IS_SOLID[block]
-                        or turn.occupied.item(level, new_row, new_col))
-        if block in _BREAKABLE:
-            turn.map[level, new_row, new_col] = BlockType.PATH
-    if hit_player:
-        hurt_player(turn.state, PROJECTILE_DAMAGE[kind])
-    projectiles.position[level][slot] = (new_row, new_col)
-    if not flies_on:
-        projectiles.mask[level][slot] = False
+def _move_mob_projectiles(state: State, p_row: int, p_col: int) -> None:
+    """Upstream's mob projectile move, for each live slot in order (a projectile shot this
+    turn too): fly one cell; hit the player (on its cell or the next), stop at solid blocks
+    (not water or lava), mobs and the map's edge; break a table or furnace in its way."""
+    level = state.player_level
+    blocks, occupied = state.map, state.mob_map
+    projectiles = state.mob_projectiles
+    mask, positions, kinds = (projectiles.mask[level], projectiles.position[level],
+                              projectiles.type_id[level])
+    steps = state.mob_projectile_directions[level].tolist()
+    for slot, alive in enumerate(mask):
+        if not alive:
+            continue
+        row, col = positions[slot]
+        d_row, d_col = steps[slot]
+        new_row, new_col = row + d_row, col + d_col
+        hit_player = (row == p_row and col == p_col) or (new_row == p_row and new_col == p_col)
+        flies_on = 0 <= new_row < _ROWS and 0 <= new_col < _COLS
+        if flies_on:
+            block = blocks.item(level, new_row, new_col)
+            flies_on = not (hit_player or IS_SOLID[block]
+                            or occupied.item(level, new_row, new_col))
+            if block in _BREAKABLE:
+                blocks[level, new_row, new_col] = BlockType.PATH
+        if hit_player:
+            hurt_player(state, PROJECTILE_DAMAGE[kinds[slot]])
+        positions[slot] = (new_row, new_col)
+        if not flies_on:
+            mask[slot] = False
 
 
 def player_projectile_damage(state: State, kind: int) -> tuple:
@@ -410,42 +405,37 @@ def player_projectile_damage(state: State, kind: int) -> tuple:
     return tuple(x * scale for x in damage)
 
 
-def _move_player_projectile(turn: _Turn, slot: int, row: int, col: int, d_row: int, d_col: int,
-                            kind: int) -> None:
-    """Strike a mob on its own cell (one stepped onto it), else on its next cell; fly on
-    unless it struck, left the map or met a solid block (it crosses water and lava)."""
-    state = turn.state
+def _move_player_projectiles(state: State) -> None:
+    """Upstream's player projectile move, for each live slot in order: strike a mob on its own
+    cell (one stepped onto it), else on its next cell; fly on unless it struck, left the map
+    or met a solid block (it crosses water and lava)."""
+    level = state.player_level
+    occupied = state.mob_map
     projectiles = state.player_projectiles
-    new_row, new_col = row + d_row, col + d_col
-    damage = player_projectile_damage(state, kind)
-    level, occupied = turn.level, turn.occupied
-    hit = ((occupied.item(level, row, col) and attack_mob(state, row, col, damage, False)[0])
-           or (0 <= new_row < turn.rows and 0 <= new_col < turn.cols
-               and occupied.item(level, new_row, new_col)
-               and attack_mob(state, new_row, new_col, damage, False)[0]))
-    flies_on = (not hit and 0 <= new_row < turn.rows and 0 <= new_col < turn.cols
-                and not IS_SOLID[turn.map.item(level, new_row, new_col)])
-    projectiles.position[level][slot] = (new_row, new_col)
-    if not flies_on:
-        projectiles.mask[level][slot] = False
+    mask, positions, kinds = (projectiles.mask[level], projectiles.position[level],
+                              projectiles.type_id[level])
+    steps = state.player_projectile_directions[level].tolist()
+    for slot, alive in enumerate(mask):
+        if not alive:
+            continue
+        row, col = positions[slot]
+        d_row, d_col = steps[slot]
+        new_row, new_col = row + d_row, col + d_col
+        damage = player_projectile_damage(state, kinds[slot])
+        on_map = 0 <= new_row < _ROWS and 0 <= new_col < _COLS
+        hit = ((occupied.item(level, row, col) and attack_mob(state, row, col, damage, False)[0])
+               or (on_map and occupied.item(level, new_row, new_col)
+                   and attack_mob(state, new_row, new_col, damage, False)[0]))
+        flies_on = not hit and on_map and not IS_SOLID[state.map.item(level, new_row, new_col)]
+        positions[slot] = (new_row, new_col)
+        if not flies_on:
+            mask[slot] = False
 
 
 def _count_down(group: Mobs, level: int) -> None:
     """A class with no live mob on the level: its slots' cooldowns count down (as upstream's
     do for dead slots: a mob spawned into a slot inherits the cooldown)."""
     group.attack_cooldown[level] = [cooldown - 1 for cooldown in group.attack_cooldown[level]]
-
-
-def _fly(turn: _Turn, projectiles: Mobs, directions, mover) -> None:
-    """The live projectiles of one kind in slot order (each mover changes only its own slot)."""
-    level = turn.level
-    positions, kinds = projectiles.position[level], projectiles.type_id[level]
-    steps = directions[level].tolist()
-    for slot, alive in enumerate(projectiles.mask[level]):
-        if alive:
-            row, col = positions[slot]
-            d_row, d_col = steps[slot]
-            mover(turn, slot, row, col, d_row, d_col, kinds[slot])
 
 
 def update(state: State, settings: Settings, draws) -> None:
@@ -462,23 +452,28 @@ def update(state: State, settings: Settings, draws) -> None:
         _count_down(melee, level)
         _count_down(ranged, level)
         return
-    turn = _Turn(state, settings, draws)
+    p_row, p_col = state.player_position.tolist()
+    random = draws.random
+    # mobs at this Manhattan distance or more (measured before they move) vanish; upstream
+    # keeps the boss level's monsters (not its passive mobs), and we keep all when spawning
+    # is switched off
+    despawn = settings.mob_despawn_distance if settings.spawning else _FAR
+    monster_limit = _FAR if level == BOSS_LEVEL else despawn
     if True in melee_mask:
-        _move_melee_mobs(turn, melee)
+        _move_melee_mobs(state, melee, p_row, p_col, random, monster_limit)
     else:
         _count_down(melee, level)
     if True in passive_mask:
-        _move_passive_mobs(turn, passive)
+        _move_passive_mobs(state, passive, p_row, p_col, random, despawn)
     if True in ranged_mask:
-        _move_ranged_mobs(turn, ranged)
+        _move_ranged_mobs(state, ranged, p_row, p_col, random, monster_limit)
     else:
         _count_down(ranged, level)
     # (the mask lists are the state's own: a projectile a ranged mob shot this turn flies too)
     if True in shots:
-        _fly(turn, state.mob_projectiles, state.mob_projectile_directions, _move_mob_projectile)
+        _move_mob_projectiles(state, p_row, p_col)
     if True in arrows:
-        _fly(turn, state.player_projectiles, state.player_projectile_directions,
-             _move_player_projectile)
+        _move_player_projectiles(state)
 
 
 # ---------------------------------------------------------------------------------------------
