@@ -194,7 +194,10 @@ def attack_mob(state: State, row: int, col: int, damage: tuple, can_eat: bool) -
 # A class's mobs move in one loop (``_move_melee_mobs`` ...: upstream's rule for one mob, run
 # for each live slot in order), given what every loop reads: the player's cell, the draws'
 # next float (``random``: a mover draws ``int(random() * n)``, which is ``draws.below(n)``
-# without its call) and the despawn limit.
+# without its call) and the despawn limit. A loop writes upstream's
+# is_position_in_bounds_not_in_mob_not_colliding out (a call costs as much as the test): the
+# cell is on the map, not the player's, free of mobs, and its block one the mob may enter
+# (``_ENTERABLE``).
 
 _FAR = 1 << 30      # a despawn limit no distance reaches
 _ROWS, _COLS = MAP_SIZE     # every state's map (state.py; world generation makes them so)
@@ -213,16 +216,6 @@ _ENTERABLE = tuple(tuple(_enterable(collision) for collision in row)
                    for row in MOB_TYPE_COLLISION_MAPPING)
 
 
-def _can_enter(state: State, level: int, row: int, col: int, p_row: int, p_col: int,
-               enterable: tuple) -> bool:
-    """Upstream's is_position_in_bounds_not_in_mob_not_colliding, for a mob that may enter
-    the blocks ``enterable`` marks (``_ENTERABLE``): on the map, not the player's cell
-    (p_row, p_col), no mob there, and an enterable block."""
-    return (0 <= row < _ROWS and 0 <= col < _COLS and (row != p_row or col != p_col)
-            and not state.mob_map.item(level, row, col)
-            and enterable[state.map.item(level, row, col)])
-
-
 def _toward(random, d_row: int, d_col: int) -> tuple[int, int]:
     """One step toward the player along the axis of the larger distance (a tie: either axis,
     evenly, one draw of ``random``), upstream's player_move_direction."""
@@ -239,7 +232,7 @@ def _move_melee_mobs(state: State, mobs: Mobs, p_row: int, p_col: int, random,
     cooldown is over; vanish at ``limit`` or more from the player. Dead slots count their
     cooldown down too, as upstream (a mob spawned into a slot inherits it)."""
     level = state.player_level
-    occupied, chases_anywhere = state.mob_map, level == BOSS_LEVEL
+    blocks, occupied, chases_anywhere = state.map, state.mob_map, level == BOSS_LEVEL
     mask, positions = mobs.mask[level], mobs.position[level]
     types, cooldowns = mobs.type_id[level], mobs.attack_cooldown[level]
     for slot, alive in enumerate(mask):
@@ -252,7 +245,11 @@ def _move_melee_mobs(state: State, mobs: Mobs, p_row: int, p_col: int, random,
         d_row, d_col = p_row - row, p_col - col
         distance = abs(d_row) + abs(d_col)
         if (distance < 10 or chases_anywhere) and random() < 0.75:
-            step_row, step_col = _toward(random, d_row, d_col)
+            a_row, a_col = abs(d_row), abs(d_col)       # (_toward, written out)
+            if a_row > a_col or (a_row == a_col and int(random() * 2) == 0):
+                step_row, step_col = (d_row > 0) - (d_row < 0), 0
+            else:
+                step_row, step_col = 0, (d_col > 0) - (d_col < 0)
         else:
             step_row, step_col = _STEPS[int(random() * 4)]
         if distance == 1 and cooldown <= 0:
@@ -261,8 +258,10 @@ def _move_melee_mobs(state: State, mobs: Mobs, p_row: int, p_col: int, random,
         else:
             cooldowns[slot] = cooldown - 1
             new_row, new_col = row + step_row, col + step_col
-            if _can_enter(state, level, new_row, new_col, p_row, p_col,
-                          _ENTERABLE[type_id][_MELEE]):
+            if (0 <= new_row < _ROWS and 0 <= new_col < _COLS
+                    and (new_row != p_row or new_col != p_col)
+                    and not occupied.item(level, new_row, new_col)
+                    and _ENTERABLE[type_id][_MELEE][blocks.item(level, new_row, new_col)]):
                 positions[slot] = (new_row, new_col)
                 occupied[level, row, col] = False
                 occupied[level, new_row, new_col] = True
@@ -278,7 +277,7 @@ def _move_passive_mobs(state: State, mobs: Mobs, p_row: int, p_col: int, random,
     steps with 1/8, else stay (upstream's DIRECTIONS[1:9]); vanish at ``limit`` or more from
     the player."""
     level = state.player_level
-    occupied = state.mob_map
+    blocks, occupied = state.map, state.mob_map
     mask, positions, types = mobs.mask[level], mobs.position[level], mobs.type_id[level]
     for slot, alive in enumerate(mask):
         if not alive:
@@ -289,8 +288,10 @@ def _move_passive_mobs(state: State, mobs: Mobs, p_row: int, p_col: int, random,
         if choice < 4:
             step_row, step_col = _STEPS[choice]
             new_row, new_col = row + step_row, col + step_col
-            if _can_enter(state, level, new_row, new_col, p_row, p_col,
-                          _ENTERABLE[types[slot]][_PASSIVE]):
+            if (0 <= new_row < _ROWS and 0 <= new_col < _COLS
+                    and (new_row != p_row or new_col != p_col)
+                    and not occupied.item(level, new_row, new_col)
+                    and _ENTERABLE[types[slot]][_PASSIVE][blocks.item(level, new_row, new_col)]):
                 positions[slot] = (new_row, new_col)
                 occupied[level, row, col] = False
                 occupied[level, new_row, new_col] = True
@@ -307,7 +308,7 @@ def _move_ranged_mobs(state: State, mobs: Mobs, p_row: int, p_col: int, random,
     when it wants to back off but cannot; vanish at ``limit`` or more from the player. Dead
     slots count their cooldown down too."""
     level = state.player_level
-    occupied = state.mob_map
+    blocks, occupied = state.map, state.mob_map
     mask, positions = mobs.mask[level], mobs.position[level]
     types, cooldowns = mobs.type_id[level], mobs.attack_cooldown[level]
     for slot, alive in enumerate(mask):
@@ -327,8 +328,10 @@ def _move_ranged_mobs(state: State, mobs: Mobs, p_row: int, p_col: int, random,
         else:
             step_row, step_col = _STEPS[int(random() * 4)]
             new_row, new_col = row + step_row, col + step_col
-        can_move = _can_enter(state, level, new_row, new_col, p_row, p_col,
-                              _ENTERABLE[type_id][_RANGED])
+        can_move = (0 <= new_row < _ROWS and 0 <= new_col < _COLS
+                    and (new_row != p_row or new_col != p_col)
+                    and not occupied.item(level, new_row, new_col)
+                    and _ENTERABLE[type_id][_RANGED][blocks.item(level, new_row, new_col)])
         if cooldown <= 0 and (4 <= distance <= 5 or (too_close and not can_move)):
             _shoot(state, level, row, col, toward,
                    RANGED_MOB_TYPE_TO_PROJECTILE_TYPE_MAPPING[type_id])
