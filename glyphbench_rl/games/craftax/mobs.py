@@ -446,12 +446,11 @@ def update(state: State, settings: Settings, draws) -> None:
     order, then mob projectiles, then the player's projectiles."""
     level = state.player_level
     melee, passive, ranged = state.melee_mobs, state.passive_mobs, state.ranged_mobs
-    melee_mask, ranged_mask = melee.mask[level], ranged.mask[level]
-    passive_mask = passive.mask[level]
+    any_melee, any_ranged = True in melee.mask[level], True in ranged.mask[level]
+    any_passive = True in passive.mask[level]
     shots = state.mob_projectiles.mask[level]
     arrows = state.player_projectiles.mask[level]
-    if (True not in melee_mask and True not in passive_mask and True not in ranged_mask
-            and True not in shots and True not in arrows):
+    if not (any_melee or any_passive or any_ranged or True in shots or True in arrows):
         _count_down(melee, level)
         _count_down(ranged, level)
         return
@@ -462,13 +461,13 @@ def update(state: State, settings: Settings, draws) -> None:
     # is switched off
     despawn = settings.mob_despawn_distance if settings.spawning else _FAR
     monster_limit = _FAR if level == BOSS_LEVEL else despawn
-    if True in melee_mask:
+    if any_melee:
         _move_melee_mobs(state, melee, p_row, p_col, random, monster_limit)
     else:
         _count_down(melee, level)
-    if True in passive_mask:
+    if any_passive:
         _move_passive_mobs(state, passive, p_row, p_col, random, despawn)
-    if True in ranged_mask:
+    if any_ranged:
         _move_ranged_mobs(state, ranged, p_row, p_col, random, monster_limit)
     else:
         _count_down(ranged, level)
@@ -579,35 +578,39 @@ def spawn(state: State, settings: Settings, draws) -> None:
     level = state.player_level
     chances = FLOOR_MOB_SPAWN_CHANCE[level]
     boss = level == BOSS_LEVEL
+    random = draws.random
     far = settings.mob_despawn_distance ** 2
     coeff = 3.0 if state.monsters_killed.item(level) < MONSTERS_KILLED_TO_CLEAR_LEVEL else 1.0
     if boss:
         coeff *= 1000.0 if state.boss_timesteps_to_spawn_this_round >= 1 else 0.0
 
     if (not boss and state.passive_mobs.mask[level].count(True) < MAX_PASSIVE
-            and draws.random() < chances[0]):
+            and random() < chances[0]):
         cell = _spawn_cell(state, _SPAWN_GROUND, 9, far, draws)
         if cell is not None:
             _add_mob(state, state.passive_mobs, _PASSIVE, FLOOR_MOB_MAPPING[level][_PASSIVE], cell)
-
-    near, monster_far = (-1, min(far, 37)) if boss else (81, far)   # boss: d <= 6
-    mob_row = FLOOR_MOB_MAPPING[state.boss_progress if boss else level]
-
-    melee_chance = chances[1] + chances[3] * (1.0 - state.light_level) ** 2
     if (state.melee_mobs.mask[level].count(True) < MAX_MELEE
-            and draws.random() < melee_chance * coeff):
-        cell = _spawn_cell(state, _SPAWN_GRAVES if boss else _SPAWN_GROUND, near, monster_far,
-                           draws)
-        if cell is not None:
-            _add_mob(state, state.melee_mobs, _MELEE, mob_row[_MELEE], cell)
-
+            and random() < (chances[1] + chances[3] * (1.0 - state.light_level) ** 2) * coeff):
+        _spawn_monster(state, state.melee_mobs, _MELEE, far, draws)
     if (state.ranged_mobs.mask[level].count(True) < MAX_RANGED
-            and draws.random() < chances[2] * coeff):
-        type_id = mob_row[_RANGED]
-        allowed = _SPAWN_GRAVES if boss else _SPAWN_WATER if type_id == _DEEP_THING else _SPAWN_GROUND
-        cell = _spawn_cell(state, allowed, near, monster_far, draws)
-        if cell is not None:
-            _add_mob(state, state.ranged_mobs, _RANGED, type_id, cell)
+            and random() < chances[2] * coeff):
+        _spawn_monster(state, state.ranged_mobs, _RANGED, far, draws)
+
+
+def _spawn_monster(state: State, mobs: Mobs, kind: int, far: int, draws) -> None:
+    """A melee or ranged mob (``kind``) whose spawn roll came up: of its level's type, on
+    ground 9 to the despawn distance (squared: ``far``) away, deep things in water; on the
+    boss level, of the boss's progress's type, on graves within 6."""
+    level = state.player_level
+    if level == BOSS_LEVEL:
+        type_id = FLOOR_MOB_MAPPING[state.boss_progress][kind]
+        cell = _spawn_cell(state, _SPAWN_GRAVES, -1, min(far, 37), draws)
+    else:
+        type_id = FLOOR_MOB_MAPPING[level][kind]
+        water = kind == _RANGED and type_id == _DEEP_THING
+        cell = _spawn_cell(state, _SPAWN_WATER if water else _SPAWN_GROUND, 81, far, draws)
+    if cell is not None:
+        _add_mob(state, mobs, kind, type_id, cell)
 
 
 __all__ = ["update", "spawn", "add_mob", "boss_logic", "damage_necromancer", "attack_mob",
