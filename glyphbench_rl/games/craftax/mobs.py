@@ -22,8 +22,8 @@ from __future__ import annotations
 import numpy as np
 
 from .bestiary import (FLOOR_MOB_MAPPING, FLOOR_MOB_SPAWN_CHANCE, MELEE_ATTACK_COOLDOWN,
-                       MOB_ACHIEVEMENT_MAP, MOB_NAMES, MOB_TYPE_COLLISION_MAPPING,
-                       MOB_TYPE_DAMAGE_MAPPING, MOB_TYPE_DEFENCE_MAPPING, MOB_TYPE_HEALTH_MAPPING,
+                       MOB_ACHIEVEMENT_MAP, MOB_NAMES, MOB_TYPE_DAMAGE_MAPPING,
+                       MOB_TYPE_DEFENCE_MAPPING, MOB_TYPE_ENTERABLE, MOB_TYPE_HEALTH_MAPPING,
                        PROJECTILE_DAMAGE, RANGED_ATTACK_COOLDOWN,
                        RANGED_MOB_TYPE_TO_PROJECTILE_TYPE_MAPPING)
 from .state import MAP_SIZE, MAX_MELEE, MAX_PASSIVE, MAX_RANGED, Mobs, Settings, State, float32
@@ -32,15 +32,13 @@ from .tables import (ARMOUR_DEFENCE_PER_TIER, BOSS_FIGHT_EXTRA_DAMAGE, BOSS_FIGH
                      MONSTERS_KILLED_TO_CLEAR_LEVEL, SLEEPING_MELEE_FACTOR, Achievement, BlockType,
                      MobType, ProjectileType, max_food)
 
-_WATER, _LAVA = int(BlockType.WATER), int(BlockType.LAVA)
 # A mob projectile that flies into these breaks them (they become PATH).
 _BREAKABLE = (int(BlockType.CRAFTING_TABLE), int(BlockType.FURNACE))
 
 # Where mobs spawn (upstream's all_valid_blocks_map), and the boss level's graves.
 _SPAWN_GROUND = np.zeros(len(BlockType), bool)
 _SPAWN_GROUND[[BlockType.GRASS, BlockType.PATH, BlockType.FIRE_GRASS, BlockType.ICE_GRASS]] = True
-_SPAWN_WATER = np.zeros(len(BlockType), bool)
-_SPAWN_WATER[BlockType.WATER] = True
+_SPAWN_WATER = np.arange(len(BlockType)) == BlockType.WATER
 _SPAWN_GRAVES = np.zeros(len(BlockType), bool)
 _SPAWN_GRAVES[[BlockType.GRAVE, BlockType.GRAVE2, BlockType.GRAVE3]] = True
 _DEEP_THING = 5   # the ranged type that spawns in water ("hack for deep thing" upstream)
@@ -188,32 +186,16 @@ def attack_mob(state: State, row: int, col: int, damage: tuple, can_eat: bool) -
 # ---------------------------------------------------------------------------------------------
 # Movement
 #
-# The slots are Python lists (``state.Mobs``): a mover reads and writes list items. The mob map
-# stays numpy (upstream's field, read by the rules' ``is_in_mob``, the planner and spawning);
-# an update reads it through ``.item`` and writes it only where it changes (a move, a death).
-# A class's mobs move in one loop (``_move_melee_mobs`` ...: upstream's rule for one mob, run
-# for each live slot in order), given what every loop reads: the player's cell, the draws'
-# next float (``random``: a mover draws ``int(random() * n)``, which is ``draws.below(n)``
-# without its call) and the despawn limit. A loop writes upstream's
-# is_position_in_bounds_not_in_mob_not_colliding out (a call costs as much as the test): the
-# cell is on the map, not the player's, free of mobs, and its block one the mob may enter
-# (``_ENTERABLE``).
+# A class's mobs move in one loop (``_move_melee_mobs`` ...: upstream's rule for one mob, for
+# each live slot in order), given the player's cell, the draws' next float (``random``: a mover
+# draws ``int(random() * n)``, ``draws.below(n)`` without its call) and the despawn limit. The
+# slots are lists (``state.Mobs``); the mob map, numpy, is read by ``.item`` and written only
+# where it changes. A loop writes upstream's is_position_in_bounds_not_in_mob_not_colliding out
+# (a call costs as much as the test): on the map, not the player's cell, no mob there, and a
+# block the mob may enter (``bestiary.MOB_TYPE_ENTERABLE``).
 
 _FAR = 1 << 30      # a despawn limit no distance reaches
 _ROWS, _COLS = MAP_SIZE     # every state's map (state.py; world generation makes them so)
-
-
-def _enterable(collision: tuple) -> tuple:
-    """For each block: a mob whose collision triple (ground, water, lava) is ``collision`` may
-    step onto it (it is not solid, and the triple lets the mob onto its kind of ground)."""
-    return tuple(not IS_SOLID[block]
-                 and not collision[1 if block == _WATER else 2 if block == _LAVA else 0]
-                 for block in range(len(BlockType)))
-
-
-# [type_id][class] -> [block] -> may enter: MOB_TYPE_COLLISION_MAPPING applied to every block
-_ENTERABLE = tuple(tuple(_enterable(collision) for collision in row)
-                   for row in MOB_TYPE_COLLISION_MAPPING)
 
 
 def _toward(random, d_row: int, d_col: int) -> tuple[int, int]:
@@ -261,7 +243,7 @@ def _move_melee_mobs(state: State, mobs: Mobs, p_row: int, p_col: int, random,
             if (0 <= new_row < _ROWS and 0 <= new_col < _COLS
                     and (new_row != p_row or new_col != p_col)
                     and not occupied.item(level, new_row, new_col)
-                    and _ENTERABLE[type_id][_MELEE][blocks.item(level, new_row, new_col)]):
+                    and MOB_TYPE_ENTERABLE[type_id][_MELEE][blocks.item(level, new_row, new_col)]):
                 positions[slot] = (new_row, new_col)
                 occupied[level, row, col] = False
                 occupied[level, new_row, new_col] = True
@@ -288,10 +270,11 @@ def _move_passive_mobs(state: State, mobs: Mobs, p_row: int, p_col: int, random,
         if choice < 4:
             step_row, step_col = _STEPS[choice]
             new_row, new_col = row + step_row, col + step_col
+            enterable = MOB_TYPE_ENTERABLE[types[slot]][_PASSIVE]
             if (0 <= new_row < _ROWS and 0 <= new_col < _COLS
                     and (new_row != p_row or new_col != p_col)
                     and not occupied.item(level, new_row, new_col)
-                    and _ENTERABLE[types[slot]][_PASSIVE][blocks.item(level, new_row, new_col)]):
+                    and enterable[blocks.item(level, new_row, new_col)]):
                 positions[slot] = (new_row, new_col)
                 occupied[level, row, col] = False
                 occupied[level, new_row, new_col] = True
@@ -331,7 +314,7 @@ def _move_ranged_mobs(state: State, mobs: Mobs, p_row: int, p_col: int, random,
         can_move = (0 <= new_row < _ROWS and 0 <= new_col < _COLS
                     and (new_row != p_row or new_col != p_col)
                     and not occupied.item(level, new_row, new_col)
-                    and _ENTERABLE[type_id][_RANGED][blocks.item(level, new_row, new_col)])
+                    and MOB_TYPE_ENTERABLE[type_id][_RANGED][blocks.item(level, new_row, new_col)])
         if cooldown <= 0 and (4 <= distance <= 5 or (too_close and not can_move)):
             _shoot(state, level, row, col, toward,
                    RANGED_MOB_TYPE_TO_PROJECTILE_TYPE_MAPPING[type_id])
@@ -436,8 +419,7 @@ def _move_player_projectiles(state: State) -> None:
 
 
 def _count_down(group: Mobs, level: int) -> None:
-    """A class with no live mob on the level: its slots' cooldowns count down (as upstream's
-    do for dead slots: a mob spawned into a slot inherits the cooldown)."""
+    """A class with no live mob on the level: its cooldowns count down (as dead slots' do)."""
     group.attack_cooldown[level] = [cooldown - 1 for cooldown in group.attack_cooldown[level]]
 
 
@@ -448,8 +430,7 @@ def update(state: State, settings: Settings, draws) -> None:
     melee, passive, ranged = state.melee_mobs, state.passive_mobs, state.ranged_mobs
     any_melee, any_ranged = True in melee.mask[level], True in ranged.mask[level]
     any_passive = True in passive.mask[level]
-    shots = state.mob_projectiles.mask[level]
-    arrows = state.player_projectiles.mask[level]
+    shots, arrows = state.mob_projectiles.mask[level], state.player_projectiles.mask[level]
     if not (any_melee or any_passive or any_ranged or True in shots or True in arrows):
         _count_down(melee, level)
         _count_down(ranged, level)
