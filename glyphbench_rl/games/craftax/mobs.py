@@ -225,9 +225,9 @@ def _move_melee_mobs(state: State, mobs: Mobs, p_row: int, p_col: int, random,
         row, col = positions[slot]
         type_id = types[slot]
         d_row, d_col = p_row - row, p_col - col
-        distance = abs(d_row) + abs(d_col)
-        if (distance < 10 or chases_anywhere) and random() < 0.75:
-            a_row, a_col = abs(d_row), abs(d_col)       # (_toward, written out)
+        a_row, a_col = abs(d_row), abs(d_col)
+        distance = a_row + a_col
+        if (distance < 10 or chases_anywhere) and random() < 0.75:     # (_toward written out)
             if a_row > a_col or (a_row == a_col and int(random() * 2) == 0):
                 step_row, step_col = (d_row > 0) - (d_row < 0), 0
             else:
@@ -235,7 +235,7 @@ def _move_melee_mobs(state: State, mobs: Mobs, p_row: int, p_col: int, random,
         else:
             step_row, step_col = _STEPS[int(random() * 4)]
         if distance == 1 and cooldown <= 0:
-            hurt_player(state, MOB_TYPE_DAMAGE_MAPPING[type_id][_MELEE], melee=True)
+            hurt_player(state, MOB_TYPE_DAMAGE_MAPPING[type_id][_MELEE], True)    # (melee)
             cooldowns[slot] = MELEE_ATTACK_COOLDOWN
         else:
             cooldowns[slot] = cooldown - 1
