@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from .state import MAX_MELEE, MAX_MOB_PROJECTILES, MAX_PASSIVE, MAX_PLAYER_PROJECTILES, MAX_RANGED
 from .tables import Achievement as A
-from .tables import MobType, ProjectileType
+from .tables import IS_SOLID, BlockType, MobType, ProjectileType
 
 # The type id spawned on each level, per class: (passive, melee, ranged). On the boss level
 # (8) the waves use the row of the boss's progress instead.
@@ -62,6 +62,21 @@ MOB_TYPE_COLLISION_MAPPING = (
     (_L, _L, _F, _F),  # -, frost troll, ice elemental (flies)
     (_L, _L, _L, _F),
 )
+
+
+def _enterable(collision: tuple) -> tuple:
+    """For each block: a mob whose collision triple is ``collision`` may step onto it (it is
+    not solid, and the triple lets the mob onto its kind of ground)."""
+    water, lava = BlockType.WATER, BlockType.LAVA
+    return tuple(not IS_SOLID[block]
+                 and not collision[1 if block == water else 2 if block == lava else 0]
+                 for block in range(len(BlockType)))
+
+
+# [type_id][class] -> [block] -> the mob may enter it (free of mobs and the player): the
+# collision triples applied to every block once, for the movers' one look-up a step
+MOB_TYPE_ENTERABLE = tuple(tuple(_enterable(collision) for collision in row)
+                           for row in MOB_TYPE_COLLISION_MAPPING)
 
 # Damage vectors are (physical, fire, ice).
 NO_DAMAGE = (0.0, 0.0, 0.0)

@@ -22,25 +22,23 @@ from __future__ import annotations
 import numpy as np
 
 from .bestiary import (FLOOR_MOB_MAPPING, FLOOR_MOB_SPAWN_CHANCE, MELEE_ATTACK_COOLDOWN,
-                       MOB_ACHIEVEMENT_MAP, MOB_NAMES, MOB_TYPE_COLLISION_MAPPING,
-                       MOB_TYPE_DAMAGE_MAPPING, MOB_TYPE_DEFENCE_MAPPING, MOB_TYPE_HEALTH_MAPPING,
+                       MOB_ACHIEVEMENT_MAP, MOB_NAMES, MOB_TYPE_DAMAGE_MAPPING,
+                       MOB_TYPE_DEFENCE_MAPPING, MOB_TYPE_ENTERABLE, MOB_TYPE_HEALTH_MAPPING,
                        PROJECTILE_DAMAGE, RANGED_ATTACK_COOLDOWN,
                        RANGED_MOB_TYPE_TO_PROJECTILE_TYPE_MAPPING)
-from .state import MAX_MELEE, MAX_PASSIVE, MAX_RANGED, Mobs, Settings, State, float32
+from .state import MAP_SIZE, MAX_MELEE, MAX_PASSIVE, MAX_RANGED, Mobs, Settings, State, float32
 from .tables import (ARMOUR_DEFENCE_PER_TIER, BOSS_FIGHT_EXTRA_DAMAGE, BOSS_FIGHT_SPAWN_TURNS,
                      BOSS_LEVEL, COW_FOOD, ENCHANTED_ARMOUR_DEFENCE, IS_SOLID,
                      MONSTERS_KILLED_TO_CLEAR_LEVEL, SLEEPING_MELEE_FACTOR, Achievement, BlockType,
                      MobType, ProjectileType, max_food)
 
-_WATER, _LAVA = int(BlockType.WATER), int(BlockType.LAVA)
 # A mob projectile that flies into these breaks them (they become PATH).
 _BREAKABLE = (int(BlockType.CRAFTING_TABLE), int(BlockType.FURNACE))
 
 # Where mobs spawn (upstream's all_valid_blocks_map), and the boss level's graves.
 _SPAWN_GROUND = np.zeros(len(BlockType), bool)
 _SPAWN_GROUND[[BlockType.GRASS, BlockType.PATH, BlockType.FIRE_GRASS, BlockType.ICE_GRASS]] = True
-_SPAWN_WATER = np.zeros(len(BlockType), bool)
-_SPAWN_WATER[BlockType.WATER] = True
+_SPAWN_WATER = np.arange(len(BlockType)) == BlockType.WATER
 _SPAWN_GRAVES = np.zeros(len(BlockType), bool)
 _SPAWN_GRAVES[[BlockType.GRAVE, BlockType.GRAVE2, BlockType.GRAVE3]] = True
 _DEEP_THING = 5   # the ranged type that spawns in water ("hack for deep thing" upstream)
@@ -106,12 +104,16 @@ def damage_to_player(state: State, damage: tuple) -> float:
     """Upstream's get_damage_done_to_player: armour blocks 10% physical damage per tier (summed
     over the four pieces), each fire (ice) enchanted piece 20% of fire (ice) damage; damage is
     x1.5 on the boss level."""
-    enchant = state.armour_enchantments.tolist()
-    defence = (ARMOUR_DEFENCE_PER_TIER * sum(state.inventory.armour.tolist()),
-               ENCHANTED_ARMOUR_DEFENCE * enchant.count(1),
-               ENCHANTED_ARMOUR_DEFENCE * enchant.count(2))
+    physical, fire, ice = damage
     scale = 1.0 + BOSS_FIGHT_EXTRA_DAMAGE if state.player_level == BOSS_LEVEL else 1.0
-    return sum((1.0 - d) * x * scale for d, x in zip(defence, damage))
+    lost = (1.0 - ARMOUR_DEFENCE_PER_TIER * sum(state.inventory.armour.tolist())) * physical * scale
+    if not (fire or ice):
+        # (most blows: the elements' terms are +0.0 (a defence is at most 0.8), and the sum
+        # (0 + lost + 0.0 + 0.0) is ``lost`` itself; the enchantments need not be read)
+        return lost
+    enchant = state.armour_enchantments.tolist()
+    return sum((lost, (1.0 - ENCHANTED_ARMOUR_DEFENCE * enchant.count(1)) * fire * scale,
+                (1.0 - ENCHANTED_ARMOUR_DEFENCE * enchant.count(2)) * ice * scale))
 
 
 def hurt_player(state: State, damage: tuple, melee: bool = False) -> float:
@@ -184,142 +186,153 @@ def attack_mob(state: State, row: int, col: int, damage: tuple, can_eat: bool) -
 # ---------------------------------------------------------------------------------------------
 # Movement
 #
-# The slots are Python lists (``state.Mobs``): a mover reads and writes list items. The mob map
-# stays numpy (upstream's field, read by the rules' ``is_in_mob``, the planner and spawning);
-# an update reads it through ``.item`` and writes it only where it changes (a move, a death).
+# A class's mobs move in one loop (``_move_melee_mobs`` ...: upstream's rule for one mob, for
+# each live slot in order), given the player's cell, the draws' next float (``random``: a mover
+# draws ``int(random() * n)``, ``draws.below(n)`` without its call) and the despawn limit. The
+# slots are lists (``state.Mobs``); the mob map, numpy, is read by ``.item`` and written only
+# where it changes. A loop writes upstream's is_position_in_bounds_not_in_mob_not_colliding out
+# (a call costs as much as the test): on the map, not the player's cell, no mob there, and a
+# block the mob may enter (``bestiary.MOB_TYPE_ENTERABLE``).
 
 _FAR = 1 << 30      # a despawn limit no distance reaches
+_ROWS, _COLS = MAP_SIZE     # every state's map (state.py; world generation makes them so)
 
 
-class _Turn:
-    """What every mover of one update reads: the player's level, the map and mob map (the
-    whole arrays, read and written at ``[level, row, col]``: cheaper than making views of the
-    level), the player's cell, the draws' next float (``random``: a mover draws
-    ``int(random() * n)``, which is ``draws.below(n)`` without its call), the despawn limits,
-    and the mask and position lists of the class of mobs moving now (set by the loop over
-    them)."""
-    __slots__ = ("state", "random", "level", "map", "occupied", "rows", "cols", "p_row", "p_col",
-                 "boss", "passive_limit", "monster_limit", "mask", "positions")
+def _toward(random, d_row: int, d_col: int) -> tuple[int, int]:
+    """One step toward the player along the axis of the larger distance (a tie: either axis,
+    evenly, one draw of ``random``), upstream's player_move_direction."""
+    a_row, a_col = abs(d_row), abs(d_col)
+    if a_row > a_col or (a_row == a_col and int(random() * 2) == 0):
+        return (d_row > 0) - (d_row < 0), 0
+    return 0, (d_col > 0) - (d_col < 0)
 
-    def __init__(self, state: State, settings: Settings, draws) -> None:
-        self.state, self.random = state, draws.random
-        self.level = level = state.player_level
-        self.map, self.occupied = state.map, state.mob_map
-        self.rows, self.cols = self.map.shape[1:]
-        self.p_row, self.p_col = state.player_position.tolist()
-        self.boss = level == BOSS_LEVEL
-        # mobs at this Manhattan distance or more (measured before they move) vanish; upstream
-        # keeps the boss level's monsters (not its passive mobs), and we keep all when
-        # spawning is switched off
-        despawn = settings.mob_despawn_distance if settings.spawning else _FAR
-        self.passive_limit = despawn
-        self.monster_limit = _FAR if self.boss else despawn
 
-    def can_enter(self, row: int, col: int, collision: tuple) -> bool:
-        """Upstream's is_position_in_bounds_not_in_mob_not_colliding."""
-        if not (0 <= row < self.rows and 0 <= col < self.cols):
-            return False
-        level = self.level
-        if self.occupied.item(level, row, col) or (row == self.p_row and col == self.p_col):
-            return False
-        block = self.map.item(level, row, col)
-        if IS_SOLID[block]:
-            return False
-        if block == _WATER:
-            return not collision[1]
-        if block == _LAVA:
-            return not collision[2]
-        return not collision[0]
-
-    def toward(self, d_row: int, d_col: int) -> tuple[int, int]:
-        """One step toward the player along the axis of the larger distance (a tie: either
-        axis, evenly), upstream's player_move_direction."""
-        a_row, a_col = abs(d_row), abs(d_col)
-        if a_row > a_col or (a_row == a_col and int(self.random() * 2) == 0):
-            return (d_row > 0) - (d_row < 0), 0
-        return 0, (d_col > 0) - (d_col < 0)
-
-    def relocate(self, slot: int, row: int, col: int, new_row: int, new_col: int,
-                 alive: bool) -> None:
-        """Write a mob's new cell (if it moved) and its death (not ``alive``: despawned),
-        keeping the mob map exact: the cell left is cleared, the cell entered set. (Upstream
-        sets the cell stood on even when the mob stayed; it is set already.)"""
-        occupied, level = self.occupied, self.level
-        if new_row != row or new_col != col:
-            self.positions[slot] = (new_row, new_col)
-            occupied[level, row, col] = False
-            if alive:
-                occupied[level, new_row, new_col] = True
+def _move_melee_mobs(state: State, mobs: Mobs, p_row: int, p_col: int, random,
+                     limit: int) -> None:
+    """Upstream's melee mob move, for each live slot in order: chase the player (within 10,
+    or always on the boss level: 75% of turns) or wander; hit an adjacent player when the
+    cooldown is over; vanish at ``limit`` or more from the player. Dead slots count their
+    cooldown down too, as upstream (a mob spawned into a slot inherits it)."""
+    level = state.player_level
+    blocks, occupied, chases_anywhere = state.map, state.mob_map, level == BOSS_LEVEL
+    mask, positions = mobs.mask[level], mobs.position[level]
+    types, cooldowns = mobs.type_id[level], mobs.attack_cooldown[level]
+    for slot, alive in enumerate(mask):
+        cooldown = cooldowns[slot]
         if not alive:
-            self.mask[slot] = False
+            cooldowns[slot] = cooldown - 1
+            continue
+        row, col = positions[slot]
+        type_id = types[slot]
+        d_row, d_col = p_row - row, p_col - col
+        a_row, a_col = abs(d_row), abs(d_col)
+        distance = a_row + a_col
+        if (distance < 10 or chases_anywhere) and random() < 0.75:     # (_toward written out)
+            if a_row > a_col or (a_row == a_col and int(random() * 2) == 0):
+                step_row, step_col = (d_row > 0) - (d_row < 0), 0
+            else:
+                step_row, step_col = 0, (d_col > 0) - (d_col < 0)
+        else:
+            step_row, step_col = _STEPS[int(random() * 4)]
+        if distance == 1 and cooldown <= 0:
+            hurt_player(state, MOB_TYPE_DAMAGE_MAPPING[type_id][_MELEE], True)    # (melee)
+            cooldowns[slot] = MELEE_ATTACK_COOLDOWN
+        else:
+            cooldowns[slot] = cooldown - 1
+            new_row, new_col = row + step_row, col + step_col
+            if (0 <= new_row < _ROWS and 0 <= new_col < _COLS
+                    and (new_row != p_row or new_col != p_col)
+                    and not occupied.item(level, new_row, new_col)
+                    and MOB_TYPE_ENTERABLE[type_id][_MELEE][blocks.item(level, new_row, new_col)]):
+                positions[slot] = (new_row, new_col)
+                occupied[level, row, col] = False
+                occupied[level, new_row, new_col] = True
+                row, col = new_row, new_col
+        if distance >= limit:
+            mask[slot] = False
             occupied[level, row, col] = False
 
 
-def _move_melee(turn: _Turn, slot: int, row: int, col: int, type_id: int, cooldown: int) -> int:
-    """Chase the player (within 10, or always on the boss level: 75% of turns) or wander; hit
-    an adjacent player when the cooldown is over. Returns the new cooldown."""
-    d_row, d_col = turn.p_row - row, turn.p_col - col
-    distance = abs(d_row) + abs(d_col)
-    if (distance < 10 or turn.boss) and turn.random() < 0.75:
-        step_row, step_col = turn.toward(d_row, d_col)
-    else:
-        step_row, step_col = _STEPS[int(turn.random() * 4)]
-    new_row, new_col = row, col
-    if distance == 1 and cooldown <= 0:
-        hurt_player(turn.state, MOB_TYPE_DAMAGE_MAPPING[type_id][_MELEE], melee=True)
-        cooldown = MELEE_ATTACK_COOLDOWN
-    else:
-        cooldown -= 1
-        if turn.can_enter(row + step_row, col + step_col,
-                          MOB_TYPE_COLLISION_MAPPING[type_id][_MELEE]):
+def _move_passive_mobs(state: State, mobs: Mobs, p_row: int, p_col: int, random,
+                       limit: int) -> None:
+    """Upstream's passive mob move, for each live slot in order: wander, each of the four
+    steps with 1/8, else stay (upstream's DIRECTIONS[1:9]); vanish at ``limit`` or more from
+    the player."""
+    level = state.player_level
+    blocks, occupied = state.map, state.mob_map
+    mask, positions, types = mobs.mask[level], mobs.position[level], mobs.type_id[level]
+    for slot, alive in enumerate(mask):
+        if not alive:
+            continue
+        row, col = positions[slot]
+        choice = int(random() * 8)
+        distance = abs(p_row - row) + abs(p_col - col)
+        if choice < 4:
+            step_row, step_col = _STEPS[choice]
             new_row, new_col = row + step_row, col + step_col
-    turn.relocate(slot, row, col, new_row, new_col, distance < turn.monster_limit)
-    return cooldown
+            enterable = MOB_TYPE_ENTERABLE[types[slot]][_PASSIVE]
+            if (0 <= new_row < _ROWS and 0 <= new_col < _COLS
+                    and (new_row != p_row or new_col != p_col)
+                    and not occupied.item(level, new_row, new_col)
+                    and enterable[blocks.item(level, new_row, new_col)]):
+                positions[slot] = (new_row, new_col)
+                occupied[level, row, col] = False
+                occupied[level, new_row, new_col] = True
+                row, col = new_row, new_col
+        if distance >= limit:
+            mask[slot] = False
+            occupied[level, row, col] = False
 
 
-def _move_passive(turn: _Turn, slot: int, row: int, col: int, type_id: int) -> None:
-    """Wander: each of the four steps with 1/8, else stay (upstream's DIRECTIONS[1:9])."""
-    choice = int(turn.random() * 8)
-    new_row, new_col = row, col
-    if choice < 4:
-        step_row, step_col = _STEPS[choice]
-        if turn.can_enter(row + step_row, col + step_col,
-                          MOB_TYPE_COLLISION_MAPPING[type_id][_PASSIVE]):
+def _move_ranged_mobs(state: State, mobs: Mobs, p_row: int, p_col: int, random,
+                      limit: int) -> None:
+    """Upstream's ranged mob move, for each live slot in order: keep a shooting distance (15%
+    of turns: closer when 6+ away, back when 3 or less; else wander); shoot at range 4-5, or
+    when it wants to back off but cannot; vanish at ``limit`` or more from the player. Dead
+    slots count their cooldown down too."""
+    level = state.player_level
+    blocks, occupied = state.map, state.mob_map
+    mask, positions = mobs.mask[level], mobs.position[level]
+    types, cooldowns = mobs.type_id[level], mobs.attack_cooldown[level]
+    for slot, alive in enumerate(mask):
+        cooldown = cooldowns[slot]
+        if not alive:
+            cooldowns[slot] = cooldown - 1
+            continue
+        row, col = positions[slot]
+        type_id = types[slot]
+        d_row, d_col = p_row - row, p_col - col
+        distance = abs(d_row) + abs(d_col)
+        toward = _toward(random, d_row, d_col)
+        too_close = distance <= 3
+        if random() > 0.85 and (distance >= 6 or too_close):
+            sign = -1 if too_close else 1
+            new_row, new_col = row + sign * toward[0], col + sign * toward[1]
+        else:
+            step_row, step_col = _STEPS[int(random() * 4)]
             new_row, new_col = row + step_row, col + step_col
-    distance = abs(turn.p_row - row) + abs(turn.p_col - col)
-    turn.relocate(slot, row, col, new_row, new_col, distance < turn.passive_limit)
+        can_move = (0 <= new_row < _ROWS and 0 <= new_col < _COLS
+                    and (new_row != p_row or new_col != p_col)
+                    and not occupied.item(level, new_row, new_col)
+                    and MOB_TYPE_ENTERABLE[type_id][_RANGED][blocks.item(level, new_row, new_col)])
+        if cooldown <= 0 and (4 <= distance <= 5 or (too_close and not can_move)):
+            _shoot(state, level, row, col, toward,
+                   RANGED_MOB_TYPE_TO_PROJECTILE_TYPE_MAPPING[type_id])
+            cooldowns[slot] = RANGED_ATTACK_COOLDOWN
+        else:
+            cooldowns[slot] = cooldown - 1
+            if can_move:
+                positions[slot] = (new_row, new_col)
+                occupied[level, row, col] = False
+                occupied[level, new_row, new_col] = True
+                row, col = new_row, new_col
+        if distance >= limit:
+            mask[slot] = False
+            occupied[level, row, col] = False
 
 
-def _move_ranged(turn: _Turn, slot: int, row: int, col: int, type_id: int, cooldown: int) -> int:
-    """Keep a shooting distance (15% of turns: closer when 6+ away, back when 3 or less; else
-    wander); shoot at range 4-5, or when it wants to back off but cannot. Returns the new
-    cooldown."""
-    d_row, d_col = turn.p_row - row, turn.p_col - col
-    distance = abs(d_row) + abs(d_col)
-    toward = turn.toward(d_row, d_col)
-    too_close = distance <= 3
-    if turn.random() > 0.85 and (distance >= 6 or too_close):
-        sign = -1 if too_close else 1
-        new_row, new_col = row + sign * toward[0], col + sign * toward[1]
-    else:
-        step_row, step_col = _STEPS[int(turn.random() * 4)]
-        new_row, new_col = row + step_row, col + step_col
-    can_move = turn.can_enter(new_row, new_col, MOB_TYPE_COLLISION_MAPPING[type_id][_RANGED])
-    if cooldown <= 0 and (4 <= distance <= 5 or (too_close and not can_move)):
-        _shoot(turn, row, col, toward, RANGED_MOB_TYPE_TO_PROJECTILE_TYPE_MAPPING[type_id])
-        cooldown = RANGED_ATTACK_COOLDOWN
-        new_row, new_col = row, col
-    else:
-        cooldown -= 1
-        if not can_move:
-            new_row, new_col = row, col
-    turn.relocate(slot, row, col, new_row, new_col, distance < turn.monster_limit)
-    return cooldown
-
-
-def _shoot(turn: _Turn, row: int, col: int, direction: tuple, kind: int) -> None:
+def _shoot(state: State, level: int, row: int, col: int, direction: tuple, kind: int) -> None:
     """A mob projectile in the first free slot, if any (upstream's spawn_projectile)."""
-    state, level = turn.state, turn.level
     projectiles = state.mob_projectiles
     mask = projectiles.mask[level]
     if False not in mask:
@@ -331,27 +344,35 @@ def _shoot(turn: _Turn, row: int, col: int, direction: tuple, kind: int) -> None
     state.mob_projectile_directions[level, slot] = direction
 
 
-def _move_mob_projectile(turn: _Turn, slot: int, row: int, col: int, d_row: int, d_col: int,
-                         kind: int) -> None:
-    """Fly one cell; hit the player (on its cell or the next), stop at solid blocks (not
-    water or lava), mobs and the map's edge; break a table or furnace in its way."""
-    projectiles = turn.state.mob_projectiles
-    new_row, new_col = row + d_row, col + d_col
-    p_row, p_col = turn.p_row, turn.p_col
-    hit_player = (row == p_row and col == p_col) or (new_row == p_row and new_col == p_col)
-    flies_on = 0 <= new_row < turn.rows and 0 <= new_col < turn.cols
-    level = turn.level
-    if flies_on:
-        block = turn.map.item(level, new_row, new_col)
-        flies_on = not (hit_player or IS_SOLID[block]
-                        or turn.occupied.item(level, new_row, new_col))
-        if block in _BREAKABLE:
-            turn.map[level, new_row, new_col] = BlockType.PATH
-    if hit_player:
-        hurt_player(turn.state, PROJECTILE_DAMAGE[kind])
-    projectiles.position[level][slot] = (new_row, new_col)
-    if not flies_on:
-        projectiles.mask[level][slot] = False
+def _move_mob_projectiles(state: State, p_row: int, p_col: int) -> None:
+    """Upstream's mob projectile move, for each live slot in order (a projectile shot this
+    turn too): fly one cell; hit the player (on its cell or the next), stop at solid blocks
+    (not water or lava), mobs and the map's edge; break a table or furnace in its way."""
+    level = state.player_level
+    blocks, occupied = state.map, state.mob_map
+    projectiles = state.mob_projectiles
+    mask, positions, kinds = (projectiles.mask[level], projectiles.position[level],
+                              projectiles.type_id[level])
+    steps = state.mob_projectile_directions[level].tolist()
+    for slot, alive in enumerate(mask):
+        if not alive:
+            continue
+        row, col = positions[slot]
+        d_row, d_col = steps[slot]
+        new_row, new_col = row + d_row, col + d_col
+        hit_player = (row == p_row and col == p_col) or (new_row == p_row and new_col == p_col)
+        flies_on = 0 <= new_row < _ROWS and 0 <= new_col < _COLS
+        if flies_on:
+            block = blocks.item(level, new_row, new_col)
+            flies_on = not (hit_player or IS_SOLID[block]
+                            or occupied.item(level, new_row, new_col))
+            if block in _BREAKABLE:
+                blocks[level, new_row, new_col] = BlockType.PATH
+        if hit_player:
+            hurt_player(state, PROJECTILE_DAMAGE[kinds[slot]])
+        positions[slot] = (new_row, new_col)
+        if not flies_on:
+            mask[slot] = False
 
 
 def player_projectile_damage(state: State, kind: int) -> tuple:
@@ -370,57 +391,36 @@ def player_projectile_damage(state: State, kind: int) -> tuple:
     return tuple(x * scale for x in damage)
 
 
-def _move_player_projectile(turn: _Turn, slot: int, row: int, col: int, d_row: int, d_col: int,
-                            kind: int) -> None:
-    """Strike a mob on its own cell (one stepped onto it), else on its next cell; fly on
-    unless it struck, left the map or met a solid block (it crosses water and lava)."""
-    state = turn.state
+def _move_player_projectiles(state: State) -> None:
+    """Upstream's player projectile move, for each live slot in order: strike a mob on its own
+    cell (one stepped onto it), else on its next cell; fly on unless it struck, left the map
+    or met a solid block (it crosses water and lava)."""
+    level = state.player_level
+    occupied = state.mob_map
     projectiles = state.player_projectiles
-    new_row, new_col = row + d_row, col + d_col
-    damage = player_projectile_damage(state, kind)
-    level, occupied = turn.level, turn.occupied
-    hit = ((occupied.item(level, row, col) and attack_mob(state, row, col, damage, False)[0])
-           or (0 <= new_row < turn.rows and 0 <= new_col < turn.cols
-               and occupied.item(level, new_row, new_col)
-               and attack_mob(state, new_row, new_col, damage, False)[0]))
-    flies_on = (not hit and 0 <= new_row < turn.rows and 0 <= new_col < turn.cols
-                and not IS_SOLID[turn.map.item(level, new_row, new_col)])
-    projectiles.position[level][slot] = (new_row, new_col)
-    if not flies_on:
-        projectiles.mask[level][slot] = False
-
-
-def _move_monsters(turn: _Turn, group: Mobs, mover) -> None:
-    """Melee or ranged mobs in slot order; dead slots only count their cooldown down, as
-    upstream (a mob spawned into a slot inherits its cooldown). (A mover changes no slot but
-    its own, so the mask is read as it goes.)"""
-    level = turn.level
-    mask, positions = group.mask[level], group.position[level]
-    types, cooldowns = group.type_id[level], group.attack_cooldown[level]
-    turn.mask, turn.positions = mask, positions
+    mask, positions, kinds = (projectiles.mask[level], projectiles.position[level],
+                              projectiles.type_id[level])
+    steps = state.player_projectile_directions[level].tolist()
     for slot, alive in enumerate(mask):
-        if alive:
-            row, col = positions[slot]
-            cooldowns[slot] = mover(turn, slot, row, col, types[slot], cooldowns[slot])
-        else:
-            cooldowns[slot] -= 1
+        if not alive:
+            continue
+        row, col = positions[slot]
+        d_row, d_col = steps[slot]
+        new_row, new_col = row + d_row, col + d_col
+        damage = player_projectile_damage(state, kinds[slot])
+        on_map = 0 <= new_row < _ROWS and 0 <= new_col < _COLS
+        hit = ((occupied.item(level, row, col) and attack_mob(state, row, col, damage, False)[0])
+               or (on_map and occupied.item(level, new_row, new_col)
+                   and attack_mob(state, new_row, new_col, damage, False)[0]))
+        flies_on = not hit and on_map and not IS_SOLID[state.map.item(level, new_row, new_col)]
+        positions[slot] = (new_row, new_col)
+        if not flies_on:
+            mask[slot] = False
 
 
 def _count_down(group: Mobs, level: int) -> None:
-    """Dead slots count their cooldown down too, as upstream (a spawned mob inherits it)."""
+    """A class with no live mob on the level: its cooldowns count down (as dead slots' do)."""
     group.attack_cooldown[level] = [cooldown - 1 for cooldown in group.attack_cooldown[level]]
-
-
-def _fly(turn: _Turn, projectiles: Mobs, directions, mover) -> None:
-    """The live projectiles of one kind in slot order (each mover changes only its own slot)."""
-    level = turn.level
-    positions, kinds = projectiles.position[level], projectiles.type_id[level]
-    steps = directions[level].tolist()
-    for slot, alive in enumerate(projectiles.mask[level]):
-        if alive:
-            row, col = positions[slot]
-            d_row, d_col = steps[slot]
-            mover(turn, slot, row, col, d_row, d_col, kinds[slot])
 
 
 def update(state: State, settings: Settings, draws) -> None:
@@ -428,37 +428,35 @@ def update(state: State, settings: Settings, draws) -> None:
     order, then mob projectiles, then the player's projectiles."""
     level = state.player_level
     melee, passive, ranged = state.melee_mobs, state.passive_mobs, state.ranged_mobs
-    melee_mask, ranged_mask = melee.mask[level], ranged.mask[level]
-    passive_mask = passive.mask[level]
-    shots = state.mob_projectiles.mask[level]
-    arrows = state.player_projectiles.mask[level]
-    if (True not in melee_mask and True not in passive_mask and True not in ranged_mask
-            and True not in shots and True not in arrows):
+    any_melee, any_ranged = True in melee.mask[level], True in ranged.mask[level]
+    any_passive = True in passive.mask[level]
+    shots, arrows = state.mob_projectiles.mask[level], state.player_projectiles.mask[level]
+    if not (any_melee or any_passive or any_ranged or True in shots or True in arrows):
         _count_down(melee, level)
         _count_down(ranged, level)
         return
-    turn = _Turn(state, settings, draws)
-    if True in melee_mask:
-        _move_monsters(turn, melee, _move_melee)
+    p_row, p_col = state.player_position.tolist()
+    random = draws.random
+    # mobs at this Manhattan distance or more (measured before they move) vanish; upstream
+    # keeps the boss level's monsters (not its passive mobs), and we keep all when spawning
+    # is switched off
+    despawn = settings.mob_despawn_distance if settings.spawning else _FAR
+    monster_limit = _FAR if level == BOSS_LEVEL else despawn
+    if any_melee:
+        _move_melee_mobs(state, melee, p_row, p_col, random, monster_limit)
     else:
         _count_down(melee, level)
-    if True in passive_mask:
-        positions, types = passive.position[level], passive.type_id[level]
-        turn.mask, turn.positions = passive_mask, positions
-        for slot, alive in enumerate(passive_mask):
-            if alive:
-                row, col = positions[slot]
-                _move_passive(turn, slot, row, col, types[slot])
-    if True in ranged_mask:
-        _move_monsters(turn, ranged, _move_ranged)
+    if any_passive:
+        _move_passive_mobs(state, passive, p_row, p_col, random, despawn)
+    if any_ranged:
+        _move_ranged_mobs(state, ranged, p_row, p_col, random, monster_limit)
     else:
         _count_down(ranged, level)
     # (the mask lists are the state's own: a projectile a ranged mob shot this turn flies too)
     if True in shots:
-        _fly(turn, state.mob_projectiles, state.mob_projectile_directions, _move_mob_projectile)
+        _move_mob_projectiles(state, p_row, p_col)
     if True in arrows:
-        _fly(turn, state.player_projectiles, state.player_projectile_directions,
-             _move_player_projectile)
+        _move_player_projectiles(state)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -561,35 +559,39 @@ def spawn(state: State, settings: Settings, draws) -> None:
     level = state.player_level
     chances = FLOOR_MOB_SPAWN_CHANCE[level]
     boss = level == BOSS_LEVEL
+    random = draws.random
     far = settings.mob_despawn_distance ** 2
     coeff = 3.0 if state.monsters_killed.item(level) < MONSTERS_KILLED_TO_CLEAR_LEVEL else 1.0
     if boss:
         coeff *= 1000.0 if state.boss_timesteps_to_spawn_this_round >= 1 else 0.0
 
     if (not boss and state.passive_mobs.mask[level].count(True) < MAX_PASSIVE
-            and draws.random() < chances[0]):
+            and random() < chances[0]):
         cell = _spawn_cell(state, _SPAWN_GROUND, 9, far, draws)
         if cell is not None:
             _add_mob(state, state.passive_mobs, _PASSIVE, FLOOR_MOB_MAPPING[level][_PASSIVE], cell)
-
-    near, monster_far = (-1, min(far, 37)) if boss else (81, far)   # boss: d <= 6
-    mob_row = FLOOR_MOB_MAPPING[state.boss_progress if boss else level]
-
-    melee_chance = chances[1] + chances[3] * (1.0 - state.light_level) ** 2
     if (state.melee_mobs.mask[level].count(True) < MAX_MELEE
-            and draws.random() < melee_chance * coeff):
-        cell = _spawn_cell(state, _SPAWN_GRAVES if boss else _SPAWN_GROUND, near, monster_far,
-                           draws)
-        if cell is not None:
-            _add_mob(state, state.melee_mobs, _MELEE, mob_row[_MELEE], cell)
-
+            and random() < (chances[1] + chances[3] * (1.0 - state.light_level) ** 2) * coeff):
+        _spawn_monster(state, state.melee_mobs, _MELEE, far, draws)
     if (state.ranged_mobs.mask[level].count(True) < MAX_RANGED
-            and draws.random() < chances[2] * coeff):
-        type_id = mob_row[_RANGED]
-        allowed = _SPAWN_GRAVES if boss else _SPAWN_WATER if type_id == _DEEP_THING else _SPAWN_GROUND
-        cell = _spawn_cell(state, allowed, near, monster_far, draws)
-        if cell is not None:
-            _add_mob(state, state.ranged_mobs, _RANGED, type_id, cell)
+            and random() < chances[2] * coeff):
+        _spawn_monster(state, state.ranged_mobs, _RANGED, far, draws)
+
+
+def _spawn_monster(state: State, mobs: Mobs, kind: int, far: int, draws) -> None:
+    """A melee or ranged mob (``kind``) whose spawn roll came up: of its level's type, on
+    ground 9 to the despawn distance (squared: ``far``) away, deep things in water; on the
+    boss level, of the boss's progress's type, on graves within 6."""
+    level = state.player_level
+    if level == BOSS_LEVEL:
+        type_id = FLOOR_MOB_MAPPING[state.boss_progress][kind]
+        cell = _spawn_cell(state, _SPAWN_GRAVES, -1, min(far, 37), draws)
+    else:
+        type_id = FLOOR_MOB_MAPPING[level][kind]
+        water = kind == _RANGED and type_id == _DEEP_THING
+        cell = _spawn_cell(state, _SPAWN_WATER if water else _SPAWN_GROUND, 81, far, draws)
+    if cell is not None:
+        _add_mob(state, mobs, kind, type_id, cell)
 
 
 __all__ = ["update", "spawn", "add_mob", "boss_logic", "damage_necromancer", "attack_mob",
