@@ -519,11 +519,11 @@ def step(state: State, action: int, settings, draws, after_mobs=None) -> float:
 
     grow_plants(state)
     update_intrinsics(state, action, settings)
-    clip_vitals(state, settings)
-    inventory_achievements(state)
+    held = clip_vitals(state, settings)
+    after = inventory_achievements(state, held)    # (the achievements' bytes now)
 
     reward = 0.0
-    if achievements.tobytes() != before:
+    if after != before:
         old = np.frombuffer(before, dtype=bool)
         reward = float(_WEIGHTS[achievements & ~old].sum())
     reward += (state.player_health - health) * 0.1

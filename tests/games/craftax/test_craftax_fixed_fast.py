@@ -79,6 +79,39 @@ def test_clip_vitals_and_inventory_achievements_as_the_plain_rules(god_mode):
         assert _snapshot(fast) == _snapshot(plain)
 
 
+def test_the_upkeep_remembering_its_last_look_up_follows_edits_between_steps():
+    """``clip_vitals`` and ``inventory_achievements`` as the step calls them (the held counts
+    ``clip_vitals`` returns passed on) on one state edited now and then between calls, as
+    scenario events and tests do (an achievement cleared, a count changed, or nothing: the
+    remembered look-ups are then used), give what the plain rules give on a copy."""
+    rng = np.random.default_rng(12)
+    settings = Settings()
+    state = worldgen.blank(settings)
+    remembered = 0
+    for _ in range(3000):
+        what = rng.random()
+        if what < 0.25:
+            name = COUNTS[int(rng.integers(len(COUNTS)))]
+            setattr(state.inventory, name, int(rng.integers(0, 3)) if rng.random() < 0.9
+                    else int(rng.integers(98, 120)))
+        elif what < 0.5:
+            state.achievements[int(rng.integers(state.achievements.size))] = bool(
+                rng.random() < 0.3)
+        elif what < 0.55:
+            state.player_food = int(rng.integers(-2, 12))
+        plain = state.copy()
+        remembered += upkeep.held_counts(state.inventory) == upkeep._EARNED[0] and (
+            state.achievements.tobytes() == upkeep._EARNED[1])
+        held = upkeep.clip_vitals(state, settings)
+        after = upkeep.inventory_achievements(state, held)
+        plain_clip_vitals(plain, settings)
+        plain_inventory_achievements(plain)
+        assert _snapshot(state) == _snapshot(plain)
+        assert held == upkeep.held_counts(state.inventory)
+        assert after == state.achievements.tobytes()
+    assert 500 < remembered < 2900
+
+
 def test_is_near_block_reads_the_eight_cells_around_the_player():
     """Also at the map's edges and corners, and with the block under the player (god mode)."""
     rng = np.random.default_rng(2)
