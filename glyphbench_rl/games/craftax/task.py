@@ -322,8 +322,10 @@ class CraftaxTask(GlyphTask):
         tally.before_step(state, action)
         native = rules.step(state, action, self.settings, self.draws, after_mobs=tally.after_mobs)
         tally.after_step(state, action)
-        if self.events or self.ctx.reserve:     # (most scenarios have neither)
+        if self.events:     # (most scenarios have no events and no waiting mobs)
             self.scenario.run_events(self, state, tally)
+        elif self.ctx.reserve:      # (all run_events does without events)
+            self.ctx.admit(state, self.play_rng)
         self._score(state, tally, native)
 
     def _score(self, state, tally: Tally, native: float) -> None:
