@@ -339,6 +339,11 @@ class _Band:
     def _cut(self, c0: int, player: int) -> bytes:
         r0, rows, cols = self.where
         band = self.codes
+        if 0 <= c0 <= cols - COLS and len(band) == ROWS * cols:
+            # (the usual window, all on the map: its rows cut from the band, nothing to pad)
+            codes = bytearray(b"".join([band[i:i + COLS] for i in range(c0, len(band), cols)]))
+            codes[_CENTRE] = player
+            return bytes(codes)
         ca, cb = max(c0, 0), min(c0 + COLS, cols)
         off = bytes((_OFF_MAP,))
         left, right = off * (ca - c0), off * (c0 + COLS - cb)      # cells off the map: their glyph
