@@ -49,8 +49,8 @@ def update_intrinsics(state: State, action: int, settings) -> None:
     energy never fall; sleep still restores energy (and so ends), health and mana still
     recover."""
     # (this runs every step: the fields are read once into locals and written once, and the
-    # maxima are worked out only where one is read, which an awake, not resting turn with no
-    # need at its limit never does)
+    # maxima and health are read only where needed, which an awake, not resting turn with no
+    # need at its limit never does. Nothing here writes health before it is read.)
     dex, energy = state.player_dexterity, state.player_energy
     asleep = state.is_sleeping
     if asleep or action == _SLEEP:
@@ -60,9 +60,9 @@ def update_intrinsics(state: State, action: int, settings) -> None:
         if asleep and energy >= top_energy:
             asleep = state.is_sleeping = False
             state.achievements[_WAKE_UP] = True
-    food, drink, health = state.player_food, state.player_drink, state.player_health
+    food, drink = state.player_food, state.player_drink
     if action == _REST or state.is_resting:
-        top_health = max_health(state.player_strength)
+        health, top_health = state.player_health, max_health(state.player_strength)
         if action == _REST and health < top_health:
             state.is_resting = True
         if state.is_resting and (health >= top_health or food <= 0 or drink <= 0):
@@ -86,22 +86,22 @@ def update_intrinsics(state: State, action: int, settings) -> None:
     if intrinsics or asleep:      # (asleep, fatigue only falls: energy only grows)
         fatigue = min(state.player_fatigue - 1, 0) if asleep else state.player_fatigue + decay
         if fatigue > FATIGUE_LIMIT:
-            state.player_energy = max(energy - fall, 0)
+            energy = state.player_energy = max(energy - fall, 0)
             fatigue = 0.0
-        if fatigue < FATIGUE_RESTED:
-            state.player_energy = min(energy + 1, max_energy(dex))
+        elif fatigue < FATIGUE_RESTED:
+            energy = state.player_energy = min(energy + 1, max_energy(dex))
             fatigue = 0.0
         state.player_fatigue = float(fatigue)
 
-    if food > 0 and drink > 0 and (state.player_energy > 0 or asleep):   # the needs are met
+    if food > 0 and drink > 0 and (energy > 0 or asleep):   # the needs are met
         recover = state.player_recover + RECOVER_RATE[asleep]
     else:
         recover = state.player_recover + DERECOVER_RATE[asleep] * fall
     if recover > RECOVER_LIMIT:
-        state.player_health = min(health + 1, max_health(state.player_strength))
+        state.player_health = min(state.player_health + 1, max_health(state.player_strength))
         recover = 0.0
-    if recover < DERECOVER_LIMIT:
-        state.player_health = health - 1
+    elif recover < DERECOVER_LIMIT:
+        state.player_health -= 1
         recover = 0.0
     state.player_recover = recover
 
