@@ -15,8 +15,8 @@ from .tables import (
     BOSS_LEVEL, DERECOVER_LIMIT, DERECOVER_RATE, DEXTERITY_DECAY, FATIGUE_LIMIT, FATIGUE_RESTED,
     GOD_MODE_MIN_HEALTH, HUNGER_LIMIT, INTELLIGENCE_MANA_BONUS, INVENTORY_ACHIEVEMENTS,
     MANA_LIMIT, MANA_RATE, PLANT_RIPE_AGE, RECOVER_LIMIT, RECOVER_RATE, SLEEP_INTRINSIC_RATE,
-    STACK_LIMIT, THIRST_LIMIT, Achievement, Action, BlockType, light_level, max_energy, max_food,
-    max_health, max_mana,
+    STACK_LIMIT, THIRST_LIMIT, Achievement, Action, BlockType, light_level, max_drink, max_energy,
+    max_food, max_health, max_mana,
 )
 
 _RIPE = int(BlockType.RIPE_PLANT)
@@ -157,6 +157,12 @@ def _facts(held: tuple) -> tuple[bool, tuple[int, ...], int]:
     return facts
 
 
+# the least maximum of any vital: each maximum grows with its attribute, which is at least 1
+_LEAST_TOP = min(max_health(1), max_food(1), max_drink(1), max_energy(1), max_mana(1))
+assert all(f(a + 1) > f(a) >= _LEAST_TOP for f in (max_health, max_food, max_drink, max_energy,
+                                                    max_mana) for a in range(1, 20))
+
+
 def clip_vitals(state: State, settings) -> tuple:
     """Inventory counts at most 99; vitals within [0, maximum] (the maxima grow with the
     attributes); god mode keeps health at least 9. Returns the held counts after the clip
@@ -170,18 +176,25 @@ def clip_vitals(state: State, settings) -> tuple:
                 setattr(inv, name, STACK_LIMIT)
         held = held_counts(inv)
     # (armour is at most 2; potions only grow in chests, whose loot clips them)
-    dex = state.player_dexterity
+    dex, strength, intelligence = (state.player_dexterity, state.player_strength,
+                                   state.player_intelligence)
     low = GOD_MODE_MIN_HEALTH if settings.god_mode else 0
-    health, top = state.player_health, max_health(state.player_strength)
+    health, food, drink, energy, mana = (state.player_health, state.player_food,
+                                         state.player_drink, state.player_energy,
+                                         state.player_mana)
+    if (low <= health <= _LEAST_TOP and 0 <= food <= _LEAST_TOP and 0 <= drink <= _LEAST_TOP
+            and 0 <= energy <= _LEAST_TOP and 0 <= mana <= _LEAST_TOP
+            and strength >= 1 and dex >= 1 and intelligence >= 1):
+        return held     # (within every maximum: the usual turn, no maximum worked out)
+    top = max_health(strength)
     if health < low or health > top:
         state.player_health = float(min(max(health, low), top))
     top = max_food(dex)    # = max_drink(dex) = max_energy(dex)
-    food, drink, energy = state.player_food, state.player_drink, state.player_energy
     if not (0 <= food <= top and 0 <= drink <= top and 0 <= energy <= top):
         state.player_food = min(max(food, 0), top)
         state.player_drink = min(max(drink, 0), top)
         state.player_energy = min(max(energy, 0), top)
-    mana, top = state.player_mana, max_mana(state.player_intelligence)
+    top = max_mana(intelligence)
     if not (0 <= mana <= top):
         state.player_mana = min(max(mana, 0), top)
     return held

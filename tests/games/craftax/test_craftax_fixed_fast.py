@@ -62,7 +62,7 @@ def test_clip_vitals_and_inventory_achievements_as_the_plain_rules(god_mode):
         earned = rng.random(fast.achievements.size) < 0.3 * rng.random()
         vitals = (float(rng.integers(-3, 14)) / (2 if rng.random() < 0.3 else 1),
                   *(int(x) for x in rng.integers(-2, 13, 4)))
-        attributes = (int(x) for x in rng.integers(1, 4, 3))
+        attributes = (int(x) for x in rng.integers(0, 4, 3))     # (0: below any state's)
         for state in (fast, plain):
             for name, n in zip(COUNTS, counts.tolist()):
                 setattr(state.inventory, name, n)
