@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .state import State
+from .state import MAX_GROWING_PLANTS, State
 from .tables import (
     BOSS_LEVEL, DERECOVER_LIMIT, DERECOVER_RATE, DEXTERITY_DECAY, FATIGUE_LIMIT, FATIGUE_RESTED,
     GOD_MODE_MIN_HEALTH, HUNGER_LIMIT, INTELLIGENCE_MANA_BONUS, INVENTORY_ACHIEVEMENTS,
@@ -24,12 +24,17 @@ _SLEEP, _REST = int(Action.SLEEP), int(Action.REST)
 _WAKE_UP = int(Achievement.WAKE_UP)
 
 
+# the plant slots' bytes with no plant growing and every age 0 (as the state keeps them: a bool
+# and an int32 a slot; slots kept otherwise take the rule's path, which changes nothing then)
+_NO_PLANTS, _NO_AGES = bytes(MAX_GROWING_PLANTS), bytes(4 * MAX_GROWING_PLANTS)
+
+
 def grow_plants(state: State) -> None:
     """Growing plants (level 0) age by one (a free slot's age stays 0); at ``PLANT_RIPE_AGE``
     their block is a ripe plant."""
     mask = state.growing_plants_mask
     age = state.growing_plants_age
-    if not (mask.tobytes() + age.tobytes()).strip(b"\x00"):
+    if mask.tobytes() == _NO_PLANTS and age.tobytes() == _NO_AGES:
         return          # (no plant growing and every age 0, the common case: nothing changes)
     age += 1
     age *= mask

@@ -11,8 +11,8 @@ from glyphbench_rl import make
 from glyphbench_rl.games.craftax import rules, scenarios, upkeep, worldgen
 from glyphbench_rl.games.craftax.state import Settings
 from glyphbench_rl.games.craftax.tables import (
-    CLOSE_BLOCKS, GOD_MODE_MIN_HEALTH, INVENTORY_ACHIEVEMENTS, NUM_LEVELS, STACK_LIMIT, Action,
-    BlockType, light_level, max_food, max_health, max_mana)
+    CLOSE_BLOCKS, GOD_MODE_MIN_HEALTH, INVENTORY_ACHIEVEMENTS, NUM_LEVELS, PLANT_RIPE_AGE,
+    STACK_LIMIT, Action, BlockType, light_level, max_food, max_health, max_mana)
 
 COUNTS = ("wood", "stone", "coal", "iron", "diamond", "sapling", "pickaxe", "sword", "bow",
           "arrows", "torches", "ruby", "sapphire", "books")
@@ -110,6 +110,43 @@ def test_the_upkeep_remembering_its_last_look_up_follows_edits_between_steps():
         assert held == upkeep.held_counts(state.inventory)
         assert after == state.achievements.tobytes()
     assert 500 < remembered < 2900
+
+
+def _plain_grow_plants(state) -> None:
+    state.growing_plants_age += 1
+    state.growing_plants_age *= state.growing_plants_mask
+    for i in np.flatnonzero(state.growing_plants_age >= PLANT_RIPE_AGE):
+        r, c = state.growing_plants_positions[i]
+        state.map[0, r, c] = int(BlockType.RIPE_PLANT)
+
+
+def test_grow_plants_skipping_no_plants_is_the_plain_rule():
+    """No plant and every age 0 returns at once; any plant, a stray age of a free slot, or
+    slots kept in other dtypes take the rule, as the plain rule does."""
+    rng = np.random.default_rng(13)
+    state = worldgen.blank(Settings())
+    skipped = 0
+    for turn in range(1500):
+        what = rng.random()
+        if what < 0.05:
+            state.growing_plants_mask[int(rng.integers(10))] = True
+        elif what < 0.1:
+            state.growing_plants_mask[:] = False
+        elif what < 0.12:
+            state.growing_plants_age[int(rng.integers(10))] = int(rng.integers(0, 700))
+        elif what < 0.13:
+            state.growing_plants_age = state.growing_plants_age.astype(
+                np.int64 if state.growing_plants_age.dtype == np.int32 else np.int32)
+        if rng.random() < 0.1:
+            state.growing_plants_positions[:] = rng.integers(0, 48, (10, 2))
+        plain = state.copy()
+        skipped += not state.growing_plants_mask.any() and not state.growing_plants_age.any()
+        upkeep.grow_plants(state)
+        _plain_grow_plants(plain)
+        assert np.array_equal(state.map, plain.map), turn
+        assert state.growing_plants_age.tobytes() == plain.growing_plants_age.tobytes(), turn
+        assert state.growing_plants_age.dtype == plain.growing_plants_age.dtype
+    assert 100 < skipped < 1400
 
 
 def test_is_near_block_reads_the_eight_cells_around_the_player():
