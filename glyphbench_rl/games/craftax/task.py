@@ -96,6 +96,9 @@ class Tally:
         self.changes = 0
         self._last_level, self._last_kills = state.player_level, 0     # after the last step
         self._achieved = None     # the achievements' bytes after the last step (a test reads one)
+        # ``rules.step``'s ``held``: the step sets the held counts it ended with, ``after_step``
+        # takes them (and, when a step did not set them, reads them itself)
+        self.step_held: list = [None]
 
     @staticmethod
     def _holdings(state) -> tuple:
@@ -212,7 +215,9 @@ class Tally:
         counts = self.counts
         counts["turn"] += 1
         changed = False          # a steady counter changed (``changes``)
-        held = held_counts(state.inventory)
+        held, self.step_held[0] = self.step_held[0], None
+        if held is None:
+            held = held_counts(state.inventory)
         if held != self._held:
             for k, old, new in zip(ITEMS, self._held, held):
                 if new > old:
@@ -320,7 +325,8 @@ class CraftaxTask(GlyphTask):
     def _act(self, action: int) -> None:
         state, tally = self.state, self.tally
         tally.before_step(state, action)
-        native = rules.step(state, action, self.settings, self.draws, after_mobs=tally.after_mobs)
+        native = rules.step(state, action, self.settings, self.draws, after_mobs=tally.after_mobs,
+                            held=tally.step_held)
         tally.after_step(state, action)
         if self.events:     # (most scenarios have no events and no waiting mobs)
             self.scenario.run_events(self, state, tally)

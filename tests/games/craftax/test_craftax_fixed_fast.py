@@ -264,6 +264,33 @@ def test_tally_follows_the_holdings_it_writes_out():
         assert task.tally._held == task.tally._holdings(task.state)
 
 
+@pytest.mark.parametrize("name", ["choptrees", "iron-bootstrap", "fight-zombies"])
+def test_tally_takes_the_held_counts_the_step_ended_with(name):
+    """The step hands the tally the held counts its upkeep read (``rules.step``'s ``held``):
+    they are the inventory's after the step, and ``got`` counts what a plain reading of the
+    inventory after each step counts, the inventory also edited between steps."""
+    task = make(f"glyphbench/craftax-{name}-v0")
+    rng = np.random.default_rng(10)
+    for seed in range(2):
+        task.reset(seed=seed)
+        held = upkeep.held_counts(task.state.inventory)
+        got = dict.fromkeys(COUNTS, 0)
+        for _ in range(150):
+            if task.done:
+                break
+            action = int(Action.DO) if rng.random() < 0.4 else int(rng.integers(task.action_space.n))
+            task.step(action)
+            now = upkeep.held_counts(task.state.inventory)
+            for name_, old, new in zip(upkeep.COUNTS, held, now):
+                got[name_] += max(new - old, 0)
+            held = now
+            assert task.tally._held == now and task.tally.got == {k: got[k] for k in task.tally.got}
+            assert task.tally.step_held == [None]
+            if rng.random() < 0.2:      # an edit between steps, as scenario events make
+                item = str(rng.choice(["wood", "stone", "coal", "iron", "sapling", "arrows"]))
+                setattr(task.state.inventory, item, int(rng.integers(0, 6)))
+
+
 class _Values:
     """A stand-in tally: counters read from a dict."""
 
