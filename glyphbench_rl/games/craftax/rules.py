@@ -472,12 +472,12 @@ _RULE = ({_DO: _DO_RULE, int(Action.SHOOT_ARROW): _SHOOT_RULE, int(Action.READ_B
 _LADDERS = (_DESCEND, _ASCEND)
 
 
-def step(state: State, action: int, settings, draws, after_mobs=None, held=None) -> float:
+def step(state: State, action: int, settings, draws, after_mobs=None, ended=None) -> float:
     """One upstream step (see the module docstring); returns upstream's reward. ``after_mobs``,
     if given, is called with the state after the mobs moved and before any spawn (a task
-    counting kills looks at the mob slots then, before a spawn can reuse one). ``held``, if
-    given, a list: its first item is set to the inventory's ``held_counts`` at the end of the
-    step (read by the upkeep; a task's tally reads them there)."""
+    counting kills looks at the mob slots then, before a spawn can reuse one). ``ended``, if
+    given, a list of two: set to the inventory's ``held_counts`` and the achievements' bytes
+    the step ended with (the upkeep read them; a task's tally takes them there)."""
     achievements = state.achievements
     before = achievements.tobytes()
     health = state.player_health
@@ -523,8 +523,8 @@ def step(state: State, action: int, settings, draws, after_mobs=None, held=None)
     update_intrinsics(state, action, settings)
     counts = clip_vitals(state, settings)
     after = inventory_achievements(state, counts)    # (the achievements' bytes now)
-    if held is not None:
-        held[0] = counts
+    if ended is not None:
+        ended[0], ended[1] = counts, after
 
     reward = 0.0
     if after != before:

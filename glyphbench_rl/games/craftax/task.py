@@ -96,9 +96,9 @@ class Tally:
         self.changes = 0
         self._last_level, self._last_kills = state.player_level, 0     # after the last step
         self._achieved = None     # the achievements' bytes after the last step (a test reads one)
-        # ``rules.step``'s ``held``: the step sets the held counts it ended with, ``after_step``
-        # takes them (and, when a step did not set them, reads them itself)
-        self.step_held: list = [None]
+        # ``rules.step``'s ``ended``: the step sets the held counts and achievements' bytes it
+        # ended with, ``after_step`` takes them (and reads them itself when no step set them)
+        self.step_ended: list = [None, None]
 
     @staticmethod
     def _holdings(state) -> tuple:
@@ -215,7 +215,9 @@ class Tally:
         counts = self.counts
         counts["turn"] += 1
         changed = False          # a steady counter changed (``changes``)
-        held, self.step_held[0] = self.step_held[0], None
+        ended = self.step_ended
+        held, achieved = ended
+        ended[0] = ended[1] = None
         if held is None:
             held = held_counts(state.inventory)
         if held != self._held:
@@ -265,7 +267,8 @@ class Tally:
             counts["deepest"] = level
             changed = True
         if self._achieved is not None:
-            achieved = state.achievements.tobytes()
+            if achieved is None:
+                achieved = state.achievements.tobytes()
             if achieved != self._achieved:
                 self._achieved = achieved
                 changed = True
@@ -326,7 +329,7 @@ class CraftaxTask(GlyphTask):
         state, tally = self.state, self.tally
         tally.before_step(state, action)
         native = rules.step(state, action, self.settings, self.draws, after_mobs=tally.after_mobs,
-                            held=tally.step_held)
+                            ended=tally.step_ended)
         tally.after_step(state, action)
         if self.events:     # (most scenarios have no events and no waiting mobs)
             self.scenario.run_events(self, state, tally)

@@ -265,14 +265,16 @@ def test_tally_follows_the_holdings_it_writes_out():
 
 
 @pytest.mark.parametrize("name", ["choptrees", "iron-bootstrap", "fight-zombies"])
-def test_tally_takes_the_held_counts_the_step_ended_with(name):
-    """The step hands the tally the held counts its upkeep read (``rules.step``'s ``held``):
-    they are the inventory's after the step, and ``got`` counts what a plain reading of the
-    inventory after each step counts, the inventory also edited between steps."""
+def test_tally_takes_the_held_counts_and_achievements_the_step_ended_with(name):
+    """The step hands the tally the held counts and achievements' bytes its upkeep read
+    (``rules.step``'s ``ended``): they are the state's after the step, and ``got`` counts what
+    a plain reading of the inventory after each step counts, the inventory and achievements
+    also edited between steps (``changes`` follows a ``done.`` counter then)."""
     task = make(f"glyphbench/craftax-{name}-v0")
     rng = np.random.default_rng(10)
     for seed in range(2):
         task.reset(seed=seed)
+        task.tally.getter("done.collect_wood")       # (the tally follows the achievements)
         held = upkeep.held_counts(task.state.inventory)
         got = dict.fromkeys(COUNTS, 0)
         for _ in range(150):
@@ -285,10 +287,13 @@ def test_tally_takes_the_held_counts_the_step_ended_with(name):
                 got[name_] += max(new - old, 0)
             held = now
             assert task.tally._held == now and task.tally.got == {k: got[k] for k in task.tally.got}
-            assert task.tally.step_held == [None]
+            assert task.tally._achieved == task.state.achievements.tobytes()
+            assert task.tally.step_ended == [None, None]
             if rng.random() < 0.2:      # an edit between steps, as scenario events make
                 item = str(rng.choice(["wood", "stone", "coal", "iron", "sapling", "arrows"]))
                 setattr(task.state.inventory, item, int(rng.integers(0, 6)))
+            if rng.random() < 0.1:
+                task.state.achievements[int(rng.integers(task.state.achievements.size))] ^= True
 
 
 class _Values:
