@@ -296,12 +296,12 @@ def place(state: State, action: int) -> None:
     sapling, onto grass) or torch (onto ``CAN_PLACE_ITEM`` blocks) on the facing cell, which
     must be in bounds, without a mob, and (but for those exceptions) neither solid nor holding
     an item. A torch adds its light to the level's light map."""
-    r, c = facing(state)
-    if not in_bounds(state, r, c) or is_in_mob(state, state.player_level, r, c):
-        return
     level, inv = state.player_level, state.inventory
     item_name, cost, block, achievement = _PLACING[action]
-    if getattr(inv, item_name) < cost:
+    if getattr(inv, item_name) < cost:      # (the cheaper test first: both only return)
+        return
+    r, c = facing(state)
+    if not in_bounds(state, r, c) or is_in_mob(state, level, r, c):
         return
     here = state.map.item(level, r, c)
     has_item = state.item_map.item(level, r, c) != ItemType.NONE
