@@ -364,7 +364,7 @@ def cast_spell(state: State, action: int) -> None:
     """A learned spell with 2 mana and a free projectile slot: a fireball / iceball starts at
     the player's cell."""
     index, kind, achievement = _SPELLS[action]
-    if (state.learned_spells[index] and state.player_mana >= SPELL_MANA_COST
+    if (state.learned_spells.item(index) and state.player_mana >= SPELL_MANA_COST
             and _projectile_slot_free(state)):
         _spawn_player_projectile(state, kind)
         state.player_mana -= SPELL_MANA_COST
@@ -376,7 +376,7 @@ def drink_potion(state: State, action: int) -> None:
     (``tables.POTION_EFFECTS``); vitals are clipped at the end of the step."""
     colour = _POTION_INDEX[action]
     potions = state.inventory.potions
-    if potions[colour] <= 0:
+    if potions.item(colour) <= 0:      # (a Python number: a numpy scalar's test costs more)
         return
     potions[colour] -= 1
     vital, change = POTION_EFFECTS[int(state.potion_mapping[colour])]
