@@ -42,12 +42,13 @@ def _number(x: float) -> str:
 # change on many turns, in a fight to values not seen before) and the kit (inventory, gear,
 # potions, spells, attributes: few turns); the place (floor, position, facing, light, kills)
 # changes on most turns, but only in its position. ``hud`` reads everything each time (an
-# edited state shows at once) and compares it with last turn's: each part is remade only when
-# what it reads was not seen before, and the place's text around the position likewise.
+# edited state shows at once) into one key of the parts' keys: the same key as last turn's
+# gives last turn's line; otherwise each part is remade only when what it reads was not seen
+# before, and the place's text around the position likewise.
 _VITALS: dict[tuple, str] = {}     # what the vitals read -> their text
 _KITS: dict[tuple, str] = {}       # what the kit reads -> its text ("" for none)
 _PLACES: dict[tuple, tuple[str, str]] = {}   # floor, facing, daylight, kills -> text around the position
-# last turn's vitals key, vitals, kit key, kit, place key, place, the parts of the line, the line
+# last turn's vitals key, vitals, kit key, kit, place key, place, the whole key, the line
 _last: list = [None, "", None, "", None, ("", ""), None, ""]
 
 
@@ -56,40 +57,41 @@ def hud(state: State, settings: Settings | None = None) -> str:
     facing, light and rest state; empty parts left out, parts joined by `` | ``. (Its parts
     are remembered by the values they read, see above.)"""
     del settings   # (the HUD reads only the state; kept for the engine's call shape)
-    inv, last = state.inventory, _last
+    inv, last, level = state.inventory, _last, state.player_level
     strength, dex, intelligence = (state.player_strength, state.player_dexterity,
                                    state.player_intelligence)
-    key = (state.player_health, state.player_food, state.player_drink, state.player_energy,
-           state.player_mana, strength, dex, intelligence)
-    if key == last[0]:
+    vitals_key = (state.player_health, state.player_food, state.player_drink,
+                  state.player_energy, state.player_mana, strength, dex, intelligence)
+    kit_key = (state.player_xp, strength, dex, intelligence, inv.wood, inv.stone, inv.coal,
+               inv.iron, inv.diamond, inv.sapphire, inv.ruby, inv.sapling, inv.torches,
+               inv.arrows, inv.books, inv.pickaxe, inv.sword, inv.bow, state.sword_enchantment,
+               state.bow_enchantment, inv.armour.tobytes(), state.armour_enchantments.tobytes(),
+               inv.potions.tobytes(), state.learned_spells.tobytes())
+    place_key = (level, state.player_direction, state.light_level >= NIGHT_LIGHT,
+                 state.monsters_killed.item(level))
+    key = (vitals_key, kit_key, place_key, state.player_position.tolist(), state.is_sleeping,
+           state.is_resting)
+    if key == last[6]:      # (most turns: nothing the line shows changed)
+        return last[7]
+    if vitals_key == last[0]:
         vitals = last[1]
     else:
-        vitals = _remembered(_VITALS, key, _vitals, state)
-        last[0], last[1] = key, vitals
-    key = (state.player_xp, strength, dex, intelligence, inv.wood, inv.stone, inv.coal,
-           inv.iron, inv.diamond, inv.sapphire, inv.ruby, inv.sapling, inv.torches, inv.arrows,
-           inv.books, inv.pickaxe, inv.sword, inv.bow, state.sword_enchantment,
-           state.bow_enchantment, inv.armour.tobytes(), state.armour_enchantments.tobytes(),
-           inv.potions.tobytes(), state.learned_spells.tobytes())
-    if key == last[2]:
+        vitals = _remembered(_VITALS, vitals_key, _vitals, state)
+        last[0], last[1] = vitals_key, vitals
+    if kit_key == last[2]:
         kit = last[3]
     else:
-        kit = _remembered(_KITS, key, _kit, state)
-        last[2], last[3] = key, kit
-    level = state.player_level
-    key = (level, state.player_direction, state.light_level >= NIGHT_LIGHT,
-           state.monsters_killed.item(level))
-    if key == last[4]:
+        kit = _remembered(_KITS, kit_key, _kit, state)
+        last[2], last[3] = kit_key, kit
+    if place_key == last[4]:
         before, after = last[5]
     else:
-        place = _remembered(_PLACES, key, _place, state)
-        last[4], last[5] = key, place
+        place = _remembered(_PLACES, place_key, _place, state)
+        last[4], last[5] = place_key, place
         before, after = place
-    row, col = state.player_position.tolist()
-    rest = " | Sleeping" if state.is_sleeping else " | Resting" if state.is_resting else ""
-    parts = (vitals, kit, before, row, col, after, rest)
-    if parts != last[6]:        # (the player often stays put: then the line is last turn's)
-        last[6], last[7] = parts, f"{vitals}{kit} | {before}{row},{col}{after}{rest}"
+    row, col = key[3]
+    rest = " | Sleeping" if key[4] else " | Resting" if key[5] else ""
+    last[6], last[7] = key, f"{vitals}{kit} | {before}{row},{col}{after}{rest}"
     return last[7]
 
 

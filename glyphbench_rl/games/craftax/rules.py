@@ -296,12 +296,12 @@ def place(state: State, action: int) -> None:
     sapling, onto grass) or torch (onto ``CAN_PLACE_ITEM`` blocks) on the facing cell, which
     must be in bounds, without a mob, and (but for those exceptions) neither solid nor holding
     an item. A torch adds its light to the level's light map."""
-    r, c = facing(state)
-    if not in_bounds(state, r, c) or is_in_mob(state, state.player_level, r, c):
-        return
     level, inv = state.player_level, state.inventory
     item_name, cost, block, achievement = _PLACING[action]
-    if getattr(inv, item_name) < cost:
+    if getattr(inv, item_name) < cost:      # (the cheaper test first: both only return)
+        return
+    r, c = facing(state)
+    if not in_bounds(state, r, c) or is_in_mob(state, level, r, c):
         return
     here = state.map.item(level, r, c)
     has_item = state.item_map.item(level, r, c) != ItemType.NONE
@@ -364,7 +364,7 @@ def cast_spell(state: State, action: int) -> None:
     """A learned spell with 2 mana and a free projectile slot: a fireball / iceball starts at
     the player's cell."""
     index, kind, achievement = _SPELLS[action]
-    if (state.learned_spells[index] and state.player_mana >= SPELL_MANA_COST
+    if (state.learned_spells.item(index) and state.player_mana >= SPELL_MANA_COST
             and _projectile_slot_free(state)):
         _spawn_player_projectile(state, kind)
         state.player_mana -= SPELL_MANA_COST
@@ -376,7 +376,7 @@ def drink_potion(state: State, action: int) -> None:
     (``tables.POTION_EFFECTS``); vitals are clipped at the end of the step."""
     colour = _POTION_INDEX[action]
     potions = state.inventory.potions
-    if potions[colour] <= 0:
+    if potions.item(colour) <= 0:      # (a Python number: a numpy scalar's test costs more)
         return
     potions[colour] -= 1
     vital, change = POTION_EFFECTS[int(state.potion_mapping[colour])]
@@ -472,10 +472,12 @@ _RULE = ({_DO: _DO_RULE, int(Action.SHOOT_ARROW): _SHOOT_RULE, int(Action.READ_B
 _LADDERS = (_DESCEND, _ASCEND)
 
 
-def step(state: State, action: int, settings, draws, after_mobs=None) -> float:
+def step(state: State, action: int, settings, draws, after_mobs=None, ended=None) -> float:
     """One upstream step (see the module docstring); returns upstream's reward. ``after_mobs``,
     if given, is called with the state after the mobs moved and before any spawn (a task
-    counting kills looks at the mob slots then, before a spawn can reuse one)."""
+    counting kills looks at the mob slots then, before a spawn can reuse one). ``ended``, if
+    given, a list of two: set to the inventory's ``held_counts`` and the achievements' bytes
+    the step ended with (the upkeep read them; a task's tally takes them there)."""
     achievements = state.achievements
     before = achievements.tobytes()
     health = state.player_health
@@ -519,11 +521,13 @@ def step(state: State, action: int, settings, draws, after_mobs=None) -> float:
 
     grow_plants(state)
     update_intrinsics(state, action, settings)
-    clip_vitals(state, settings)
-    inventory_achievements(state)
+    counts = clip_vitals(state, settings)
+    after = inventory_achievements(state, counts)    # (the achievements' bytes now)
+    if ended is not None:
+        ended[0], ended[1] = counts, after
 
     reward = 0.0
-    if achievements.tobytes() != before:
+    if after != before:
         old = np.frombuffer(before, dtype=bool)
         reward = float(_WEIGHTS[achievements & ~old].sum())
     reward += (state.player_health - health) * 0.1

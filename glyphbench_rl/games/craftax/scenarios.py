@@ -301,15 +301,29 @@ class Context:
         self.r0, self.c0 = (int(v) for v in state.player_position)
         self.floor = _floor_block(state)
         self.reserve: list[tuple[str, int, int]] = []
+        # the waiting list ``admit`` left and the classes of its mobs (all of known names), to
+        # tell at once that every one of them still waits (see ``admit``)
+        self._waited: tuple[list, tuple[int, ...]] = ([], ())
 
     def admit(self, state, rng) -> None:
         """Each waiting mob, in turn, whose class has a free slot takes a random free cell in
         its ring (one draw, when the ring has a free cell); the others wait, drawing nothing.
-        A ring's free cells are found once and found again only after a mob was placed."""
-        waiting = []
-        rings: dict[tuple[int, int], tuple] = {}
+        A ring's free cells are found once and found again only after a mob was placed.
+
+        While the list is the one the last call left and none of its mobs' classes has a free
+        slot, every mob waits and nothing is drawn: the list stays as it is, without the walk
+        over it (a fight scenario's step, its mobs all out, asks this every turn)."""
         groups = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)
         level = state.player_level
+        waited, classes = self._waited
+        if self.reserve == waited:
+            for k in classes:
+                if False in groups[k].mask[level]:
+                    break
+            else:
+                return
+        waiting = []
+        rings: dict[tuple[int, int], tuple] = {}
         for name, dmin, dmax in self.reserve:
             known = MOB_BY_NAME.get(name)
             if known is not None and False not in groups[known[0]].mask[level]:
@@ -328,6 +342,9 @@ class Context:
             else:
                 waiting.append((name, dmin, dmax))
         self.reserve = waiting
+        known = [MOB_BY_NAME.get(name) for name, _, _ in waiting]
+        self._waited = ((list(waiting), tuple({k[0] for k in known})) if None not in known
+                        else ([None], ()))       # (a list no reserve equals: never skipped)
 
 
 def _free_ring(state, dmin: int, dmax: int, floor: int):

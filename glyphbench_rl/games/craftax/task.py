@@ -96,6 +96,9 @@ class Tally:
         self.changes = 0
         self._last_level, self._last_kills = state.player_level, 0     # after the last step
         self._achieved = None     # the achievements' bytes after the last step (a test reads one)
+        # ``rules.step``'s ``ended``: the step sets the held counts and achievements' bytes it
+        # ended with, ``after_step`` takes them (and reads them itself when no step set them)
+        self.step_ended: list = [None, None]
 
     @staticmethod
     def _holdings(state) -> tuple:
@@ -212,7 +215,11 @@ class Tally:
         counts = self.counts
         counts["turn"] += 1
         changed = False          # a steady counter changed (``changes``)
-        held = held_counts(state.inventory)
+        ended = self.step_ended
+        held, achieved = ended
+        ended[0] = ended[1] = None
+        if held is None:
+            held = held_counts(state.inventory)
         if held != self._held:
             for k, old, new in zip(ITEMS, self._held, held):
                 if new > old:
@@ -260,7 +267,8 @@ class Tally:
             counts["deepest"] = level
             changed = True
         if self._achieved is not None:
-            achieved = state.achievements.tobytes()
+            if achieved is None:
+                achieved = state.achievements.tobytes()
             if achieved != self._achieved:
                 self._achieved = achieved
                 changed = True
@@ -320,10 +328,13 @@ class CraftaxTask(GlyphTask):
     def _act(self, action: int) -> None:
         state, tally = self.state, self.tally
         tally.before_step(state, action)
-        native = rules.step(state, action, self.settings, self.draws, after_mobs=tally.after_mobs)
+        native = rules.step(state, action, self.settings, self.draws, after_mobs=tally.after_mobs,
+                            ended=tally.step_ended)
         tally.after_step(state, action)
-        if self.events or self.ctx.reserve:     # (most scenarios have neither)
+        if self.events:     # (most scenarios have no events and no waiting mobs)
             self.scenario.run_events(self, state, tally)
+        elif self.ctx.reserve:      # (all run_events does without events)
+            self.ctx.admit(state, self.play_rng)
         self._score(state, tally, native)
 
     def _score(self, state, tally: Tally, native: float) -> None:

@@ -339,6 +339,11 @@ class _Band:
     def _cut(self, c0: int, player: int) -> bytes:
         r0, rows, cols = self.where
         band = self.codes
+        if 0 <= c0 <= cols - COLS and len(band) == ROWS * cols:
+            # (the usual window, all on the map: its rows cut from the band, nothing to pad)
+            codes = bytearray(b"".join([band[i:i + COLS] for i in range(c0, len(band), cols)]))
+            codes[_CENTRE] = player
+            return bytes(codes)
         ca, cb = max(c0, 0), min(c0 + COLS, cols)
         off = bytes((_OFF_MAP,))
         left, right = off * (ca - c0), off * (c0 + COLS - cb)      # cells off the map: their glyph
@@ -396,12 +401,16 @@ def _window(state: State) -> tuple[bytes, tuple[str, ...] | None, list[tuple[int
     if band_views is None:
         band_views = _band_views(maps, level, r0)
     blocks, items, light = band_views
-    raw = (blocks.tobytes(), items.tobytes(), light.tobytes())
     where = (r0, maps[3], maps[4])
     band = kept[4]
-    if band is None or band.raw != raw or band.where != where or (
+    # (the band as last read, if it is at the same rows and its bytes are the maps' now: each
+    # compared where it lies, ``startswith`` of a view as long as the bytes, without a copy)
+    if band is None or band.where != where or not (
+            band.raw[0].startswith(blocks) and band.raw[1].startswith(items)
+            and band.raw[2].startswith(light)) or (
             band.ladder and band.open != (state.monsters_killed.item(level) >= KILLS_TO_OPEN_LADDER)):
-        band = kept[4] = _Band(where, raw, state.monsters_killed.item(level))
+        band = kept[4] = _Band(where, (blocks.tobytes(), items.tobytes(), light.tobytes()),
+                               state.monsters_killed.item(level))
     key = (c0, _PLAYER0 + (0 if state.is_sleeping else state.player_direction),
            level == BOSS_LEVEL and band.necromancer and is_boss_vulnerable(state))
     window = band.windows.get(key) or band.window(*key)

@@ -11,8 +11,8 @@ from glyphbench_rl import make
 from glyphbench_rl.games.craftax import rules, scenarios, upkeep, worldgen
 from glyphbench_rl.games.craftax.state import Settings
 from glyphbench_rl.games.craftax.tables import (
-    CLOSE_BLOCKS, GOD_MODE_MIN_HEALTH, INVENTORY_ACHIEVEMENTS, NUM_LEVELS, STACK_LIMIT, Action,
-    BlockType, light_level, max_food, max_health, max_mana)
+    CLOSE_BLOCKS, GOD_MODE_MIN_HEALTH, INVENTORY_ACHIEVEMENTS, NUM_LEVELS, PLANT_RIPE_AGE,
+    STACK_LIMIT, Action, BlockType, light_level, max_food, max_health, max_mana)
 
 COUNTS = ("wood", "stone", "coal", "iron", "diamond", "sapling", "pickaxe", "sword", "bow",
           "arrows", "torches", "ruby", "sapphire", "books")
@@ -62,7 +62,7 @@ def test_clip_vitals_and_inventory_achievements_as_the_plain_rules(god_mode):
         earned = rng.random(fast.achievements.size) < 0.3 * rng.random()
         vitals = (float(rng.integers(-3, 14)) / (2 if rng.random() < 0.3 else 1),
                   *(int(x) for x in rng.integers(-2, 13, 4)))
-        attributes = (int(x) for x in rng.integers(1, 4, 3))
+        attributes = (int(x) for x in rng.integers(0, 4, 3))     # (0: below any state's)
         for state in (fast, plain):
             for name, n in zip(COUNTS, counts.tolist()):
                 setattr(state.inventory, name, n)
@@ -77,6 +77,76 @@ def test_clip_vitals_and_inventory_achievements_as_the_plain_rules(god_mode):
         plain_clip_vitals(plain, settings)
         plain_inventory_achievements(plain)
         assert _snapshot(fast) == _snapshot(plain)
+
+
+def test_the_upkeep_remembering_its_last_look_up_follows_edits_between_steps():
+    """``clip_vitals`` and ``inventory_achievements`` as the step calls them (the held counts
+    ``clip_vitals`` returns passed on) on one state edited now and then between calls, as
+    scenario events and tests do (an achievement cleared, a count changed, or nothing: the
+    remembered look-ups are then used), give what the plain rules give on a copy."""
+    rng = np.random.default_rng(12)
+    settings = Settings()
+    state = worldgen.blank(settings)
+    remembered = 0
+    for _ in range(3000):
+        what = rng.random()
+        if what < 0.25:
+            name = COUNTS[int(rng.integers(len(COUNTS)))]
+            setattr(state.inventory, name, int(rng.integers(0, 3)) if rng.random() < 0.9
+                    else int(rng.integers(98, 120)))
+        elif what < 0.5:
+            state.achievements[int(rng.integers(state.achievements.size))] = bool(
+                rng.random() < 0.3)
+        elif what < 0.55:
+            state.player_food = int(rng.integers(-2, 12))
+        plain = state.copy()
+        remembered += upkeep.held_counts(state.inventory) == upkeep._EARNED[0] and (
+            state.achievements.tobytes() == upkeep._EARNED[1])
+        held = upkeep.clip_vitals(state, settings)
+        after = upkeep.inventory_achievements(state, held)
+        plain_clip_vitals(plain, settings)
+        plain_inventory_achievements(plain)
+        assert _snapshot(state) == _snapshot(plain)
+        assert held == upkeep.held_counts(state.inventory)
+        assert after == state.achievements.tobytes()
+    assert 500 < remembered < 2900
+
+
+def _plain_grow_plants(state) -> None:
+    state.growing_plants_age += 1
+    state.growing_plants_age *= state.growing_plants_mask
+    for i in np.flatnonzero(state.growing_plants_age >= PLANT_RIPE_AGE):
+        r, c = state.growing_plants_positions[i]
+        state.map[0, r, c] = int(BlockType.RIPE_PLANT)
+
+
+def test_grow_plants_skipping_no_plants_is_the_plain_rule():
+    """No plant and every age 0 returns at once; any plant, a stray age of a free slot, or
+    slots kept in other dtypes take the rule, as the plain rule does."""
+    rng = np.random.default_rng(13)
+    state = worldgen.blank(Settings())
+    skipped = 0
+    for turn in range(1500):
+        what = rng.random()
+        if what < 0.05:
+            state.growing_plants_mask[int(rng.integers(10))] = True
+        elif what < 0.1:
+            state.growing_plants_mask[:] = False
+        elif what < 0.12:
+            state.growing_plants_age[int(rng.integers(10))] = int(rng.integers(0, 700))
+        elif what < 0.13:
+            state.growing_plants_age = state.growing_plants_age.astype(
+                np.int64 if state.growing_plants_age.dtype == np.int32 else np.int32)
+        if rng.random() < 0.1:
+            state.growing_plants_positions[:] = rng.integers(0, 48, (10, 2))
+        plain = state.copy()
+        skipped += not state.growing_plants_mask.any() and not state.growing_plants_age.any()
+        upkeep.grow_plants(state)
+        _plain_grow_plants(plain)
+        assert np.array_equal(state.map, plain.map), turn
+        assert state.growing_plants_age.tobytes() == plain.growing_plants_age.tobytes(), turn
+        assert state.growing_plants_age.dtype == plain.growing_plants_age.dtype
+    assert 100 < skipped < 1400
 
 
 def test_is_near_block_reads_the_eight_cells_around_the_player():
@@ -192,6 +262,38 @@ def test_tally_follows_the_holdings_it_writes_out():
         task.tally.before_step(task.state, 0)
         task.tally.after_step(task.state, 0)
         assert task.tally._held == task.tally._holdings(task.state)
+
+
+@pytest.mark.parametrize("name", ["choptrees", "iron-bootstrap", "fight-zombies"])
+def test_tally_takes_the_held_counts_and_achievements_the_step_ended_with(name):
+    """The step hands the tally the held counts and achievements' bytes its upkeep read
+    (``rules.step``'s ``ended``): they are the state's after the step, and ``got`` counts what
+    a plain reading of the inventory after each step counts, the inventory and achievements
+    also edited between steps (``changes`` follows a ``done.`` counter then)."""
+    task = make(f"glyphbench/craftax-{name}-v0")
+    rng = np.random.default_rng(10)
+    for seed in range(2):
+        task.reset(seed=seed)
+        task.tally.getter("done.collect_wood")       # (the tally follows the achievements)
+        held = upkeep.held_counts(task.state.inventory)
+        got = dict.fromkeys(COUNTS, 0)
+        for _ in range(150):
+            if task.done:
+                break
+            action = int(Action.DO) if rng.random() < 0.4 else int(rng.integers(task.action_space.n))
+            task.step(action)
+            now = upkeep.held_counts(task.state.inventory)
+            for name_, old, new in zip(upkeep.COUNTS, held, now):
+                got[name_] += max(new - old, 0)
+            held = now
+            assert task.tally._held == now and task.tally.got == {k: got[k] for k in task.tally.got}
+            assert task.tally._achieved == task.state.achievements.tobytes()
+            assert task.tally.step_ended == [None, None]
+            if rng.random() < 0.2:      # an edit between steps, as scenario events make
+                item = str(rng.choice(["wood", "stone", "coal", "iron", "sapling", "arrows"]))
+                setattr(task.state.inventory, item, int(rng.integers(0, 6)))
+            if rng.random() < 0.1:
+                task.state.achievements[int(rng.integers(task.state.achievements.size))] ^= True
 
 
 class _Values:
