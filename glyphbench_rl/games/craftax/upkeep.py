@@ -145,9 +145,10 @@ assert COUNTS == ("wood", "stone", "coal", "iron", "diamond", "ruby", "sapphire"
 # here.
 _FACTS: dict[tuple, tuple[bool, tuple[int, ...], int]] = {}
 # the held counts looked up last and their facts; the held counts and achievements' bytes
-# ``inventory_achievements`` last found every earned achievement in
-_LAST: list = [None, None]
-_EARNED: list = [None, None]
+# ``inventory_achievements`` last found every earned achievement in. Each is one pair, read and
+# replaced whole (process-wide memos of pure functions: a pair is never seen half written)
+_LAST: list = [(None, None)]
+_EARNED: list = [(None, None)]
 
 
 def _facts(held: tuple) -> tuple[bool, tuple[int, ...], int]:
@@ -158,7 +159,7 @@ def _facts(held: tuple) -> tuple[bool, tuple[int, ...], int]:
             _FACTS.clear()
         earned = tuple(a for i, least, a in _INVENTORY_ACHIEVEMENTS if held[i] >= least)
         facts = _FACTS[held] = (max(held) > STACK_LIMIT, earned, sum(1 << 8 * a for a in earned))
-    _LAST[0], _LAST[1] = held, facts
+    _LAST[0] = held, facts
     return facts
 
 
@@ -175,7 +176,8 @@ def clip_vitals(state: State, settings) -> tuple:
     them)."""
     inv = state.inventory
     held = held_counts(inv)
-    if (_LAST[1] if held == _LAST[0] else _facts(held))[0]:
+    last = _LAST[0]
+    if (last[1] if held == last[0] else _facts(held))[0]:
         for name in COUNTS:
             if getattr(inv, name) > STACK_LIMIT:
                 setattr(inv, name, STACK_LIMIT)
@@ -217,14 +219,16 @@ def inventory_achievements(state: State, held: tuple | None = None) -> bytes:
         held = held_counts(state.inventory)
     ach = state.achievements
     now = ach.tobytes()
-    if now == _EARNED[1] and held == _EARNED[0]:
+    earned_in = _EARNED[0]
+    if now == earned_in[1] and held == earned_in[0]:
         return now
-    _, earned, mask = _LAST[1] if held == _LAST[0] else _facts(held)
+    last = _LAST[0]
+    _, earned, mask = last[1] if held == last[0] else _facts(held)
     if mask and mask & ~int.from_bytes(now, "little"):
         for achievement in earned:
             ach[achievement] = True
         now = ach.tobytes()
-    _EARNED[0], _EARNED[1] = held, now
+    _EARNED[0] = held, now
     return now
 
 

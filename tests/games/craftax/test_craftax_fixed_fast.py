@@ -100,8 +100,8 @@ def test_the_upkeep_remembering_its_last_look_up_follows_edits_between_steps():
         elif what < 0.55:
             state.player_food = int(rng.integers(-2, 12))
         plain = state.copy()
-        remembered += upkeep.held_counts(state.inventory) == upkeep._EARNED[0] and (
-            state.achievements.tobytes() == upkeep._EARNED[1])
+        remembered += upkeep.held_counts(state.inventory) == upkeep._EARNED[0][0] and (
+            state.achievements.tobytes() == upkeep._EARNED[0][1])
         held = upkeep.clip_vitals(state, settings)
         after = upkeep.inventory_achievements(state, held)
         plain_clip_vitals(plain, settings)
