@@ -38,7 +38,8 @@ _BREAKABLE = (int(BlockType.CRAFTING_TABLE), int(BlockType.FURNACE))
 # Where mobs spawn (upstream's all_valid_blocks_map), and the boss level's graves.
 _SPAWN_GROUND = np.zeros(len(BlockType), bool)
 _SPAWN_GROUND[[BlockType.GRASS, BlockType.PATH, BlockType.FIRE_GRASS, BlockType.ICE_GRASS]] = True
-_SPAWN_WATER = np.arange(len(BlockType)) == BlockType.WATER
+_SPAWN_WATER = np.zeros(len(BlockType), bool)
+_SPAWN_WATER[BlockType.WATER] = True
 _SPAWN_GRAVES = np.zeros(len(BlockType), bool)
 _SPAWN_GRAVES[[BlockType.GRAVE, BlockType.GRAVE2, BlockType.GRAVE3]] = True
 _DEEP_THING = 5   # the ranged type that spawns in water ("hack for deep thing" upstream)
@@ -225,13 +226,9 @@ def _move_melee_mobs(state: State, mobs: Mobs, p_row: int, p_col: int, random,
         row, col = positions[slot]
         type_id = types[slot]
         d_row, d_col = p_row - row, p_col - col
-        a_row, a_col = abs(d_row), abs(d_col)
-        distance = a_row + a_col
-        if (distance < 10 or chases_anywhere) and random() < 0.75:     # (_toward written out)
-            if a_row > a_col or (a_row == a_col and int(random() * 2) == 0):
-                step_row, step_col = (d_row > 0) - (d_row < 0), 0
-            else:
-                step_row, step_col = 0, (d_col > 0) - (d_col < 0)
+        distance = abs(d_row) + abs(d_col)
+        if (distance < 10 or chases_anywhere) and random() < 0.75:
+            step_row, step_col = _toward(random, d_row, d_col)
         else:
             step_row, step_col = _STEPS[int(random() * 4)]
         if distance == 1 and cooldown <= 0:

@@ -87,15 +87,9 @@ def is_free(state: State, level: int, pos) -> bool:
 
 
 def player_can_enter(state: State, r: int, c: int) -> bool:
-    """Upstream's land-creature collision for the player: free (``is_free``), and neither water
-    nor lava. (Written out: every move asks it.)"""
-    rows, cols = state.map.shape[1:]
-    if not (0 <= r < rows and 0 <= c < cols):
-        return False
+    """Upstream's land-creature collision for the player: free, and neither water nor lava."""
     level = state.player_level
-    block = state.map.item(level, r, c)
-    return (not IS_SOLID[block] and block != _WATER and block != _LAVA
-            and not is_in_mob(state, level, r, c))
+    return is_free(state, level, (r, c)) and state.map.item(level, r, c) not in (_WATER, _LAVA)
 
 
 def player_damage_vector(state: State) -> tuple[float, float, float]:
