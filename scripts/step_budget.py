@@ -1,0 +1,99 @@
+#!/usr/bin/env python
+"""Where a task's step time goes: the grid, the HUD, the game's own turn, the shared frame.
+
+    python scripts/step_budget.py [--tasks IDS|GLOB|FILE] [--runs 3] [--steps 400] [--rounds 2]
+
+Each task is played as ``glyphbench bench`` plays it (random actions on seeds 0 .. runs-1, every
+step timed, the median kept) five ways, alternating within each round, the least disturbed round
+of each kept:
+
+- ``full``: as it is;
+- the grid held: ``_grid`` returns the first frame's rows (the game still plays the same turns);
+- the HUD held: ``_hud`` returns the first frame's line;
+- both held;
+- nothing but the frame: ``_act`` does nothing and both are held (the step every task pays for
+  turn counting, the legend, the observation text and the info dict).
+
+and prints per task ``full``, ``grid`` (full - grid held), ``hud`` (full - HUD held), ``turn``
+(both held - frame) and ``frame``, then their medians over the tasks. Measured in the running
+loop, so each part is charged what it costs there (a part timed alone, with its data in the
+caches, comes out cheaper). The parts need not add up to ``full`` exactly.
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import sys
+import time
+
+from glyphbench_rl.core import make, resolve_tasks, seeding
+
+VARIANTS = ("full", "grid held", "hud held", "both held", "frame only")
+
+
+def _hold(task, variant: str) -> None:
+    """Patch ``task`` (just reset) for ``variant``: its hooks return the first frame's parts."""
+    for name in ("_grid", "_hud", "_act"):
+        task.__dict__.pop(name, None)
+    if variant == "full":
+        return
+    grid, hud = tuple(type(task)._grid(task)), type(task)._hud(task)
+    if variant in ("grid held", "both held", "frame only"):
+        task._grid = lambda: grid
+    if variant in ("hud held", "both held", "frame only"):
+        task._hud = lambda: hud
+    if variant == "frame only":
+        task._act = lambda action: None
+
+
+def _median_step(task, variant: str, runs: int, steps: int) -> float:
+    clock, times = time.perf_counter, []
+    for seed in range(runs):
+        actions = [int(a) for a in seeding.generator(seed, "bench-actions").integers(
+            task.action_space.n, size=steps)]
+        task.reset(seed=seed)
+        _hold(task, variant)
+        episode, step = 0, task.step
+        for a in actions:
+            if task.done:
+                episode += 1
+                task.reset(seed=seeding.TRAIN_SEEDS.stop - 1 - seed * 1000 - episode)
+                _hold(task, variant)
+            t0 = clock()
+            step(a)
+            times.append(clock() - t0)
+    _hold(task, "full")
+    return statistics.median(times) * 1e6
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--tasks", default="glyphbench/craftax-*")
+    parser.add_argument("--runs", type=int, default=3)
+    parser.add_argument("--steps", type=int, default=400)
+    parser.add_argument("--rounds", type=int, default=2)
+    args = parser.parse_args(argv)
+    task_ids = resolve_tasks(args.tasks)
+    best = {task_id: dict.fromkeys(VARIANTS, float("inf")) for task_id in task_ids}
+    tasks = {task_id: make(task_id) for task_id in task_ids}
+    for _ in range(args.rounds):
+        for task_id, task in tasks.items():
+            for variant in VARIANTS:
+                us = _median_step(task, variant, args.runs, args.steps)
+                best[task_id][variant] = min(best[task_id][variant], us)
+    columns = ("full", "grid", "hud", "turn", "frame")
+    rows = {}
+    print(f"{'task':48s}" + "".join(f"{c:>8s}" for c in columns) + "   (median us per step)")
+    for task_id, m in best.items():
+        rows[task_id] = (m["full"], m["full"] - m["grid held"], m["full"] - m["hud held"],
+                         m["both held"] - m["frame only"], m["frame only"])
+        print(f"{task_id:48s}" + "".join(f"{x:8.1f}" for x in rows[task_id]))
+    if len(rows) > 1:
+        medians = [statistics.median(r[i] for r in rows.values()) for i in range(len(columns))]
+        print(f"{'median over ' + str(len(rows)) + ' tasks':48s}" + "".join(f"{x:8.1f}" for x in medians))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
