@@ -28,6 +28,7 @@ are never carved. This changes a few cells per level (``tests/games/craftax`` me
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
@@ -348,16 +349,59 @@ def _grow(cells: np.ndarray) -> np.ndarray:
     return out
 
 
-def _flood(inside: np.ndarray, walk: np.ndarray, when: np.ndarray, clock: int) -> int:
-    """Spread ``inside`` (in place) over ``walk`` cells one step a tick, writing each new
-    cell's tick into ``when``; returns the clock after the last tick."""
-    while True:
-        new = _grow(inside) & walk & ~inside
-        if not new.any():
-            return clock
-        clock += 1
-        when[new] = clock
-        inside |= new
+@lru_cache(maxsize=None)
+def _neighbours(shape: tuple[int, int]) -> tuple[tuple[int, ...], ...]:
+    """Per cell of a ``shape`` map (flat index, row-major), its 4-neighbours' flat indices in
+    the map, in ``_STEPS`` order."""
+    rows, cols = shape
+    return tuple(tuple((r + dr) * cols + c + dc for dr, dc in _STEPS
+                       if 0 <= r + dr < rows and 0 <= c + dc < cols)
+                 for r in range(rows) for c in range(cols))
+
+
+class _Walk:
+    """The walked region of one level as it grows (cells by flat index): ``inside`` (1 in it),
+    ``when`` (the tick each cell joined it; the start cell 0) and ``edge``, the carvable
+    blocking cells beside it (``_carve_to``'s next ring)."""
+
+    def __init__(self, block: np.ndarray, start) -> None:
+        self.neighbours = _neighbours(block.shape)
+        self.walk = _carve_walkable(block).ravel().tolist()
+        self.carvable = _CARVABLE[block].ravel().tolist()
+        start = int(start[0]) * block.shape[1] + int(start[1])
+        self.inside = bytearray(block.size)
+        self.inside[start] = 1
+        self.when = [0] * block.size
+        self.edge: set[int] = set()
+        self.clock = 0
+        self.flood([start])
+
+    def flood(self, frontier: list[int]) -> None:
+        """Spread from the ``frontier`` cells (just joined) over walkable cells one step a tick
+        of ``clock``, writing each new cell's tick. (Every cell joined before the frontier has
+        its walkable neighbours inside already, so spreading from the frontier alone gives the
+        ticks that spreading from the whole region would.)"""
+        neighbours, walk, carvable, inside, when, edge = (
+            self.neighbours, self.walk, self.carvable, self.inside, self.when, self.edge)
+        clock = self.clock
+        while True:
+            new = []
+            for cell in frontier:
+                for n in neighbours[cell]:
+                    if inside[n]:
+                        continue
+                    if walk[n]:
+                        inside[n] = 1
+                        new.append(n)
+                    elif carvable[n]:
+                        edge.add(n)
+            if not new:
+                self.clock = clock
+                return
+            clock += 1
+            for n in new:
+                when[n] = clock
+            frontier = new
 
 
 def _seeds(shape, starts: np.ndarray) -> np.ndarray:
@@ -407,29 +451,28 @@ def _carve_walkable(block: np.ndarray) -> np.ndarray:
     return _WALKABLE[block] & (block != B.DARKNESS)
 
 
-def _carve_to(block: np.ndarray, inside: np.ndarray, when: np.ndarray, clock: int,
-              goal: np.ndarray, floor: int) -> None:
-    """Grow the walked region of one level ring by ring, each ring carving one more layer of
+def _carve_to(block: np.ndarray, region: _Walk, goal: np.ndarray, floor: int) -> None:
+    """Grow the walked ``region`` of one level ring by ring, each ring carving one more layer of
     carvable cells, until it touches ``goal`` (a mask); then walk back from there through
     ever-earlier cells, turning the blocking ones into ``floor``. Each ring adds one carved
     cell to the way back, so it carves the fewest cells any path needs."""
-    walk, carvable = _carve_walkable(block), _CARVABLE[block]
-    while not (inside & goal).any():
-        ring = _grow(inside) & carvable & ~walk & ~inside
-        if not ring.any():
+    inside, when, walk, neighbours = region.inside, region.when, region.walk, region.neighbours
+    goals = np.flatnonzero(goal).tolist()
+    while not any(inside[g] for g in goals):
+        ring = list(region.edge)
+        if not ring:
             return                      # walled off by protected blocks: nothing to do
-        clock += 1
-        when[ring] = clock
-        inside |= ring
-        clock = _flood(inside, walk, when, clock)
-    reached = np.argwhere(inside & goal)
-    r, c = min(map(tuple, reached), key=lambda rc: when[rc])
-    while when[r, c] > 0:
-        if not walk[r, c]:
-            block[r, c] = floor
-        r, c = min(((r + dr, c + dc) for dr, dc in _STEPS
-                    if 0 <= r + dr < block.shape[0] and 0 <= c + dc < block.shape[1]
-                    and inside[r + dr, c + dc]), key=lambda rc: when[rc])
+        region.edge.clear()
+        region.clock += 1
+        for cell in ring:
+            inside[cell] = 1
+            when[cell] = region.clock
+        region.flood(ring)
+    cell = min((g for g in goals if inside[g]), key=when.__getitem__)
+    while when[cell] > 0:
+        if not walk[cell]:
+            block[divmod(cell, block.shape[1])] = floor
+        cell = min((n for n in neighbours[cell] if inside[n]), key=when.__getitem__)
 
 
 def ensure_reachable(blocks: np.ndarray, starts: np.ndarray, goals: np.ndarray) -> None:
@@ -439,10 +482,7 @@ def ensure_reachable(blocks: np.ndarray, starts: np.ndarray, goals: np.ndarray) 
     reached = (reach(blocks, starts) & goals).any(axis=(1, 2))
     for level in np.flatnonzero(~reached):
         block = blocks[level]
-        inside = _seeds((1, *block.shape), starts[level:level + 1])[0]
-        when = np.zeros(block.shape, np.int64)
-        clock = _flood(inside, _carve_walkable(block), when, 0)
-        _carve_to(block, inside, when, clock, goals[level], FLOORS[level])
+        _carve_to(block, _Walk(block, starts[level]), goals[level], FLOORS[level])
 
 
 def arrival(state: State, level: int) -> np.ndarray:
