@@ -360,48 +360,54 @@ def _neighbours(shape: tuple[int, int]) -> tuple[tuple[int, ...], ...]:
 
 
 class _Walk:
-    """The walked region of one level as it grows (cells by flat index): ``inside`` (1 in it),
-    ``when`` (the tick each cell joined it; the start cell 0) and ``edge``, the carvable
-    blocking cells beside it (``_carve_to``'s next ring)."""
+    """The walked region of one level as it grows, cells by flat index: ``inside`` (a byte per
+    cell, 1 in it; ``inside_map`` is the same bytes as a boolean map) and ``when``, the tick
+    each cell joined it (the start cell 0; the clock is ``clock``)."""
 
     def __init__(self, block: np.ndarray, start) -> None:
         self.neighbours = _neighbours(block.shape)
-        self.walk = _carve_walkable(block).ravel().tolist()
-        self.carvable = _CARVABLE[block].ravel().tolist()
+        walk = _carve_walkable(block)
+        self.walk = walk.tobytes()
+        self.blocked = _CARVABLE[block] & ~walk       # what a ring may carve
         start = int(start[0]) * block.shape[1] + int(start[1])
         self.inside = bytearray(block.size)
-        self.inside[start] = 1
+        self.inside_map = np.frombuffer(self.inside, bool).reshape(block.shape)
+        self.free = bytearray(self.walk)              # walkable and not yet inside
         self.when = [0] * block.size
-        self.edge: set[int] = set()
         self.clock = 0
+        self.join([start], 0)
         self.flood([start])
+
+    def join(self, cells, tick: int) -> None:
+        inside, free, when = self.inside, self.free, self.when
+        for cell in cells:
+            inside[cell] = 1
+            free[cell] = 0
+            when[cell] = tick
 
     def flood(self, frontier: list[int]) -> None:
         """Spread from the ``frontier`` cells (just joined) over walkable cells one step a tick
         of ``clock``, writing each new cell's tick. (Every cell joined before the frontier has
         its walkable neighbours inside already, so spreading from the frontier alone gives the
         ticks that spreading from the whole region would.)"""
-        neighbours, walk, carvable, inside, when, edge = (
-            self.neighbours, self.walk, self.carvable, self.inside, self.when, self.edge)
-        clock = self.clock
+        neighbours, free, inside, when = self.neighbours, self.free, self.inside, self.when
         while True:
-            new = []
+            tick, new = self.clock + 1, []
             for cell in frontier:
                 for n in neighbours[cell]:
-                    if inside[n]:
-                        continue
-                    if walk[n]:
+                    if free[n]:
+                        free[n] = 0
                         inside[n] = 1
+                        when[n] = tick
                         new.append(n)
-                    elif carvable[n]:
-                        edge.add(n)
             if not new:
-                self.clock = clock
                 return
-            clock += 1
-            for n in new:
-                when[n] = clock
-            frontier = new
+            self.clock, frontier = tick, new
+
+    def ring(self) -> list[int]:
+        """The carvable blocking cells beside the region."""
+        inside = self.inside_map
+        return np.flatnonzero(_grow(inside) & self.blocked & ~inside).tolist()
 
 
 def _seeds(shape, starts: np.ndarray) -> np.ndarray:
@@ -459,14 +465,11 @@ def _carve_to(block: np.ndarray, region: _Walk, goal: np.ndarray, floor: int) ->
     inside, when, walk, neighbours = region.inside, region.when, region.walk, region.neighbours
     goals = np.flatnonzero(goal).tolist()
     while not any(inside[g] for g in goals):
-        ring = list(region.edge)
+        ring = region.ring()
         if not ring:
             return                      # walled off by protected blocks: nothing to do
-        region.edge.clear()
         region.clock += 1
-        for cell in ring:
-            inside[cell] = 1
-            when[cell] = region.clock
+        region.join(ring, region.clock)
         region.flood(ring)
     cell = min((g for g in goals if inside[g]), key=when.__getitem__)
     while when[cell] > 0:
