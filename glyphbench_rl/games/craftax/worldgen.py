@@ -49,6 +49,11 @@ _WALKABLE = np.ones(len(B), bool)
 _WALKABLE[[int(b) for b in SOLID_BLOCKS | {B.WATER, B.LAVA}]] = False
 _CARVABLE = np.ones(len(B), bool)
 _CARVABLE[[int(b) for b in PROTECTED]] = False
+# the blocks and items the generators write, as ints (an enum member is a slow look-up in a loop)
+_PATH, _WALL, _WALL_MOSS, _DARKNESS, _CHEST, _STONE, _LAVA = (
+    int(b) for b in (B.PATH, B.WALL, B.WALL_MOSS, B.DARKNESS, B.CHEST, B.STONE, B.LAVA))
+_NO_ITEM, _TORCH, _LADDER_DOWN, _LADDER_UP = (
+    int(i) for i in (ItemType.NONE, ItemType.TORCH, ItemType.LADDER_DOWN, ItemType.LADDER_UP))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -156,10 +161,20 @@ def _distance_from(centre: tuple[int, int]) -> np.ndarray:
 _CENTRE_DISTANCE = _distance_from(CENTRE)
 
 
+@lru_cache(maxsize=None)
+def _centre_push(strength: float, most: float) -> np.ndarray:
+    """What a noise map is pushed by with the distance from the centre:
+    ``clip(d / strength, 0, most) - 1`` (the same for every level of a configuration)."""
+    push = np.clip(_CENTRE_DISTANCE / strength, 0, most) - 1
+    push.flags.writeable = False
+    return push
+
+
 def _convolve3(mask: np.ndarray, kernel: np.ndarray) -> np.ndarray:
     """``mask`` convolved with a symmetric 3x3 ``kernel``, zero outside the map (scipy's
     ``mode="same"``)."""
-    padded = np.pad(mask.astype(np.float64), 1)
+    padded = np.zeros((mask.shape[0] + 2, mask.shape[1] + 2))
+    padded[1:-1, 1:-1] = mask
     out = np.zeros(mask.shape)
     for dr in range(3):
         for dc in range(3):
@@ -208,13 +223,12 @@ def cave_level(rng: np.random.Generator, cfg: CaveConfig, noise: CaveNoise | Non
     """One noise level: (block map, item map, light map, down ladder, up ladder)."""
     shape = MAP_SIZE
     noise = noise or CaveNoise.draw(rng, 1)[0]
-    water = noise.water.copy()
-    water += np.clip(_CENTRE_DISTANCE / cfg.water_strength, 0, cfg.water_max) - 1
+    water = noise.water + _centre_push(cfg.water_strength, cfg.water_max)
     block = np.where(water > cfg.water_threshold, cfg.sea, cfg.default).astype(np.int32)
     block[(water > cfg.sand_threshold) & (block != cfg.sea)] = cfg.coast
 
     mountain = noise.mountain + 0.05
-    mountain += np.clip(_CENTRE_DISTANCE / cfg.mountain_strength, 0, cfg.mountain_max) - 1
+    mountain += _centre_push(cfg.mountain_strength, cfg.mountain_max)
     rock = mountain > 0.7
     block[rock] = cfg.mountain
 
@@ -232,23 +246,23 @@ def cave_level(rng: np.random.Generator, cfg: CaveConfig, noise: CaveNoise | Non
 
     lava = (mountain > 0.85) & (tree_noise > 0.7)
     block[lava] = cfg.lava
-    if not (block == B.STONE).any():
+    if not (block == _STONE).any():
         # upstream's always-diamond step (off by default) still rewrites a random stone cell
         # with stone; with no stone at all (the graveyard) its draw lands on (0, 0)
-        block[0, 0] = B.STONE
+        block[0, 0] = _STONE
     block[CENTRE] = cfg.spawn
 
     items = np.zeros(shape, np.int32)
     down = _pick_cell(rng, block == cfg.floor)
     up = _pick_cell(rng, block == cfg.floor)
     if cfg.ladder_down:
-        items[tuple(down)] = ItemType.LADDER_DOWN
+        items[tuple(down)] = _LADDER_DOWN
     if cfg.ladder_up:
-        items[tuple(up)] = ItemType.LADDER_UP
+        items[tuple(up)] = _LADDER_UP
 
     light = np.full(shape, cfg.light, np.float64)
     _paste_light(light, TORCH_LIGHT_MAP * (1 - cfg.light) + cfg.light, up)
-    if cfg.lava == B.LAVA:
+    if cfg.lava == _LAVA:
         light += _convolve3(lava, np.array([[0.2, 0.7, 0.2], [0.7, 1, 0.7], [0.2, 0.7, 0.2]]))
     light = np.clip(light, 0.0, 1.0).astype(np.float32)
     return block, items, light, down, up
@@ -261,27 +275,27 @@ CHUNK = 16
 NUM_ROOMS = 8
 MIN_ROOM, MAX_ROOM = 5, 10          # room sides are drawn from [MIN_ROOM, MAX_ROOM)
 PAD = MAX_ROOM                      # rooms are laid out on a map padded by this much
-_CROSS = np.array([[0, 1, 0], [1, 1, 1], [0, 1, 0]])
 
 
-def _place_rooms(rng, block, items, cfg: DungeonConfig) -> np.ndarray:
+def _place_rooms(rng, block, items, cfg: DungeonConfig) -> list[tuple[int, int]]:
     """Eight rooms, each in its own 16x16 chunk (corner jittered up to 10 cells, so rooms
     may spill into the next chunk or off the map); returns their top-left corners."""
     chunks_per_row = ROWS // CHUNK
     free = list(range(chunks_per_row * (COLS // CHUNK)))
     sizes = rng.integers(MIN_ROOM, MAX_ROOM, (NUM_ROOMS, 2))
-    corners = np.zeros((NUM_ROOMS, 2), np.int64)
-    for i, (h, w) in enumerate(sizes):
+    corners = []
+    for h, w in sizes.tolist():
         chunk = free.pop(int(rng.integers(len(free))))
-        r, c = (np.array([chunk % chunks_per_row, chunk // chunks_per_row]) * CHUNK + PAD
-                + rng.integers(0, CHUNK - MIN_ROOM, 2))
-        corners[i] = r, c
-        block[r:r + h, c:c + w] = B.PATH
+        jitter_r, jitter_c = rng.integers(0, CHUNK - MIN_ROOM, 2).tolist()
+        r = chunk % chunks_per_row * CHUNK + PAD + jitter_r
+        c = chunk // chunks_per_row * CHUNK + PAD + jitter_c
+        corners.append((r, c))
+        block[r:r + h, c:c + w] = _PATH
         for tr, tc in ((r, c), (r + h - 1, c), (r, c + w - 1), (r + h - 1, c + w - 1)):
-            items[tr, tc] = ItemType.TORCH
-        cr, cc = rng.integers(1, (h - 1, w - 1))
-        block[r + cr, c + cc] = B.CHEST
-        fr, fc = rng.integers(1, (h - 1, w - 1))
+            items[tr, tc] = _TORCH
+        cr, cc = rng.integers(1, (h - 1, w - 1)).tolist()
+        block[r + cr, c + cc] = _CHEST
+        fr, fc = rng.integers(1, (h - 1, w - 1)).tolist()
         if rng.random() > 0.5:
             block[r + fr, c + fc] = cfg.fountain
     return corners
@@ -296,10 +310,10 @@ def _dig_corridors(rng, block, corners) -> None:
         tr, tc = corners[joined[int(rng.integers(len(joined)))]]
         lo, hi = sorted((sc, tc))
         row = block[sr, lo:hi + 1]
-        row[row == B.WALL] = B.PATH
+        row[row == _WALL] = _PATH
         lo, hi = sorted((sr, tr))
         col = block[lo:hi + 1, tc]
-        col[col == B.WALL] = B.PATH
+        col[col == _WALL] = _PATH
         if i not in joined:
             joined.append(i)
 
@@ -307,24 +321,24 @@ def _dig_corridors(rng, block, corners) -> None:
 def dungeon_level(rng: np.random.Generator, cfg: DungeonConfig):
     """One dungeon level: (block map, item map, light map, down ladder, up ladder)."""
     block = np.zeros((ROWS + 2 * PAD, COLS + 2 * PAD), np.int32)
-    block[PAD:-PAD, PAD:-PAD] = B.WALL
+    block[PAD:-PAD, PAD:-PAD] = _WALL
     items = np.zeros_like(block)
     corners = _place_rooms(rng, block, items, cfg)
     _dig_corridors(rng, block, corners)
-    block[corners[0, 0] + 2, corners[0, 1] + 2] = cfg.special
+    block[corners[0][0] + 2, corners[0][1] + 2] = cfg.special
     block, items = block[PAD:-PAD, PAD:-PAD], items[PAD:-PAD, PAD:-PAD].copy()
 
-    near_floor = _convolve3(block != B.WALL, _CROSS) > 0.5
+    near_floor = _grow(block != _WALL)     # (upstream: a cross convolution > 0.5)
     rare = rng.random(MAP_SIZE) < 0.1
-    floor = np.where(rare & (block == B.PATH) & (items == ItemType.NONE), cfg.rare_floor, block)
-    wall = np.where(rare, B.WALL_MOSS, B.WALL)
-    block = np.where(~near_floor, B.DARKNESS,
-                     np.where(block == B.WALL, wall, floor)).astype(np.int32)
+    floor = np.where(rare & (block == _PATH) & (items == _NO_ITEM), cfg.rare_floor, block)
+    wall = np.where(rare, _WALL_MOSS, _WALL)
+    block = np.where(~near_floor, _DARKNESS,
+                     np.where(block == _WALL, wall, floor)).astype(np.int32)
 
-    down = _pick_cell(rng, block == B.PATH)
-    items[tuple(down)] = ItemType.LADDER_DOWN
-    up = _pick_cell(rng, block == B.PATH)
-    items[tuple(up)] = ItemType.LADDER_UP
+    down = _pick_cell(rng, block == _PATH)
+    items[tuple(down)] = _LADDER_DOWN
+    up = _pick_cell(rng, block == _PATH)
+    items[tuple(up)] = _LADDER_UP
     return block, items, np.ones(MAP_SIZE, np.float32), down, up
 
 
@@ -454,7 +468,7 @@ def reachable(block: np.ndarray, start) -> np.ndarray:
 def _carve_walkable(block: np.ndarray) -> np.ndarray:
     """What a carved path may cross as it is: walkable cells other than a dungeon's darkness
     (walkable upstream, but beyond the walls: a path through it is carved into floor too)."""
-    return _WALKABLE[block] & (block != B.DARKNESS)
+    return _WALKABLE[block] & (block != _DARKNESS)
 
 
 def _carve_to(block: np.ndarray, region: _Walk, goal: np.ndarray, floor: int) -> None:
@@ -562,8 +576,10 @@ def generate(rng: np.random.Generator, settings: Settings = Settings()) -> State
     made = [cave_level(rng, cfg, next(noises)) if isinstance(cfg, CaveConfig)
             else dungeon_level(rng, cfg) for cfg in LEVELS]
     block, items, light, down, up = (np.stack(parts) for parts in zip(*made))
-    state = _state(block.astype(np.int32), items.astype(np.int32), light.astype(np.float32),
-                   down.astype(np.int32), up.astype(np.int32), rng.permutation(6), settings)
+    int32 = dict(dtype=np.int32, copy=False)       # (the stacks have these types already)
+    state = _state(block.astype(**int32), items.astype(**int32),
+                   light.astype(np.float32, copy=False), down.astype(**int32), up.astype(**int32),
+                   rng.permutation(6), settings)
     make_playable(state)
     return state
 
