@@ -27,7 +27,7 @@ are never carved. This changes a few cells per level (``tests/games/craftax`` me
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from functools import lru_cache
 
 import numpy as np
@@ -59,6 +59,16 @@ _NO_ITEM, _TORCH, _LADDER_DOWN, _LADDER_UP = (
 # ---------------------------------------------------------------------------------------------
 # Level configurations (upstream's SmoothGenConfig / DungeonConfig values)
 
+def _plain_blocks(cfg) -> None:
+    """Store a configuration's blocks (its ``int`` fields and ores) as plain ints: numpy takes
+    an enum member in a comparison or a write far slower than an int."""
+    for f in fields(cfg):
+        if f.type == "int":
+            object.__setattr__(cfg, f.name, int(getattr(cfg, f.name)))
+    if hasattr(cfg, "ores"):
+        object.__setattr__(cfg, "ores", tuple((int(b), int(ore), p) for b, ore, p in cfg.ores))
+
+
 @dataclass(frozen=True)
 class CaveConfig:
     default: int            # the open ground
@@ -84,6 +94,8 @@ class CaveConfig:
     sand_threshold: float
     tree_uniform: float
     tree_perlin: float
+
+    __post_init__ = _plain_blocks
 
 
 _STONE_ORES = (B.COAL, B.IRON, B.DIAMOND, B.SAPPHIRE, B.RUBY)
@@ -137,6 +149,8 @@ class DungeonConfig:
     special: int            # put in the first room, two cells in from its corner
     fountain: int
     rare_floor: int         # what a tenth of the item-free floor becomes
+
+    __post_init__ = _plain_blocks
 
 
 DUNGEON = DungeonConfig(special=B.PATH, fountain=B.FOUNTAIN, rare_floor=B.PATH)
@@ -219,6 +233,9 @@ class CaveNoise:
         return [cls(coarse[2 * i], coarse[2 * i + 1], tunnels[i], trees[i]) for i in range(count)]
 
 
+_LAVA_GLOW = np.array([[0.2, 0.7, 0.2], [0.7, 1, 0.7], [0.2, 0.7, 0.2]])
+
+
 def cave_level(rng: np.random.Generator, cfg: CaveConfig, noise: CaveNoise | None = None):
     """One noise level: (block map, item map, light map, down ladder, up ladder)."""
     shape = MAP_SIZE
@@ -263,7 +280,7 @@ def cave_level(rng: np.random.Generator, cfg: CaveConfig, noise: CaveNoise | Non
     light = np.full(shape, cfg.light, np.float64)
     _paste_light(light, TORCH_LIGHT_MAP * (1 - cfg.light) + cfg.light, up)
     if cfg.lava == _LAVA:
-        light += _convolve3(lava, np.array([[0.2, 0.7, 0.2], [0.7, 1, 0.7], [0.2, 0.7, 0.2]]))
+        light += _convolve3(lava, _LAVA_GLOW)
     light = np.clip(light, 0.0, 1.0).astype(np.float32)
     return block, items, light, down, up
 
