@@ -18,13 +18,16 @@ def fade(t: np.ndarray) -> np.ndarray:
 
 @lru_cache(maxsize=None)
 def _lattice(shape: tuple[int, int], res: tuple[int, int]):
-    """Per cell: its lattice corner (row, col) and its offset inside the lattice cell, with
-    the offsets' fades."""
+    """Per cell, laid out by lattice cell (``(res_rows, per_row, res_cols, per_col)``, which
+    reshapes to ``shape``): its offset inside the lattice cell (and that less 1, the offset
+    from the far corner) and the offsets' fades (and 1 less them), rows then columns."""
+    if shape[0] % res[0] or shape[1] % res[1]:
+        raise ValueError(f"a {shape} map needs a lattice that divides it, not {res}")
     per = (shape[0] // res[0], shape[1] // res[1])
-    rows, cols = np.arange(shape[0]), np.arange(shape[1])
-    fy = ((rows * res[0] / shape[0]) % 1)[:, None]
-    fx = ((cols * res[1] / shape[1]) % 1)[None, :]
-    return (rows // per[0])[:, None], (cols // per[1])[None, :], fy, fx, fade(fy), fade(fx)
+    fy = ((np.arange(shape[0]) * res[0] / shape[0]) % 1).reshape(res[0], per[0], 1, 1)
+    fx = ((np.arange(shape[1]) * res[1] / shape[1]) % 1).reshape(1, 1, res[1], per[1])
+    ty, tx = fade(fy), fade(fx)
+    return fy, fy - 1, fx, fx - 1, ty, 1 - ty, tx, 1 - tx
 
 
 def perlin(angles: np.ndarray, shape: tuple[int, int]) -> np.ndarray:
@@ -32,17 +35,30 @@ def perlin(angles: np.ndarray, shape: tuple[int, int]) -> np.ndarray:
     corner: ``(..., res_rows + 1, res_cols + 1)``, any leading axes making as many maps);
     each lattice cell spans ``shape // res`` cells."""
     res = (angles.shape[-2] - 1, angles.shape[-1] - 1)
-    corner_r, corner_c, fy, fx, ty, tx = _lattice(tuple(shape), res)
+    fy, fy1, fx, fx1, ty, ty1, tx, tx1 = _lattice(tuple(shape), res)
     theta = 2 * np.pi * angles
     gy, gx = np.cos(theta), np.sin(theta)    # upstream's gradient (cos, sin) pairs with (row, col)
 
+    # (the cells are laid out by lattice cell, so a corner's gradient reaches its cells by
+    # broadcasting, not by gathering it per cell)
     def ramp(dr: int, dc: int) -> np.ndarray:
-        r, c = corner_r + dr, corner_c + dc
-        return (fy - dr) * gy[..., r, c] + (fx - dc) * gx[..., r, c]
+        corner = (..., slice(dr, dr + res[0]), None, slice(dc, dc + res[1]), None)
+        return (fy1 if dr else fy) * gy[corner] + (fx1 if dc else fx) * gx[corner]
 
-    near_col = ramp(0, 0) * (1 - ty) + ty * ramp(1, 0)
-    far_col = ramp(0, 1) * (1 - ty) + ty * ramp(1, 1)
-    return np.sqrt(2) * ((1 - tx) * near_col + tx * far_col)
+    # near_col = ramp(0, 0) * (1 - ty) + ty * ramp(1, 0), far_col likewise with column 1, and
+    # sqrt(2) * ((1 - tx) * near_col + tx * far_col): computed in place (the same operations
+    # on the same operands, fewer map-sized arrays made)
+    near_col = ramp(0, 0)
+    near_col *= ty1
+    near_col += ty * ramp(1, 0)
+    far_col = ramp(0, 1)
+    far_col *= ty1
+    far_col += ty * ramp(1, 1)
+    near_col *= tx1
+    far_col *= tx
+    near_col += far_col
+    near_col *= np.sqrt(2)
+    return near_col.reshape(*angles.shape[:-2], *shape)
 
 
 def fractal(rng: np.random.Generator, shape: tuple[int, int], res: tuple[int, int],

@@ -27,10 +27,12 @@ are never carved. This changes a few cells per level (``tests/games/craftax`` me
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
+from functools import lru_cache
 
 import numpy as np
 
+from ...core.seeding import int_sampler
 from .noise import fractal
 from .state import (MAP_SIZE, MAX_MELEE, MAX_MOB_PROJECTILES, MAX_PASSIVE, MAX_PLAYER_PROJECTILES,
                     MAX_RANGED, MAX_GROWING_PLANTS, NUM_LEVELS, Inventory, Mobs, Settings, State)
@@ -48,10 +50,25 @@ _WALKABLE = np.ones(len(B), bool)
 _WALKABLE[[int(b) for b in SOLID_BLOCKS | {B.WATER, B.LAVA}]] = False
 _CARVABLE = np.ones(len(B), bool)
 _CARVABLE[[int(b) for b in PROTECTED]] = False
+# the blocks and items the generators write, as ints (an enum member is a slow look-up in a loop)
+_PATH, _WALL, _WALL_MOSS, _DARKNESS, _CHEST, _STONE, _LAVA = (
+    int(b) for b in (B.PATH, B.WALL, B.WALL_MOSS, B.DARKNESS, B.CHEST, B.STONE, B.LAVA))
+_NO_ITEM, _TORCH, _LADDER_DOWN, _LADDER_UP = (
+    int(i) for i in (ItemType.NONE, ItemType.TORCH, ItemType.LADDER_DOWN, ItemType.LADDER_UP))
 
 
 # ---------------------------------------------------------------------------------------------
 # Level configurations (upstream's SmoothGenConfig / DungeonConfig values)
+
+def _plain_blocks(cfg) -> None:
+    """Store a configuration's blocks (its ``int`` fields and ores) as plain ints: numpy takes
+    an enum member in a comparison or a write far slower than an int."""
+    for f in fields(cfg):
+        if f.type == "int":
+            object.__setattr__(cfg, f.name, int(getattr(cfg, f.name)))
+    if hasattr(cfg, "ores"):
+        object.__setattr__(cfg, "ores", tuple((int(b), int(ore), p) for b, ore, p in cfg.ores))
+
 
 @dataclass(frozen=True)
 class CaveConfig:
@@ -78,6 +95,8 @@ class CaveConfig:
     sand_threshold: float
     tree_uniform: float
     tree_perlin: float
+
+    __post_init__ = _plain_blocks
 
 
 _STONE_ORES = (B.COAL, B.IRON, B.DIAMOND, B.SAPPHIRE, B.RUBY)
@@ -132,6 +151,8 @@ class DungeonConfig:
     fountain: int
     rare_floor: int         # what a tenth of the item-free floor becomes
 
+    __post_init__ = _plain_blocks
+
 
 DUNGEON = DungeonConfig(special=B.PATH, fountain=B.FOUNTAIN, rare_floor=B.PATH)
 SEWERS = DungeonConfig(special=B.ENCHANTMENT_TABLE_ICE, fountain=B.WATER, rare_floor=B.WATER)
@@ -155,10 +176,20 @@ def _distance_from(centre: tuple[int, int]) -> np.ndarray:
 _CENTRE_DISTANCE = _distance_from(CENTRE)
 
 
+@lru_cache(maxsize=None)
+def _centre_push(strength: float, most: float) -> np.ndarray:
+    """What a noise map is pushed by with the distance from the centre:
+    ``clip(d / strength, 0, most) - 1`` (the same for every level of a configuration)."""
+    push = np.clip(_CENTRE_DISTANCE / strength, 0, most) - 1
+    push.flags.writeable = False
+    return push
+
+
 def _convolve3(mask: np.ndarray, kernel: np.ndarray) -> np.ndarray:
     """``mask`` convolved with a symmetric 3x3 ``kernel``, zero outside the map (scipy's
     ``mode="same"``)."""
-    padded = np.pad(mask.astype(np.float64), 1)
+    padded = np.zeros((mask.shape[0] + 2, mask.shape[1] + 2))
+    padded[1:-1, 1:-1] = mask
     out = np.zeros(mask.shape)
     for dr in range(3):
         for dc in range(3):
@@ -203,17 +234,19 @@ class CaveNoise:
         return [cls(coarse[2 * i], coarse[2 * i + 1], tunnels[i], trees[i]) for i in range(count)]
 
 
+_LAVA_GLOW = np.array([[0.2, 0.7, 0.2], [0.7, 1, 0.7], [0.2, 0.7, 0.2]])
+
+
 def cave_level(rng: np.random.Generator, cfg: CaveConfig, noise: CaveNoise | None = None):
     """One noise level: (block map, item map, light map, down ladder, up ladder)."""
     shape = MAP_SIZE
     noise = noise or CaveNoise.draw(rng, 1)[0]
-    water = noise.water.copy()
-    water += np.clip(_CENTRE_DISTANCE / cfg.water_strength, 0, cfg.water_max) - 1
+    water = noise.water + _centre_push(cfg.water_strength, cfg.water_max)
     block = np.where(water > cfg.water_threshold, cfg.sea, cfg.default).astype(np.int32)
     block[(water > cfg.sand_threshold) & (block != cfg.sea)] = cfg.coast
 
     mountain = noise.mountain + 0.05
-    mountain += np.clip(_CENTRE_DISTANCE / cfg.mountain_strength, 0, cfg.mountain_max) - 1
+    mountain += _centre_push(cfg.mountain_strength, cfg.mountain_max)
     rock = mountain > 0.7
     block[rock] = cfg.mountain
 
@@ -231,24 +264,24 @@ def cave_level(rng: np.random.Generator, cfg: CaveConfig, noise: CaveNoise | Non
 
     lava = (mountain > 0.85) & (tree_noise > 0.7)
     block[lava] = cfg.lava
-    if not (block == B.STONE).any():
+    if not (block == _STONE).any():
         # upstream's always-diamond step (off by default) still rewrites a random stone cell
         # with stone; with no stone at all (the graveyard) its draw lands on (0, 0)
-        block[0, 0] = B.STONE
+        block[0, 0] = _STONE
     block[CENTRE] = cfg.spawn
 
     items = np.zeros(shape, np.int32)
     down = _pick_cell(rng, block == cfg.floor)
     up = _pick_cell(rng, block == cfg.floor)
     if cfg.ladder_down:
-        items[tuple(down)] = ItemType.LADDER_DOWN
+        items[tuple(down)] = _LADDER_DOWN
     if cfg.ladder_up:
-        items[tuple(up)] = ItemType.LADDER_UP
+        items[tuple(up)] = _LADDER_UP
 
     light = np.full(shape, cfg.light, np.float64)
     _paste_light(light, TORCH_LIGHT_MAP * (1 - cfg.light) + cfg.light, up)
-    if cfg.lava == B.LAVA:
-        light += _convolve3(lava, np.array([[0.2, 0.7, 0.2], [0.7, 1, 0.7], [0.2, 0.7, 0.2]]))
+    if cfg.lava == _LAVA:
+        light += _convolve3(lava, _LAVA_GLOW)
     light = np.clip(light, 0.0, 1.0).astype(np.float32)
     return block, items, light, down, up
 
@@ -260,27 +293,31 @@ CHUNK = 16
 NUM_ROOMS = 8
 MIN_ROOM, MAX_ROOM = 5, 10          # room sides are drawn from [MIN_ROOM, MAX_ROOM)
 PAD = MAX_ROOM                      # rooms are laid out on a map padded by this much
-_CROSS = np.array([[0, 1, 0], [1, 1, 1], [0, 1, 0]])
 
 
-def _place_rooms(rng, block, items, cfg: DungeonConfig) -> np.ndarray:
+def _place_rooms(rng, block, items, cfg: DungeonConfig) -> list[tuple[int, int]]:
     """Eight rooms, each in its own 16x16 chunk (corner jittered up to 10 cells, so rooms
     may spill into the next chunk or off the map); returns their top-left corners."""
     chunks_per_row = ROWS // CHUNK
     free = list(range(chunks_per_row * (COLS // CHUNK)))
     sizes = rng.integers(MIN_ROOM, MAX_ROOM, (NUM_ROOMS, 2))
-    corners = np.zeros((NUM_ROOMS, 2), np.int64)
-    for i, (h, w) in enumerate(sizes):
-        chunk = free.pop(int(rng.integers(len(free))))
-        r, c = (np.array([chunk % chunks_per_row, chunk // chunks_per_row]) * CHUNK + PAD
-                + rng.integers(0, CHUNK - MIN_ROOM, 2))
-        corners[i] = r, c
-        block[r:r + h, c:c + w] = B.PATH
+    # draw(low, high): rng.integers(low, high), scalar by scalar; numpy draws an array of them
+    # one after another from the same stream, so (draw(a, b), draw(c, d)) is
+    # rng.integers((a, c), (b, d)), at a fraction of the cost
+    draw = int_sampler(rng)
+    corners = []
+    for h, w in sizes.tolist():
+        chunk = free.pop(draw(0, len(free)))
+        jitter_r, jitter_c = draw(0, CHUNK - MIN_ROOM), draw(0, CHUNK - MIN_ROOM)
+        r = chunk % chunks_per_row * CHUNK + PAD + jitter_r
+        c = chunk // chunks_per_row * CHUNK + PAD + jitter_c
+        corners.append((r, c))
+        block[r:r + h, c:c + w] = _PATH
         for tr, tc in ((r, c), (r + h - 1, c), (r, c + w - 1), (r + h - 1, c + w - 1)):
-            items[tr, tc] = ItemType.TORCH
-        cr, cc = rng.integers(1, (h - 1, w - 1))
-        block[r + cr, c + cc] = B.CHEST
-        fr, fc = rng.integers(1, (h - 1, w - 1))
+            items[tr, tc] = _TORCH
+        cr, cc = draw(1, h - 1), draw(1, w - 1)
+        block[r + cr, c + cc] = _CHEST
+        fr, fc = draw(1, h - 1), draw(1, w - 1)
         if rng.random() > 0.5:
             block[r + fr, c + fc] = cfg.fountain
     return corners
@@ -291,14 +328,15 @@ def _dig_corridors(rng, block, corners) -> None:
     source corner's row to the sink corner's column, then along that column to the sink's row,
     turning wall to floor."""
     joined = [NUM_ROOMS - 1]
+    draw = int_sampler(rng)         # (rng.integers, faster: see _place_rooms)
     for i, (sr, sc) in enumerate(corners):
-        tr, tc = corners[joined[int(rng.integers(len(joined)))]]
+        tr, tc = corners[joined[draw(0, len(joined))]]
         lo, hi = sorted((sc, tc))
         row = block[sr, lo:hi + 1]
-        row[row == B.WALL] = B.PATH
+        row[row == _WALL] = _PATH
         lo, hi = sorted((sr, tr))
         col = block[lo:hi + 1, tc]
-        col[col == B.WALL] = B.PATH
+        col[col == _WALL] = _PATH
         if i not in joined:
             joined.append(i)
 
@@ -306,24 +344,24 @@ def _dig_corridors(rng, block, corners) -> None:
 def dungeon_level(rng: np.random.Generator, cfg: DungeonConfig):
     """One dungeon level: (block map, item map, light map, down ladder, up ladder)."""
     block = np.zeros((ROWS + 2 * PAD, COLS + 2 * PAD), np.int32)
-    block[PAD:-PAD, PAD:-PAD] = B.WALL
+    block[PAD:-PAD, PAD:-PAD] = _WALL
     items = np.zeros_like(block)
     corners = _place_rooms(rng, block, items, cfg)
     _dig_corridors(rng, block, corners)
-    block[corners[0, 0] + 2, corners[0, 1] + 2] = cfg.special
+    block[corners[0][0] + 2, corners[0][1] + 2] = cfg.special
     block, items = block[PAD:-PAD, PAD:-PAD], items[PAD:-PAD, PAD:-PAD].copy()
 
-    near_floor = _convolve3(block != B.WALL, _CROSS) > 0.5
+    near_floor = _grow(block != _WALL)     # (upstream: a cross convolution > 0.5)
     rare = rng.random(MAP_SIZE) < 0.1
-    floor = np.where(rare & (block == B.PATH) & (items == ItemType.NONE), cfg.rare_floor, block)
-    wall = np.where(rare, B.WALL_MOSS, B.WALL)
-    block = np.where(~near_floor, B.DARKNESS,
-                     np.where(block == B.WALL, wall, floor)).astype(np.int32)
+    floor = np.where(rare & (block == _PATH) & (items == _NO_ITEM), cfg.rare_floor, block)
+    wall = np.where(rare, _WALL_MOSS, _WALL)
+    block = np.where(~near_floor, _DARKNESS,
+                     np.where(block == _WALL, wall, floor)).astype(np.int32)
 
-    down = _pick_cell(rng, block == B.PATH)
-    items[tuple(down)] = ItemType.LADDER_DOWN
-    up = _pick_cell(rng, block == B.PATH)
-    items[tuple(up)] = ItemType.LADDER_UP
+    down = _pick_cell(rng, block == _PATH)
+    items[tuple(down)] = _LADDER_DOWN
+    up = _pick_cell(rng, block == _PATH)
+    items[tuple(up)] = _LADDER_UP
     return block, items, np.ones(MAP_SIZE, np.float32), down, up
 
 
@@ -348,16 +386,65 @@ def _grow(cells: np.ndarray) -> np.ndarray:
     return out
 
 
-def _flood(inside: np.ndarray, walk: np.ndarray, when: np.ndarray, clock: int) -> int:
-    """Spread ``inside`` (in place) over ``walk`` cells one step a tick, writing each new
-    cell's tick into ``when``; returns the clock after the last tick."""
-    while True:
-        new = _grow(inside) & walk & ~inside
-        if not new.any():
-            return clock
-        clock += 1
-        when[new] = clock
-        inside |= new
+@lru_cache(maxsize=None)
+def _neighbours(shape: tuple[int, int]) -> tuple[tuple[int, ...], ...]:
+    """Per cell of a ``shape`` map (flat index, row-major), its 4-neighbours' flat indices in
+    the map, in ``_STEPS`` order."""
+    rows, cols = shape
+    return tuple(tuple((r + dr) * cols + c + dc for dr, dc in _STEPS
+                       if 0 <= r + dr < rows and 0 <= c + dc < cols)
+                 for r in range(rows) for c in range(cols))
+
+
+class _Walk:
+    """The walked region of one level as it grows, cells by flat index: ``inside`` (a byte per
+    cell, 1 in it; ``inside_map`` is the same bytes as a boolean map) and ``when``, the tick
+    each cell joined it (the start cell 0; the clock is ``clock``)."""
+
+    def __init__(self, block: np.ndarray, start) -> None:
+        self.neighbours = _neighbours(block.shape)
+        walk = _carve_walkable(block)
+        self.walk = walk.tobytes()
+        self.blocked = _CARVABLE[block] & ~walk       # what a ring may carve
+        start = int(start[0]) * block.shape[1] + int(start[1])
+        self.inside = bytearray(block.size)
+        self.inside_map = np.frombuffer(self.inside, bool).reshape(block.shape)
+        self.free = bytearray(self.walk)              # walkable and not yet inside
+        self.when = [0] * block.size
+        self.clock = 0
+        self.join([start], 0)
+        self.flood([start])
+
+    def join(self, cells, tick: int) -> None:
+        inside, free, when = self.inside, self.free, self.when
+        for cell in cells:
+            inside[cell] = 1
+            free[cell] = 0
+            when[cell] = tick
+
+    def flood(self, frontier: list[int]) -> None:
+        """Spread from the ``frontier`` cells (just joined) over walkable cells one step a tick
+        of ``clock``, writing each new cell's tick. (Every cell joined before the frontier has
+        its walkable neighbours inside already, so spreading from the frontier alone gives the
+        ticks that spreading from the whole region would.)"""
+        neighbours, free, inside, when = self.neighbours, self.free, self.inside, self.when
+        while True:
+            tick, new = self.clock + 1, []
+            for cell in frontier:
+                for n in neighbours[cell]:
+                    if free[n]:
+                        free[n] = 0
+                        inside[n] = 1
+                        when[n] = tick
+                        new.append(n)
+            if not new:
+                return
+            self.clock, frontier = tick, new
+
+    def ring(self) -> list[int]:
+        """The carvable blocking cells beside the region."""
+        inside = self.inside_map
+        return np.flatnonzero(_grow(inside) & self.blocked & ~inside).tolist()
 
 
 def _seeds(shape, starts: np.ndarray) -> np.ndarray:
@@ -404,32 +491,28 @@ def reachable(block: np.ndarray, start) -> np.ndarray:
 def _carve_walkable(block: np.ndarray) -> np.ndarray:
     """What a carved path may cross as it is: walkable cells other than a dungeon's darkness
     (walkable upstream, but beyond the walls: a path through it is carved into floor too)."""
-    return _WALKABLE[block] & (block != B.DARKNESS)
+    return _WALKABLE[block] & (block != _DARKNESS)
 
 
-def _carve_to(block: np.ndarray, inside: np.ndarray, when: np.ndarray, clock: int,
-              goal: np.ndarray, floor: int) -> None:
-    """Grow the walked region of one level ring by ring, each ring carving one more layer of
+def _carve_to(block: np.ndarray, region: _Walk, goal: np.ndarray, floor: int) -> None:
+    """Grow the walked ``region`` of one level ring by ring, each ring carving one more layer of
     carvable cells, until it touches ``goal`` (a mask); then walk back from there through
     ever-earlier cells, turning the blocking ones into ``floor``. Each ring adds one carved
     cell to the way back, so it carves the fewest cells any path needs."""
-    walk, carvable = _carve_walkable(block), _CARVABLE[block]
-    while not (inside & goal).any():
-        ring = _grow(inside) & carvable & ~walk & ~inside
-        if not ring.any():
+    inside, when, walk, neighbours = region.inside, region.when, region.walk, region.neighbours
+    goals = np.flatnonzero(goal).tolist()
+    while not any(inside[g] for g in goals):
+        ring = region.ring()
+        if not ring:
             return                      # walled off by protected blocks: nothing to do
-        clock += 1
-        when[ring] = clock
-        inside |= ring
-        clock = _flood(inside, walk, when, clock)
-    reached = np.argwhere(inside & goal)
-    r, c = min(map(tuple, reached), key=lambda rc: when[rc])
-    while when[r, c] > 0:
-        if not walk[r, c]:
-            block[r, c] = floor
-        r, c = min(((r + dr, c + dc) for dr, dc in _STEPS
-                    if 0 <= r + dr < block.shape[0] and 0 <= c + dc < block.shape[1]
-                    and inside[r + dr, c + dc]), key=lambda rc: when[rc])
+        region.clock += 1
+        region.join(ring, region.clock)
+        region.flood(ring)
+    cell = min((g for g in goals if inside[g]), key=when.__getitem__)
+    while when[cell] > 0:
+        if not walk[cell]:
+            block[divmod(cell, block.shape[1])] = floor
+        cell = min((n for n in neighbours[cell] if inside[n]), key=when.__getitem__)
 
 
 def ensure_reachable(blocks: np.ndarray, starts: np.ndarray, goals: np.ndarray) -> None:
@@ -439,10 +522,7 @@ def ensure_reachable(blocks: np.ndarray, starts: np.ndarray, goals: np.ndarray) 
     reached = (reach(blocks, starts) & goals).any(axis=(1, 2))
     for level in np.flatnonzero(~reached):
         block = blocks[level]
-        inside = _seeds((1, *block.shape), starts[level:level + 1])[0]
-        when = np.zeros(block.shape, np.int64)
-        clock = _flood(inside, _carve_walkable(block), when, 0)
-        _carve_to(block, inside, when, clock, goals[level], FLOORS[level])
+        _carve_to(block, _Walk(block, starts[level]), goals[level], FLOORS[level])
 
 
 def arrival(state: State, level: int) -> np.ndarray:
@@ -519,8 +599,10 @@ def generate(rng: np.random.Generator, settings: Settings = Settings()) -> State
     made = [cave_level(rng, cfg, next(noises)) if isinstance(cfg, CaveConfig)
             else dungeon_level(rng, cfg) for cfg in LEVELS]
     block, items, light, down, up = (np.stack(parts) for parts in zip(*made))
-    state = _state(block.astype(np.int32), items.astype(np.int32), light.astype(np.float32),
-                   down.astype(np.int32), up.astype(np.int32), rng.permutation(6), settings)
+    int32 = dict(dtype=np.int32, copy=False)       # (the stacks have these types already)
+    state = _state(block.astype(**int32), items.astype(**int32),
+                   light.astype(np.float32, copy=False), down.astype(**int32), up.astype(**int32),
+                   rng.permutation(6), settings)
     make_playable(state)
     return state
 
