@@ -64,7 +64,7 @@ def _plain_blocks(cfg) -> None:
     """Store a configuration's blocks (its ``int`` fields and ores) as plain ints: numpy takes
     an enum member in a comparison or a write far slower than an int."""
     for f in fields(cfg):
-        if f.type == "int":
+        if f.type in ("int", int):     # (the annotation, as a string under postponed evaluation)
             object.__setattr__(cfg, f.name, int(getattr(cfg, f.name)))
     if hasattr(cfg, "ores"):
         object.__setattr__(cfg, "ores", tuple((int(b), int(ore), p) for b, ore, p in cfg.ores))
