@@ -2,6 +2,7 @@
 """Where a task's step time goes: the grid, the HUD, the game's own turn, the shared frame.
 
     python scripts/step_budget.py [--tasks IDS|GLOB|FILE] [--runs 3] [--steps 400] [--rounds 2]
+    python scripts/step_budget.py --bytecodes [--top 15] [--tasks ...]
 
 Each task is played as ``glyphbench bench`` plays it (random actions on seeds 0 .. runs-1, every
 step timed, the median kept) five ways, alternating within each round, the least disturbed round
@@ -18,6 +19,11 @@ and prints per task ``full``, ``grid`` (full - grid held), ``hud`` (full - HUD h
 (both held - frame) and ``frame``, then their medians over the tasks. Measured in the running
 loop, so each part is charged what it costs there (a part timed alone, with its data in the
 caches, comes out cheaper). The parts need not add up to ``full`` exactly.
+
+With ``--bytecodes`` it counts instead of timing: the median number of Python bytecodes a step
+executes per task, and the functions that execute the most. Unlike a time, the count is the same
+on a busy machine, so it compares two versions of the code run at different moments (work done
+in C, such as a numpy call, counts as the one call).
 """
 
 from __future__ import annotations
@@ -26,8 +32,12 @@ import argparse
 import statistics
 import sys
 import time
+from collections import Counter
+from pathlib import Path
 
 from glyphbench_rl.core import make, resolve_tasks, seeding
+
+ROOT = Path(__file__).resolve().parents[1]
 
 VARIANTS = ("full", "grid held", "hud held", "both held", "frame only")
 
@@ -47,8 +57,10 @@ def _hold(task, variant: str) -> None:
         task._act = lambda action: None
 
 
-def _median_step(task, variant: str, runs: int, steps: int) -> float:
-    clock, times = time.perf_counter, []
+def _play(task, variant: str, runs: int, steps: int, each) -> None:
+    """Play ``task`` (patched for ``variant``) as the bench does: ``steps`` random actions from
+    each of seeds 0 .. runs-1, an episode that ends followed by another; ``each(step, action)``
+    takes each step."""
     for seed in range(runs):
         actions = [int(a) for a in seeding.generator(seed, "bench-actions").integers(
             task.action_space.n, size=steps)]
@@ -60,11 +72,63 @@ def _median_step(task, variant: str, runs: int, steps: int) -> float:
                 episode += 1
                 task.reset(seed=seeding.TRAIN_SEEDS.stop - 1 - seed * 1000 - episode)
                 _hold(task, variant)
-            t0 = clock()
-            step(a)
-            times.append(clock() - t0)
+            each(step, a)
     _hold(task, "full")
+
+
+def _median_step(task, variant: str, runs: int, steps: int) -> float:
+    clock, times = time.perf_counter, []
+
+    def timed(step, action):
+        t0 = clock()
+        step(action)
+        times.append(clock() - t0)
+
+    _play(task, variant, runs, steps, timed)
     return statistics.median(times) * 1e6
+
+
+def _bytecodes(task, runs: int, steps: int, by_code: Counter) -> float:
+    """The median number of Python bytecodes a step of ``task`` executes (each code object's
+    count added to ``by_code``): a measure of the interpreter's work that a busy machine does
+    not disturb (work done in C, a numpy call, counts as one call)."""
+    counts, total = [], [0]
+
+    def tracer(frame, event, arg):
+        frame.f_trace_opcodes = True
+        if event == "opcode":
+            by_code[frame.f_code] += 1
+            total[0] += 1
+        return tracer
+
+    def traced(step, action):
+        before = total[0]
+        sys.settrace(tracer)
+        try:
+            step(action)
+        finally:
+            sys.settrace(None)
+        counts.append(total[0] - before)
+
+    _play(task, "full", runs, steps, traced)
+    return statistics.median(counts)
+
+
+def _bytecode_table(tasks: dict, runs: int, steps: int, top: int) -> None:
+    by_code: Counter = Counter()
+    medians = {}
+    print(f"{'task':48s}{'bytecodes':>10s}   (median Python bytecodes per step)")
+    for task_id, task in tasks.items():
+        medians[task_id] = _bytecodes(task, runs, steps, by_code)
+        print(f"{task_id:48s}{medians[task_id]:10.0f}")
+    if len(medians) > 1:
+        print(f"{'median over ' + str(len(medians)) + ' tasks':48s}{statistics.median(medians.values()):10.0f}")
+    played = len(tasks) * runs * steps
+    print(f"\nthe {top} functions that execute the most (bytecodes per step, all tasks' steps):")
+    for code, n in by_code.most_common(top):
+        where = Path(code.co_filename)
+        where = where.relative_to(ROOT) if where.is_relative_to(ROOT) else where.name
+        print(f"{n / played:10.1f}  {where}:{code.co_name}")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -73,10 +137,16 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--runs", type=int, default=3)
     parser.add_argument("--steps", type=int, default=400)
     parser.add_argument("--rounds", type=int, default=2)
+    parser.add_argument("--bytecodes", action="store_true",
+                        help="count the Python bytecodes each step executes instead of timing")
+    parser.add_argument("--top", type=int, default=15, help="with --bytecodes: functions listed")
     args = parser.parse_args(argv)
     task_ids = resolve_tasks(args.tasks)
-    best = {task_id: dict.fromkeys(VARIANTS, float("inf")) for task_id in task_ids}
     tasks = {task_id: make(task_id) for task_id in task_ids}
+    if args.bytecodes:
+        _bytecode_table(tasks, args.runs, args.steps, args.top)
+        return 0
+    best = {task_id: dict.fromkeys(VARIANTS, float("inf")) for task_id in task_ids}
     for _ in range(args.rounds):
         for task_id, task in tasks.items():
             for variant in VARIANTS:

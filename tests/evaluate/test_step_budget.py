@@ -1,6 +1,9 @@
 """scripts/step_budget.py: the five ways it plays a task, and its table (no timing asserted)."""
 
 import importlib.util
+import re
+import subprocess
+import sys
 from pathlib import Path
 
 from glyphbench_rl.core import make
@@ -38,3 +41,17 @@ def test_prints_a_row_per_task_and_the_medians(capsys):
     assert lines[3].startswith("median over 2 tasks")
     full, grid, hud, turn, frame = map(float, lines[1].split()[1:])
     assert full > 0 and frame > 0
+
+
+def test_bytecode_counts_are_the_same_in_every_fresh_process():
+    command = [sys.executable, str(ROOT / "scripts" / "step_budget.py"), "--bytecodes", "--tasks",
+               "glyphbench/classics-snake-easy-v0", "--runs", "1", "--steps", "20", "--top", "3"]
+    first, second = (subprocess.run(command, capture_output=True, text=True, check=True, cwd=ROOT).stdout
+                     for _ in range(2))
+    assert first == second       # a count, not a time: a busy machine does not change it
+    lines = first.splitlines()
+    assert lines[0].split()[:2] == ["task", "bytecodes"]
+    assert lines[1].split()[0] == "glyphbench/classics-snake-easy-v0" and int(lines[1].split()[1]) > 0
+    busiest = lines[lines.index("") + 2:]
+    assert len(busiest) == 3
+    assert all(re.fullmatch(r"\s*\d+\.\d\s+\S+\.py:\S+", line) for line in busiest), busiest
