@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import sys
 from codecs import charmap_decode as _charmap_decode
-from itertools import compress
 
 import numpy as np
 
@@ -377,11 +376,13 @@ def _mob_codes(state: State, level: int, r0: int, c0: int) -> list[tuple[int, in
                  state.mob_projectiles, state.player_projectiles):
         live = mobs.mask[level]
         if True in live:
-            # (``compress`` hands over the live slots only: dead ones cost no Python step)
-            for (row, col), type_id in compress(zip(mobs.position[level], mobs.type_id[level]), live):
-                r, c = row - r0, col - c0
-                if 0 <= r < ROWS and 0 <= c < COLS:
-                    marks.append((r, c, base + type_id))
+            positions, types = mobs.position[level], mobs.type_id[level]
+            for slot, on in enumerate(live):
+                if on:
+                    row, col = positions[slot]
+                    r, c = row - r0, col - c0
+                    if 0 <= r < ROWS and 0 <= c < COLS:
+                        marks.append((r, c, base + types[slot]))
         base += 8
     return marks
 
