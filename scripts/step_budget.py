@@ -37,7 +37,8 @@ import time
 from collections import Counter
 from pathlib import Path
 
-from glyphbench_rl.core import make, resolve_tasks, seeding
+from glyphbench_rl.core import make, resolve_tasks
+from glyphbench_rl.evaluate.bench import follow_on_seed, stream_actions
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -64,15 +65,14 @@ def _play(task, variant: str, runs: int, steps: int, each) -> None:
     each of seeds 0 .. runs-1, an episode that ends followed by another; ``each(step, action)``
     takes each step."""
     for seed in range(runs):
-        actions = [int(a) for a in seeding.generator(seed, "bench-actions").integers(
-            task.action_space.n, size=steps)]
+        actions = stream_actions(task, seed, steps)
         task.reset(seed=seed)
         _hold(task, variant)
         episode, step = 0, task.step
         for a in actions:
             if task.done:
                 episode += 1
-                task.reset(seed=seeding.TRAIN_SEEDS.stop - 1 - seed * 1000 - episode)
+                task.reset(seed=follow_on_seed(seed, episode))
                 _hold(task, variant)
             each(step, a)
     _hold(task, "full")

@@ -92,13 +92,24 @@ class TaskBench:
         return None if self.raw_step_us is None else self.step_us / self.raw_step_us
 
 
+def stream_actions(task, seed: int, steps: int) -> list[int]:
+    """The ``steps`` random actions of the bench's stream from seed ``seed``."""
+    rng = seeding.generator(seed, "bench-actions")
+    return [int(a) for a in rng.integers(task.action_space.n, size=steps)]
+
+
+def follow_on_seed(seed: int, episode: int) -> int:
+    """The seed of the ``episode``-th episode (from 1) that follows the first in the stream
+    from ``seed`` (one that ends before the stream does is followed by another)."""
+    return seeding.TRAIN_SEEDS.stop - 1 - seed * 1000 - episode
+
+
 def _run(task, seed: int, steps: int, recorder=None) -> tuple[list[float], list[float], list[str]]:
     """One stream of ``steps`` random actions from ``reset(seed=seed)``: the time of each step,
     of each reset, and every observation. A ``recorder`` (an engine task's ``raw_replay()``)
     hears of each reset and turn."""
     clock = time.perf_counter
-    rng = seeding.generator(seed, "bench-actions")
-    actions = [int(a) for a in rng.integers(task.action_space.n, size=steps)]
+    actions = stream_actions(task, seed, steps)
     times, resets = [], []
     t0 = clock()
     obs, _ = task.reset(seed=seed)
@@ -110,7 +121,7 @@ def _run(task, seed: int, steps: int, recorder=None) -> tuple[list[float], list[
     for a in actions:
         if task.done:
             episode += 1
-            again = seeding.TRAIN_SEEDS.stop - 1 - seed * 1000 - episode
+            again = follow_on_seed(seed, episode)
             t0 = clock()
             obs, _ = task.reset(seed=again)
             resets.append(clock() - t0)

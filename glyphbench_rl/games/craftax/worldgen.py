@@ -426,7 +426,9 @@ class _Walk:
         """Spread from the ``frontier`` cells (just joined) over walkable cells one step a tick
         of ``clock``, writing each new cell's tick. (Every cell joined before the frontier has
         its walkable neighbours inside already, so spreading from the frontier alone gives the
-        ticks that spreading from the whole region would.)"""
+        ticks that spreading from the whole region would. The ticks are the cells' layers in
+        ``games.common.grid.bfs_layers``; that function, with its dict of cells, made a world
+        2-3 ms slower than this walk over flat indices and byte flags.)"""
         neighbours, free, inside, when = self.neighbours, self.free, self.inside, self.when
         while True:
             tick, new = self.clock + 1, []
