@@ -24,7 +24,7 @@ ENGINE_LEVEL = {
     "classics": {"versus"},
     "minigrid": {"engine", "world", "grid", "rooms", "solver"},
     "procgen": {"engine", "mazes", "platforms", "scrolling", "shooting"},
-    "craftax": {"bestiary", "full", "hud", "mobs", "noise", "planner", "rules", "scenarios", "state", "suite", "tables", "task", "upkeep", "view", "worldgen"},
+    "craftax": {"bestiary", "full", "hud", "kernel", "kernel_mobs", "kernel_rules", "kernel_view", "mobs", "packed", "noise", "planner", "rules", "scenarios", "state", "suite", "tables", "task", "upkeep", "view", "worldgen"},
     "nethack": {"engine", "render", "levels", "boxoban", "boxoban_env", "custom", "lean", "rawstep"},
 }
 SHARED = "common"

@@ -70,11 +70,13 @@ class GlyphTask(gym.Env[str, int]):
 
     _plain_vocab: ClassVar[bool] = True   # the class keeps GlyphTask.vocab (its glyphs)
     _plain_frame: ClassVar[bool] = True   # it keeps GlyphTask._build_frame, with no axes
+    _own_bits: ClassVar[bool] = False     # it overrides _glyph_bits
 
     def __init_subclass__(cls, **kwargs) -> None:
         super().__init_subclass__(**kwargs)
         cls._plain_vocab = cls.vocab is GlyphTask.vocab
         cls._plain_frame = cls._build_frame is GlyphTask._build_frame and not cls.axes
+        cls._own_bits = cls._glyph_bits is not GlyphTask._glyph_bits
 
     def __init__(self, *, max_turns: int | None = None, tier: str = "standard",
                  task_id: str | None = None, render_mode: str | None = None, **params: Any) -> None:
@@ -140,6 +142,13 @@ class GlyphTask(gym.Env[str, int]):
 
     def _hud(self) -> str:
         return ""
+
+    def _glyph_bits(self, legends) -> int | None:
+        """The legend of the grid ``_grid`` just drew, as ``legends`` (a ``frame.Legends``) would
+        find it from the rows (a bit per entry of ``legends.entries`` whose glyph is on the
+        grid), when the game knows it without reading the rows; None to have the rows read.
+        (A game whose grid is drawn from codes can collect them as it draws.)"""
+        return None
 
     # -- called by games inside _act ------------------------------------------------------------
     def reward(self, amount: float) -> None:
@@ -313,13 +322,15 @@ class GlyphTask(gym.Env[str, int]):
             self._legend_vocab, self._legend_memo = vocab, legends_for(vocab_entries(vocab))
             self._legend_bits = -1
         memo = self._legend_memo
-        known = memo.rows
-        bits = 0
-        try:   # (the glyphs of a row seen before are remembered: most rows repeat)
-            for row in grid:
-                bits |= known[row]
-        except KeyError:
-            bits = memo.grid_bits(grid)
+        bits = self._glyph_bits(memo) if self._own_bits else None
+        if bits is None:
+            known = memo.rows
+            bits = 0
+            try:   # (the glyphs of a row seen before are remembered: most rows repeat)
+                for row in grid:
+                    bits |= known[row]
+            except KeyError:
+                bits = memo.grid_bits(grid)
         if bits != self._legend_bits:
             self._legend_bits = bits
             self._legend, self._legend_text = memo.legend(bits)

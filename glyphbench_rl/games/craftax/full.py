@@ -11,9 +11,12 @@ achievements earned in the HUD; the prompt lists every achievement by weight.
 
 from __future__ import annotations
 
+import numpy as np
+
 from ...core import register_variants
 from ...core.task import NoParams
 from . import hud
+from .packed import ACH, HEALTH
 from .scenarios import Scenario
 from .state import Settings
 from .tables import (ACHIEVEMENT_REWARD, ADVANCED_WEIGHT, BASIC_WEIGHT, INTERMEDIATE_WEIGHT,
@@ -54,15 +57,16 @@ class CraftaxFull(CraftaxTask):
     def prompt_fields(self) -> dict:
         return {**super().prompt_fields(), "achievements": achievements_text()}
 
-    def _score(self, state, tally, native: float) -> None:
+    def _score(self, tally, native: float) -> None:
         self.reward(native)
-        if state.player_health <= 0:
+        if self.packed.floats.item(HEALTH) <= 0:
             self.say("You died.")
             self.finish(won=False)
 
     def _hud(self) -> str:
-        earned = int(self.state.achievements.sum())
-        return f"{hud.hud(self.state, self.settings)} | Achievements {earned}/{len(Achievement)}"
+        self._take_edits()
+        earned = int(np.count_nonzero(self.packed.ints[ACH:ACH + len(Achievement)]))
+        return f"{hud.packed_hud(self.packed)} | Achievements {earned}/{len(Achievement)}"
 
 
 register_variants(CraftaxFull, "FullCraftax", {"glyphbench/craftaxfull-v0": {"max_turns": HORIZON}}, tier="extended")

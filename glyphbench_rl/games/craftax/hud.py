@@ -1,13 +1,18 @@
 """The Craftax HUD: one line of vitals, inventory, equipment, potions, spells, attributes, floor,
 position, facing, light and rest state (``hud``; ``_hud`` is the same line written out with
-nothing remembered). The grid is ``view``'s.
+nothing remembered; ``packed_hud`` the same line read from the packed state, ``packed``). The
+grid is ``view``'s.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from .state import Settings, State
+from .packed import (ARMOUR, ARMOUR_ENCH, BOW_ENCH, COL, DEX, DIRECTION, DRINK, ENERGY, FOOD,
+                     HEALTH, INT, INV, INVENTORY, KILLED, LEVEL, LIGHT, MANA, POTIONS, RESTING,
+                     ROW, SLEEPING, STR, SWORD_ENCH, XP, Packed)
+from .packed import SPELLS as _SPELLS      # (``SPELLS`` here: the spells' names)
+from .state import NUM_LEVELS, Settings, State
 from .tables import (DARK_LEVELS, LEVEL_NAMES, NIGHT_LIGHT, POTION_COLOURS, Action, max_drink,
                      max_energy, max_food, max_health, max_mana)
 from .tables import MONSTERS_KILLED_TO_CLEAR_LEVEL as KILLS_TO_OPEN_LADDER
@@ -28,9 +33,12 @@ _COUNTED_LABELS = tuple((name, name.capitalize()) for name in COUNTED)
 def max_vitals(state: State) -> tuple[int, int, int, int, int]:
     """Upstream's maxima (``tables.max_*``): health 8+str, food/drink/energy 7+2*dex, mana
     6+3*int (dexterity, strength and intelligence start at 1)."""
-    dex = state.player_dexterity
-    return (max_health(state.player_strength), max_food(dex), max_drink(dex), max_energy(dex),
-            max_mana(state.player_intelligence))
+    return _maxima(state.player_strength, state.player_dexterity, state.player_intelligence)
+
+
+def _maxima(strength: int, dex: int, intelligence: int) -> tuple[int, int, int, int, int]:
+    return (max_health(strength), max_food(dex), max_drink(dex), max_energy(dex),
+            max_mana(intelligence))
 
 
 def _number(x: float) -> str:
@@ -76,17 +84,19 @@ def hud(state: State, settings: Settings | None = None) -> str:
     if vitals_key == last[0]:
         vitals = last[1]
     else:
-        vitals = _remembered(_VITALS, vitals_key, _vitals, state)
+        vitals = _remembered(_VITALS, vitals_key, _vitals, *vitals_key)
         last[0], last[1] = vitals_key, vitals
     if kit_key == last[2]:
         kit = last[3]
     else:
-        kit = _remembered(_KITS, kit_key, _kit, state)
+        kit = _KITS.get(kit_key)
+        if kit is None:
+            kit = _keep(_KITS, kit_key, _kit(*_kit_values(state)))
         last[2], last[3] = kit_key, kit
     if place_key == last[4]:
         before, after = last[5]
     else:
-        place = _remembered(_PLACES, place_key, _place, state)
+        place = _remembered(_PLACES, place_key, _place, *place_key)
         last[4], last[5] = place_key, place
         before, after = place
     row, col = key[3]
@@ -95,19 +105,91 @@ def hud(state: State, settings: Settings | None = None) -> str:
     return last[7]
 
 
-def _remembered(memo: dict, key: tuple, make, state: State):
-    """``memo[key]``, made by ``make(state)`` the first time (a memo holds 10,000 at most)."""
+def _remembered(memo: dict, key: tuple, make, *values):
+    """``memo[key]``, made by ``make(*values)`` the first time (``_keep``)."""
     value = memo.get(key)
     if value is None:
-        if len(memo) >= 10_000:
-            memo.clear()
-        value = memo[key] = make(state)
+        value = _keep(memo, key, make(*values))
     return value
 
 
+def _keep(memo: dict, key: tuple, value):
+    """``value``, kept as ``memo[key]`` (a memo holds 10,000 at most)."""
+    if len(memo) >= 10_000:
+        memo.clear()
+    memo[key] = value
+    return value
+
+
+# ---- the same line from the packed state (``packed``) ------------------------------------
+#
+# ``packed_hud`` reads ``p.ints`` as one byte string (one numpy call) and keys the line on
+# three slices of it: the scalars up to the enchantments (floor, facing, food ... mana,
+# sleeping, resting, XP, attributes, enchantments), the inventory's counts up to the spells
+# (counts, armour, potions, armour enchantments, the potion mapping, which the line does not
+# show but which never changes in an episode, spells) and the floors' kills; with the health
+# and the daylight. The same key as last call's gives last call's text around the position
+# (the same position, the same line); a key not seen before makes it from the same part
+# builders as ``hud``, each part remembered by its own values.
+_WORD = np.dtype(np.int64).itemsize
+_HEAD = slice(0, (BOW_ENCH + 1) * _WORD)                    # LEVEL ... BOW_ENCH
+_KIT = slice(INV * _WORD, (_SPELLS + 2) * _WORD)            # the counts ... the spells
+_KILLS = slice(KILLED * _WORD, (KILLED + NUM_LEVELS) * _WORD)
+_POSITION = slice(ROW * _WORD, (COL + 1) * _WORD)
+_COUNTED_AT = tuple(INV + INVENTORY.index(name) for name in COUNTED)      # COUNTED in p.ints
+_PICKAXE, _SWORD, _BOW = (INV + INVENTORY.index(name) for name in ("pickaxe", "sword", "bow"))
+# (the key's slices hold every int the line reads)
+assert max(LEVEL, DIRECTION, FOOD, DRINK, ENERGY, MANA, SLEEPING, RESTING, XP, DEX, STR, INT,
+           SWORD_ENCH) < BOW_ENCH + 1 <= INV
+assert INV <= min(_COUNTED_AT) and ARMOUR + 4 <= _SPELLS and POTIONS + 6 <= _SPELLS \
+    and ARMOUR_ENCH + 4 <= _SPELLS
+_PACKED_TEXT: dict[tuple, tuple[str, str]] = {}   # the key -> text before and after the position
+_PACKED_VITALS: dict[tuple, str] = {}
+_PACKED_KITS: dict[tuple, str] = {}
+_PACKED_PLACES: dict[tuple, tuple[str, str]] = {}
+# last call's key, its text around the position, the position's bytes, the line
+_packed_last: list = [None, ("", ""), None, ""]
+
+
+def packed_hud(p: Packed) -> str:
+    """``hud`` of the state ``p`` packs, read from ``p.ints`` and ``p.floats``."""
+    ints, last = p.ints, _packed_last
+    b = ints.tobytes()
+    key = (b[_HEAD], b[_KIT], b[_KILLS], p.floats.item(HEALTH),
+           p.floats.item(LIGHT) >= NIGHT_LIGHT)
+    if key != last[0]:
+        text = _PACKED_TEXT.get(key)
+        if text is None:
+            text = _packed_text(ints, key)
+        last[0], last[1], last[2] = key, text, None
+    position = b[_POSITION]
+    if position != last[2]:
+        before, after = last[1]
+        last[2], last[3] = position, f"{before}{ints.item(ROW)},{ints.item(COL)}{after}"
+    return last[3]
+
+
+def _packed_text(ints: np.ndarray, key: tuple) -> tuple[str, str]:
+    """The line's text before and after the position for ``packed_hud``'s key (remembered)."""
+    v = ints[:_SPELLS + 2].tolist()
+    level, strength, dex, intelligence = v[LEVEL], v[STR], v[DEX], v[INT]
+    vitals = (key[3], v[FOOD], v[DRINK], v[ENERGY], v[MANA], strength, dex, intelligence)
+    kit = (v[XP], strength, dex, intelligence, tuple([v[i] for i in _COUNTED_AT]), v[_PICKAXE],
+           v[_SWORD], v[_BOW], v[SWORD_ENCH], v[BOW_ENCH], v[ARMOUR:ARMOUR + 4],
+           v[ARMOUR_ENCH:ARMOUR_ENCH + 4], v[POTIONS:POTIONS + 6], v[_SPELLS:_SPELLS + 2])
+    place = (level, v[DIRECTION], key[4], ints.item(KILLED + level))
+    before, after = _remembered(_PACKED_PLACES, place, _place, *place)
+    rest = " | Sleeping" if v[SLEEPING] else " | Resting" if v[RESTING] else ""
+    head = (_remembered(_PACKED_VITALS, vitals, _vitals, *vitals)
+            + _remembered(_PACKED_KITS, (key[1], *kit[:4], *kit[8:10]), _kit, *kit))
+    return _keep(_PACKED_TEXT, key, (f"{head} | {before}", f"{after}{rest}"))
+
+
+# ---- the parts ---------------------------------------------------------------------------
+
 def _hud(state: State) -> str:
     """The HUD made from the state (nothing remembered)."""
-    parts = [_vitals(state) + _kit(state), _where(state)]
+    parts = [_vitals(*_vitals_values(state)) + _kit(*_kit_values(state)), _where(state)]
     if state.is_sleeping:
         parts.append("Sleeping")
     elif state.is_resting:
@@ -115,67 +197,82 @@ def _hud(state: State) -> str:
     return " | ".join(parts)
 
 
-def _vitals(state: State) -> str:
-    """The HUD's vitals with their maxima."""
-    maxima = max_vitals(state)
-    values = (_number(state.player_health), state.player_food, state.player_drink,
-              state.player_energy, state.player_mana)
+def _vitals_values(state: State) -> tuple:
+    """What ``_vitals`` reads, from the state."""
+    return (state.player_health, state.player_food, state.player_drink, state.player_energy,
+            state.player_mana, state.player_strength, state.player_dexterity,
+            state.player_intelligence)
+
+
+def _vitals(health: float, food: int, drink: int, energy: int, mana: int, strength: int,
+            dex: int, intelligence: int) -> str:
+    """The HUD's vitals with their maxima (``max_vitals``)."""
+    maxima = _maxima(strength, dex, intelligence)
+    values = (_number(health), food, drink, energy, mana)
     if len(set(maxima)) == 1:      # (the usual case: every maximum 9) said once
         return " ".join(f"{name} {v}" for name, v in zip(VITALS, values)) + f" (max {maxima[0]})"
     return " ".join(f"{name} {v}/{m}" for name, v, m in zip(VITALS, values, maxima))
 
 
-def _kit(state: State) -> str:
-    """The HUD's inventory, gear, potions, spells and attributes, each part after `` | ``
-    ("" when there are none)."""
-    parts = [""]
+def _kit_values(state: State) -> tuple:
+    """What ``_kit`` reads, from the state."""
     inv = state.inventory
-    counted = [f"{label} {n}" for name, label in _COUNTED_LABELS if (n := getattr(inv, name))]
+    return (state.player_xp, state.player_strength, state.player_dexterity,
+            state.player_intelligence, tuple([getattr(inv, name) for name in COUNTED]),
+            inv.pickaxe, inv.sword, inv.bow, state.sword_enchantment, state.bow_enchantment,
+            inv.armour.tolist(), state.armour_enchantments.tolist(), inv.potions.tolist(),
+            state.learned_spells.tolist())
+
+
+def _kit(xp: int, strength: int, dex: int, intelligence: int, counts: tuple, pickaxe: int,
+         sword: int, bow: int, sword_enchantment: int, bow_enchantment: int, armour: list,
+         armour_enchantments: list, potions: list, spells: list) -> str:
+    """The HUD's inventory (``counts``: ``COUNTED``'s), gear, potions, spells and attributes,
+    each part after `` | `` ("" when there are none)."""
+    parts = [""]
+    counted = [f"{label} {n}" for (_, label), n in zip(_COUNTED_LABELS, counts) if n]
     if counted:
         parts.append(" ".join(counted))
     gear = []
-    if inv.pickaxe:
-        gear.append(f"{TIERS[inv.pickaxe]} pickaxe")
-    if inv.sword:
-        gear.append(f"{_enchanted(state.sword_enchantment)}{TIERS[inv.sword]} sword")
-    if inv.bow:
-        gear.append(f"{_enchanted(state.bow_enchantment)}bow")
-    armour = []
-    if np.count_nonzero(inv.armour):
-        armour = [f"{_enchanted(e)}{ARMOUR_TIERS[t]} {slot}" for slot, t, e in
-                  zip(ARMOUR_SLOTS, inv.armour.tolist(), state.armour_enchantments.tolist()) if t]
-    if gear or armour:
-        parts.append(", ".join(gear + armour))
-    if np.count_nonzero(inv.potions):
+    if pickaxe:
+        gear.append(f"{TIERS[pickaxe]} pickaxe")
+    if sword:
+        gear.append(f"{_enchanted(sword_enchantment)}{TIERS[sword]} sword")
+    if bow:
+        gear.append(f"{_enchanted(bow_enchantment)}bow")
+    pieces = [f"{_enchanted(e)}{ARMOUR_TIERS[t]} {slot}" for slot, t, e in
+              zip(ARMOUR_SLOTS, armour, armour_enchantments) if t]
+    if gear or pieces:
+        parts.append(", ".join(gear + pieces))
+    if any(potions):
         parts.append("Potions " + " ".join(
-            f"{colour} {n}" for colour, n in zip(POTION_COLOURS, inv.potions.tolist()) if n))
-    if np.count_nonzero(state.learned_spells):
-        parts.append("Spells " + " ".join(
-            name for name, known in zip(SPELLS, state.learned_spells.tolist()) if known))
-    levels = [f"{name} {v}" for name, v in (("Dex", state.player_dexterity),
-                                              ("Str", state.player_strength),
-                                              ("Int", state.player_intelligence)) if v > 1]
-    if state.player_xp or levels:
-        parts.append(" ".join([f"XP {state.player_xp}", *levels]))
+            f"{colour} {n}" for colour, n in zip(POTION_COLOURS, potions) if n))
+    if any(spells):
+        parts.append("Spells " + " ".join(name for name, known in zip(SPELLS, spells) if known))
+    levels = [f"{name} {v}" for name, v in (("Dex", dex), ("Str", strength),
+                                              ("Int", intelligence)) if v > 1]
+    if xp or levels:
+        parts.append(" ".join([f"XP {xp}", *levels]))
     return " | ".join(parts)
 
 
 def _where(state: State) -> str:
     """The HUD's floor, position, facing, daylight or darkness, and kills toward the ladder."""
     row, col = state.player_position.tolist()
-    before, after = _place(state)
+    level = state.player_level
+    before, after = _place(level, state.player_direction, state.light_level >= NIGHT_LIGHT,
+                           state.monsters_killed.tolist()[level])
     return f"{before}{row},{col}{after}"
 
 
-def _place(state: State) -> tuple[str, str]:
-    """``_where``'s text before the position and after it."""
-    level = state.player_level
-    after = f" facing {FACING.get(state.player_direction, '?')}"
+def _place(level: int, direction: int, day: bool, killed: int) -> tuple[str, str]:
+    """``_where``'s text before the position and after it (``day``: the light level is at
+    least ``NIGHT_LIGHT``; ``killed``: the floor's kills)."""
+    after = f" facing {FACING.get(direction, '?')}"
     if level == 0:
-        after += " Day" if state.light_level >= NIGHT_LIGHT else " Night"
+        after += " Day" if day else " Night"
     elif level in DARK_LEVELS:
         after += " dark"
-    killed = state.monsters_killed.tolist()[level]
     if level < len(LEVEL_NAMES) - 1 and killed < KILLS_TO_OPEN_LADDER:
         after += f" Kills {killed}/{KILLS_TO_OPEN_LADDER}"
     return f"Floor {level} {LEVEL_NAMES[level]} at ", after

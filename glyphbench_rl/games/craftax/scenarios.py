@@ -303,7 +303,7 @@ class Context:
         self.reserve: list[tuple[str, int, int]] = []
         # the waiting list ``admit`` left and the classes of its mobs (all of known names), to
         # tell at once that every one of them still waits (see ``admit``)
-        self._waited: tuple[list, tuple[int, ...]] = ([], ())
+        self.waited: tuple[list, tuple[int, ...]] = ([], ())
 
     def admit(self, state, rng) -> None:
         """Each waiting mob, in turn, whose class has a free slot takes a random free cell in
@@ -315,7 +315,7 @@ class Context:
         over it (a fight scenario's step, its mobs all out, asks this every turn)."""
         groups = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)
         level = state.player_level
-        waited, classes = self._waited
+        waited, classes = self.waited
         if self.reserve == waited:
             for k in classes:
                 if False in groups[k].mask[level]:
@@ -343,7 +343,7 @@ class Context:
                 waiting.append((name, dmin, dmax))
         self.reserve = waiting
         known = [MOB_BY_NAME.get(name) for name, _, _ in waiting]
-        self._waited = ((list(waiting), tuple({k[0] for k in known})) if None not in known
+        self.waited = ((list(waiting), tuple({k[0] for k in known})) if None not in known
                         else ([None], ()))       # (a list no reserve equals: never skipped)
 
 
@@ -483,19 +483,23 @@ class Scenario:
             edit.apply(state, rng, ctx)
         return state, ctx
 
-    def run_events(self, task, state, tally) -> None:
-        """After each step: waiting mobs take free slots; events whose test holds run once (the
-        ``task`` keeps them); a steady test only when ``tally.changes`` moved (``task.Tally``)."""
+    def run_events(self, task, tally) -> None:
+        """After each step: waiting mobs take free slots (``task.admit``); events whose test
+        holds run once (the ``task`` keeps them) on its state (``task.edit``); a steady test only
+        when ``tally.changes`` moved (``task.Tally``)."""
         ctx, rng = task.ctx, task.play_rng
         if ctx.reserve:
-            ctx.admit(state, rng)
+            task.admit()
         fresh, task.events_at = tally.changes != task.events_at, tally.changes
         for i, (event, when, steady) in enumerate(task.events):
             if (fresh or not steady) and i not in task.fired and when(tally):
                 task.fired.add(i)
-                ctx.r0, ctx.c0 = (int(v) for v in state.player_position)
-                for edit in event.edits:
-                    edit.apply(state, rng, ctx)
+
+                def run(state, event=event) -> None:
+                    ctx.r0, ctx.c0 = (int(v) for v in state.player_position)
+                    for edit in event.edits:
+                        edit.apply(state, rng, ctx)
+                task.edit(run)
                 if event.says:
                     task.say(event.says)
 

@@ -18,12 +18,15 @@ import numpy as np
 from ...core import GlyphTask
 from ...core.actions import ActionSet
 from ...core.params import param
-from ..common.lanes import Draws
-from . import hud, rules, view
+from . import hud, kernel, kernel_view, view
 from .bestiary import MOB_NAMES
 from .scenarios import SCENARIOS, Scenario, parse_test
-from .tables import NIGHT_LIGHT, Achievement, Action, BlockType
-from .upkeep import COUNTS, held_counts
+from .packed import (ACH, ALIVE, ARMOUR, BOSS_PROGRESS, COL, DEX, DIRECTION, HEALTH, INT, INV,
+                     INVENTORY, KILLED, LEVEL, POTION_MAP, ROW, SPELLS, STEP_FLAGS, STR, SWORD_ENCH,
+                     XP, KernelDraws, Packed, pack, unpack)
+from .state import MAP_SIZE, MAX_MELEE, MAX_PASSIVE, MAX_RANGED, State
+from .tables import DIRECTIONS, Achievement, Action, BlockType
+from .upkeep import COUNTS
 
 SINGLE = [
     ("NOOP", "do nothing"),
@@ -61,6 +64,17 @@ _WATCHED = ({int(a): _PLACING for a in PLACED} | {_PLACE_TORCH: _TORCH}
             | dict.fromkeys(DRINKS, _DRINKING) | dict.fromkeys(CASTS, _CASTING))
 _PLACED = {int(a): (int(b), b.name.lower()) for a, b in PLACED.items()}
 POTION_EFFECTS = ("heal", "harm", "mana", "drain", "energy", "tire")   # upstream's effect order
+_HELD_AT = tuple(INV + INVENTORY.index(name) for name in ITEMS)    # (packed offsets, ITEMS order)
+_FACING = {int(a): d for a, d in DIRECTIONS.items()}
+# the step's flags (``kernel``) the tally counts from; a step with none costs a turn's count
+_COUNTED = (kernel.CHANGED_INVENTORY | kernel.ATE | kernel.DRANK | kernel.SPENT_MANA
+            | kernel.USED_TORCH | kernel.DRANK_POTION | kernel.KILLED_MOB | kernel.CHANGED_LEVEL
+            | kernel.CHANGED_ACHIEVEMENTS)
+_NIGHT = kernel.NIGHT_ON_SURFACE
+# what an edit of the state between steps may have changed that the tally compares with what it
+# saw last (its holdings, level, achievements): the next step looks at them whatever it changed
+_EDITED = kernel.CHANGED_INVENTORY | kernel.CHANGED_LEVEL | kernel.CHANGED_ACHIEVEMENTS
+SLOT_COUNTS = (MAX_PASSIVE, MAX_MELEE, MAX_RANGED)     # the mob classes' slots (packed order)
 
 
 class Tally:
@@ -72,8 +86,9 @@ class Tally:
     by effect), ``health``, ``done.X`` (an achievement, 0 or 1), ``str``/``dex``/``int``, ``xp``,
     ``enchant.sword``, ``spells``, ``gate`` (the level's kill count toward its ladder), ``boss``.
 
-    ``getter(key)`` compiles a counter to a function of the tally, once; a step only updates the
-    few running counts (items got, kills, placements), so a test costs a few attribute reads.
+    It reads the packed state the kernel plays (``packed``): ``getter(key)`` compiles a counter
+    to a function of the tally, once; a step only updates the few running counts (items got,
+    kills, placements), so a test costs a few reads.
 
     ``changes`` counts the steps after which a *steady* counter (``steady``) differed from what it
     was after the step before: the counts the tally keeps (``kept``: all but ``turn`` and
@@ -83,43 +98,42 @@ class Tally:
     again (``CraftaxTask._score``, ``run_events``); the HUD's progress, made whenever asked, may
     do so only for kept counts (the state may have been edited since the step)."""
 
-    def __init__(self, state) -> None:
-        self.state = state
+    def __init__(self, p: Packed) -> None:
+        self.p = p
+        self.ints, self.floats, self.kill_counts = p.ints, p.floats, p.kills
         self.got = dict.fromkeys(ITEMS, 0)
         self.kills: dict[str, int] = {"monsters": 0, "all": 0}
         self.placed = {b.name.lower(): 0 for b in PLACED.values()} | {"torch": 0}
         self.counts = {"turn": 0, "night": 0, "ate": 0, "drank": 0, "cast": 0,
-                       "deepest": state.player_level}
+                       "deepest": self.ints.item(LEVEL)}
         self.potions = dict.fromkeys(POTION_EFFECTS, 0)
-        self._held = self._holdings(state)
+        self._held = self._holdings()
+        self._killed = self.kill_counts.copy()       # the kill counts counted
         self._getters: dict = {}       # key -> getter, compiled once (``value``)
         self.changes = 0
-        self._last_level, self._last_kills = state.player_level, 0     # after the last step
-        self._achieved = None     # the achievements' bytes after the last step (a test reads one)
-        # ``rules.step``'s ``ended``: the step sets the held counts and achievements' bytes it
-        # ended with, ``after_step`` takes them (and reads them itself when no step set them)
-        self.step_ended: list = [None, None]
+        self._last_level = self.ints.item(LEVEL)     # after the last step
+        self._achieved = None     # not None: a test reads an achievement (a change is steady)
 
-    @staticmethod
-    def _holdings(state) -> tuple:
-        return held_counts(state.inventory)
+    def _holdings(self) -> tuple:
+        return tuple(map(self.ints.item, _HELD_AT))
 
     def getter(self, key: str):
         head, _, tail = key.partition(".")
-        simple = {"level": lambda t: t.state.player_level, "health": lambda t: t.state.player_health,
-                  "str": lambda t: t.state.player_strength, "dex": lambda t: t.state.player_dexterity,
-                  "int": lambda t: t.state.player_intelligence, "xp": lambda t: t.state.player_xp,
-                  "spells": lambda t: int(t.state.learned_spells.sum()),
-                  "gate": lambda t: int(t.state.monsters_killed[t.state.player_level]),
-                  "boss": lambda t: t.state.boss_progress}
+        simple = {"level": lambda t: t.ints.item(LEVEL), "health": lambda t: t.floats.item(HEALTH),
+                  "str": lambda t: t.ints.item(STR), "dex": lambda t: t.ints.item(DEX),
+                  "int": lambda t: t.ints.item(INT), "xp": lambda t: t.ints.item(XP),
+                  "spells": lambda t: t.ints.item(SPELLS) + t.ints.item(SPELLS + 1),
+                  "gate": lambda t: t.ints.item(KILLED + t.ints.item(LEVEL)),
+                  "boss": lambda t: t.ints.item(BOSS_PROGRESS)}
         if key in simple:
             return simple[key]
         if key in self.counts:
             return lambda t: t.counts[key]
         if head == "holds" and tail in ITEMS:
-            return lambda t: getattr(t.state.inventory, tail)
+            at = INV + INVENTORY.index(tail)
+            return lambda t: t.ints.item(at)
         if key == "holds.armour":
-            return lambda t: int(np.count_nonzero(t.state.inventory.armour))
+            return lambda t: int(np.count_nonzero(t.ints[ARMOUR:ARMOUR + 4]))
         if head == "got" and tail in ITEMS:
             return lambda t: t.got[tail]
         if head == "kills":      # mob names have spaces; a test writes them with _ (kills.fire_elemental)
@@ -130,12 +144,11 @@ class Tally:
         if head == "potion" and tail in self.potions:
             return lambda t: t.potions[tail]
         if head == "done" and tail.upper() in Achievement.__members__:
-            index = Achievement[tail.upper()].value
-            if self._achieved is None:      # (a test reads achievements: each step compares them)
-                self._achieved = b""
-            return lambda t: int(t.state.achievements.item(index))
+            at = ACH + Achievement[tail.upper()].value
+            self._achieved = True      # (a test reads achievements: a change counts)
+            return lambda t: t.ints.item(at)
         if key == "enchant.sword":
-            return lambda t: t.state.sword_enchantment
+            return lambda t: t.ints.item(SWORD_ENCH)
         raise KeyError(f"unknown Craftax counter {key!r} (see task.Tally)")
 
     @staticmethod
@@ -163,115 +176,84 @@ class Tally:
             get = self._getters[key] = self.getter(key)
         return get(self)
 
-    def before_step(self, state, action: int) -> None:
-        """Remember what a step can change that the tally counts by difference. (The level's
-        mob masks, the three classes' slots in one list: ``after_mobs`` looks at slots only
-        when one changed, which few turns do.)"""
-        self._vitals = (state.player_food, state.player_drink, state.player_mana)
-        self._level = level = state.player_level
-        self._masks = [*state.passive_mobs.mask[level], *state.melee_mobs.mask[level],
-                       *state.ranged_mobs.mask[level]]
-        watched = _WATCHED.get(action)
-        if watched == _PLACING:
-            self._ahead = self._facing_block(state)
-        elif watched == _TORCH:
-            self._torches = state.inventory.torches
-        elif watched == _DRINKING:
-            self._potions = state.inventory.potions.copy()
-
-    @staticmethod
-    def _facing_block(state) -> int:
-        r, c = rules.facing(state)
-        if not rules.in_bounds(state, r, c):
+    def facing_block(self) -> int:
+        """The block the player faces (-1 off the map)."""
+        ints = self.ints
+        dr, dc = _FACING.get(ints.item(DIRECTION), (0, 0))
+        r, c = ints.item(ROW) + dr, ints.item(COL) + dc
+        if not (0 <= r < MAP_SIZE[0] and 0 <= c < MAP_SIZE[1]):
             return -1
-        return state.map.item(state.player_level, r, c)
+        return self.p.map.item(ints.item(LEVEL), r, c)
 
-    def after_mobs(self, state) -> None:
-        """Called by the step after the mobs moved and before any spawn: a slot live before the
-        step whose mob is now gone with no health left was a kill (a despawned mob keeps its
-        health; spawning could reuse the slot, which is why this runs before it). Until the
-        spawn no slot comes alive and no type changes, so the slots to look at are those whose
-        mask went from live to dead, and the type read now is the one before."""
-        level = self._level
-        groups = (state.passive_mobs, state.melee_mobs, state.ranged_mobs)
-        if [*groups[0].mask[level], *groups[1].mask[level], *groups[2].mask[level]] == self._masks:
-            return
-        first = 0       # where the class's slots start in the remembered list
-        for k, mobs in enumerate(groups):
-            now = mobs.mask[level]
-            for i, alive in enumerate(now):
-                if self._masks[first + i] and not alive and mobs.health[level][i] <= 0:
-                    self._kill(k, mobs.type_id[level][i])
-            first += len(now)
+    def _count_kills(self) -> None:
+        """The kills since the last look, by class and type, from the kernel's kill counts."""
+        now, old = self.kill_counts, self._killed
+        for kind, type_id in zip(*np.nonzero(now != old)):
+            n = int(now[kind, type_id] - old[kind, type_id])
+            name = MOB_NAMES[kind][type_id]
+            self.kills[name] = self.kills.get(name, 0) + n
+            self.kills["all"] += n
+            if kind:
+                self.kills["monsters"] += n
+        self._killed = now.copy()
 
-    def _kill(self, kind: int, type_id: int) -> None:
-        name = MOB_NAMES[kind][type_id]
-        self.kills[name] = self.kills.get(name, 0) + 1
-        self.kills["all"] += 1
-        if kind:
-            self.kills["monsters"] += 1
-
-    def after_step(self, state, action: int) -> None:
+    def after_step(self, action: int, flags: int, ahead: int | None) -> None:
+        """Count the step the kernel just played: ``flags``, what it changed (``kernel``'s
+        bits); ``ahead``, the block the player faced before it, for a placing action."""
         counts = self.counts
         counts["turn"] += 1
+        if flags & _NIGHT:
+            counts["night"] += 1
+        if not flags & _COUNTED:
+            return
         changed = False          # a steady counter changed (``changes``)
-        ended = self.step_ended
-        held, achieved = ended
-        ended[0] = ended[1] = None
-        if held is None:
-            held = held_counts(state.inventory)
-        if held != self._held:
-            for k, old, new in zip(ITEMS, self._held, held):
-                if new > old:
-                    self.got[k] += new - old
-            self._held = held
-            changed = True
-        food, drink, mana = self._vitals
-        if state.player_food > food:
+        ints = self.ints
+        if flags & kernel.CHANGED_INVENTORY:
+            held = self._holdings()
+            if held != self._held:
+                for k, old, new in zip(ITEMS, self._held, held):
+                    if new > old:
+                        self.got[k] += new - old
+                self._held = held
+                changed = True
+        if flags & kernel.ATE:
             counts["ate"] += 1
             changed = True
-        if state.player_drink > drink:
+        if flags & kernel.DRANK:
             counts["drank"] += 1
             changed = True
         watched = _WATCHED.get(action)
         if watched is None:
             pass
         elif watched == _CASTING:
-            if state.player_mana < mana:
+            if flags & kernel.SPENT_MANA:
                 counts["cast"] += 1
                 changed = True
         elif watched == _PLACING:
             block, name = _PLACED[action]
-            if self._ahead != block and self._facing_block(state) == block:
+            if ahead != block and self.facing_block() == block:
                 self.placed[name] += 1
                 changed = True
         elif watched == _TORCH:
-            if state.inventory.torches < self._torches:
+            if flags & kernel.USED_TORCH:
                 self.placed["torch"] += 1
                 changed = True
-        else:
-            colour = action - _RED
-            if state.inventory.potions[colour] < self._potions[colour]:
-                self.potions[POTION_EFFECTS[int(state.potion_mapping[colour])]] += 1
+        elif flags & kernel.DRANK_POTION:    # (only drinking lowers a potion count)
+            self.potions[POTION_EFFECTS[ints.item(POTION_MAP + action - _RED)]] += 1
+            changed = True
+        if flags & kernel.KILLED_MOB:
+            self._count_kills()
+            changed = True
+        if flags & kernel.CHANGED_LEVEL:
+            level = ints.item(LEVEL)
+            if level != self._last_level:
+                self._last_level = level
                 changed = True
-        if self.kills["all"] != self._last_kills:      # (every kill counts in "all")
-            self._last_kills = self.kills["all"]
-            changed = True
-        level = state.player_level
-        if level == 0 and state.light_level < NIGHT_LIGHT:
-            counts["night"] += 1
-        if level != self._last_level:
-            self._last_level = level
-            changed = True
-        if level > counts["deepest"]:
-            counts["deepest"] = level
-            changed = True
-        if self._achieved is not None:
-            if achieved is None:
-                achieved = state.achievements.tobytes()
-            if achieved != self._achieved:
-                self._achieved = achieved
+            if level > counts["deepest"]:
+                counts["deepest"] = level
                 changed = True
+        if flags & kernel.CHANGED_ACHIEVEMENTS and self._achieved is not None:
+            changed = True
         if changed:
             self.changes += 1
 
@@ -305,10 +287,15 @@ class CraftaxTask(GlyphTask):
                 "reward_text": s.reward_text(), "ends_text": s.ends_text()}
 
     def _setup(self, rng: np.random.Generator) -> None:
-        self.draws = Draws(self.stream("craftax"))
-        self.state, self.ctx = self.scenario.build(rng)
+        self._state, self.ctx = self.scenario.build(rng)
+        self.packed = pack(self._state, self.settings)
+        self.kernel_draws = KernelDraws(self.stream("craftax"))
+        self.kernel_draws.top_up(self.packed)
+        self._lent = False      # the State was handed out (``state``): it is kept in step
+        self._edited = 0        # what edits between steps may have changed (``_EDITED``)
+        self.window = kernel_view.Window()     # (the compiled view's buffers)
         self.play_rng = self.stream("scenario")
-        self.tally = Tally(self.state)
+        self.tally = Tally(self.packed)
         tally, scenario = self.tally, self.scenario
         # (term, its units as a function of the tally, units paid); a term drops out once it
         # can pay no more. ``_live``: those that read a counter that is not steady (Tally)
@@ -325,19 +312,64 @@ class CraftaxTask(GlyphTask):
         self._goal: tuple | None = None
         self._goal_steady = all(tally.kept(k) for k in scenario.progress_keys)
 
-    def _act(self, action: int) -> None:
-        state, tally = self.state, self.tally
-        tally.before_step(state, action)
-        native = rules.step(state, action, self.settings, self.draws, after_mobs=tally.after_mobs,
-                            ended=tally.step_ended)
-        tally.after_step(state, action)
-        if self.events:     # (most scenarios have no events and no waiting mobs)
-            self.scenario.run_events(self, state, tally)
-        elif self.ctx.reserve:      # (all run_events does without events)
-            self.ctx.admit(state, self.play_rng)
-        self._score(state, tally, native)
+    @property
+    def state(self) -> State:
+        """The game as a ``State`` (``state.py``, upstream's fields), for planners, tests and
+        edits. The task plays the packed state (``packed``, ``kernel``); once the State has been
+        asked for, the two are kept in step at every step, so an edit to it is played and a
+        reference to it sees each step."""
+        if not self._lent:
+            unpack(self.packed, self._state)
+            self._lent = True
+        return self._state
 
-    def _score(self, state, tally: Tally, native: float) -> None:
+    def edit(self, change) -> None:
+        """Run ``change(state)`` on the State and play on from what it leaves (scenario events,
+        waiting mobs)."""
+        state = self._state
+        if not self._lent:
+            unpack(self.packed, state)
+        change(state)
+        if not self._lent:
+            pack(state, self.settings, into=self.packed)
+        self._edited = _EDITED
+
+    def _take_edits(self) -> None:
+        """The State handed out may have been edited since: play (and show) what it holds."""
+        if self._lent:
+            pack(self._state, self.settings, into=self.packed)
+            self._edited = _EDITED
+
+    def _act(self, action: int) -> None:
+        p, tally = self.packed, self.tally
+        self._take_edits()
+        ahead = tally.facing_block() if action in _PLACED else None
+        native = kernel.step(p, action)
+        flags = p.ints.item(STEP_FLAGS) | self._edited
+        self._edited = 0
+        if flags & kernel.REFILL:
+            self.kernel_draws.top_up(p)
+        if self._lent:
+            unpack(p, self._state)
+        tally.after_step(action, flags, ahead)
+        if self.events:     # (most scenarios have no events and no waiting mobs)
+            self.scenario.run_events(self, tally)
+        elif self.ctx.reserve:      # (all run_events does without events)
+            self.admit()
+        self._score(tally, native)
+
+    def admit(self) -> None:
+        """Waiting mobs take free slots (``scenarios.Context.admit``); nothing to do while every
+        class they wait for is full, as the last call left them."""
+        ctx = self.ctx
+        waited, classes = ctx.waited
+        if ctx.reserve == waited and classes:
+            mobs, level = self.packed.mobs, self.packed.ints.item(LEVEL)
+            if all(mobs[k, level, :SLOT_COUNTS[k], ALIVE].all() for k in classes):
+                return
+        self.edit(lambda state: ctx.admit(state, self.play_rng))
+
+    def _score(self, tally: Tally, native: float) -> None:
         """Pay the scenario's terms (``native``, upstream's reward for the step, is not paid
         here) and end the episode on death or success. Unless a steady counter changed since
         the last step (``tally.changes``), only the terms and success test that read other
@@ -355,7 +387,7 @@ class CraftaxTask(GlyphTask):
         if finished:
             self._open = [e for e in self._open if e[2] < e[0].cap]
             self._live = [e for e in self._live if e[2] < e[0].cap]
-        if state.player_health <= 0:
+        if self.packed.floats.item(HEALTH) <= 0:
             self.reward(self.scenario.death)
             self.say("You died.")
             self.finish(won=False)
@@ -364,12 +396,24 @@ class CraftaxTask(GlyphTask):
             self.finish(won=True)
 
     def _grid(self) -> tuple[str, ...]:
-        return view.rows(self.state)
+        self._take_edits()
+        return self.window.rows(self.packed)
+
+    _legends = None     # the Legends whose entries were found to be the window's
+
+    def _glyph_bits(self, legends) -> int | None:
+        # (the window's codes, collected as it was drawn; a legend of other entries reads rows)
+        if legends is not self._legends:
+            if legends.entries != kernel_view.ENTRIES:
+                return None
+            self._legends = legends
+        return self.window.glyph_bits()
 
     def _hud(self) -> str:
         tally, goal = self.tally, self._goal
         if goal is None or goal[0] != tally.changes or not self._goal_steady:
             goal = self._goal = (tally.changes, self.scenario.progress(tally))  # (a few counters)
         goal = goal[1]
-        line = hud.hud(self.state, self.settings)
+        self._take_edits()
+        line = hud.packed_hud(self.packed)
         return f"{line} | {goal}" if goal else line

@@ -8,7 +8,8 @@ import numpy as np
 import pytest
 
 from glyphbench_rl import make
-from glyphbench_rl.games.craftax import rules, scenarios, upkeep, worldgen
+from glyphbench_rl.games.craftax import kernel, rules, scenarios, upkeep, worldgen
+from glyphbench_rl.games.craftax.packed import LEVEL
 from glyphbench_rl.games.craftax.state import Settings
 from glyphbench_rl.games.craftax.tables import (
     CLOSE_BLOCKS, GOD_MODE_MIN_HEALTH, INVENTORY_ACHIEVEMENTS, NUM_LEVELS, PLANT_RIPE_AGE,
@@ -252,43 +253,50 @@ def test_steady_tests_asked_only_after_a_change_pay_and_end_as_asked_every_step(
 
 
 def test_tally_follows_the_holdings_it_writes_out():
-    """``after_step`` keeps the holdings as ``_holdings`` reads them (``upkeep.held_counts``)."""
+    """``after_step`` keeps the holdings as ``_holdings`` reads them (``upkeep.COUNTS``' order)
+    from the packed inventory."""
     task = make("glyphbench/craftax-choptrees-v0")
     task.reset(seed=0)
     rng = np.random.default_rng(9)
     for _ in range(50):
         name = COUNTS[int(rng.integers(len(COUNTS)))]
         setattr(task.state.inventory, name, int(rng.integers(0, 5)))
-        task.tally.before_step(task.state, 0)
-        task.tally.after_step(task.state, 0)
-        assert task.tally._held == task.tally._holdings(task.state)
+        task._take_edits()
+        task.tally.after_step(0, kernel.CHANGED_INVENTORY, None)
+        assert task.tally._held == tuple(upkeep.held_counts(task.state.inventory))
 
 
 @pytest.mark.parametrize("name", ["choptrees", "iron-bootstrap", "fight-zombies"])
-def test_tally_takes_the_held_counts_and_achievements_the_step_ended_with(name):
-    """The step hands the tally the held counts and achievements' bytes its upkeep read
-    (``rules.step``'s ``ended``): they are the state's after the step, and ``got`` counts what
-    a plain reading of the inventory after each step counts, the inventory and achievements
-    also edited between steps (``changes`` follows a ``done.`` counter then)."""
+def test_tally_counts_what_the_steps_flags_say_changed(name):
+    """The tally counts from the step's flags (``kernel``): ``got`` counts what a plain reading
+    of the inventory after each step counts, with the inventory and achievements also edited
+    between steps (``changes`` follows a ``done.`` counter then), and ``changes`` moves after
+    a step that changed a steady counter."""
     task = make(f"glyphbench/craftax-{name}-v0")
     rng = np.random.default_rng(10)
     for seed in range(2):
         task.reset(seed=seed)
         task.tally.getter("done.collect_wood")       # (the tally follows the achievements)
         held = upkeep.held_counts(task.state.inventory)
+        achieved = task.state.achievements.tobytes()
+        level = task.state.player_level
         got = dict.fromkeys(COUNTS, 0)
         for _ in range(150):
             if task.done:
                 break
             action = int(Action.DO) if rng.random() < 0.4 else int(rng.integers(task.action_space.n))
+            changes = task.tally.changes
             task.step(action)
             now = upkeep.held_counts(task.state.inventory)
             for name_, old, new in zip(upkeep.COUNTS, held, now):
                 got[name_] += max(new - old, 0)
-            held = now
+            steady = (now != held or task.state.achievements.tobytes() != achieved
+                      or task.state.player_level != level)
+            held, achieved = now, task.state.achievements.tobytes()
+            level = task.state.player_level
             assert task.tally._held == now and task.tally.got == {k: got[k] for k in task.tally.got}
-            assert task.tally._achieved == task.state.achievements.tobytes()
-            assert task.tally.step_ended == [None, None]
+            if steady:
+                assert task.tally.changes == changes + 1
             if rng.random() < 0.2:      # an edit between steps, as scenario events make
                 item = str(rng.choice(["wood", "stone", "coal", "iron", "sapling", "arrows"]))
                 setattr(task.state.inventory, item, int(rng.integers(0, 6)))
@@ -320,18 +328,20 @@ def test_term_units_as_the_plain_rule():
 
 
 def test_a_kill_or_a_new_floor_is_a_change_of_the_steady_counters():
-    """However the kills are counted, a step after which ``kills`` or the floor differ bumps
-    ``changes`` (a kill term is then asked)."""
+    """A step after which ``kills`` or the floor differ bumps ``changes`` (a kill term is then
+    asked)."""
     task = make("glyphbench/craftax-fight-zombies-v0")
     task.reset(seed=0)
-    tally, state = task.tally, task.state
+    tally, p = task.tally, task.packed
     for change in ("none", "kill", "floor", "none"):
         before = tally.changes
-        tally.before_step(state, 0)
+        flags = 0
         if change == "kill":
-            tally.kills["zombie"] = tally.kills.get("zombie", 0) + 1
-            tally.kills["all"] += 1
+            p.kills[1, 0] += 1
+            flags = kernel.KILLED_MOB
         elif change == "floor":
-            state.player_level += 1
-        tally.after_step(state, 0)
+            p.ints[LEVEL] += 1
+            flags = kernel.CHANGED_LEVEL
+        tally.after_step(0, flags, None)
         assert tally.changes == before + (change != "none"), change
+    assert tally.kills["zombie"] == 1 and tally.counts["deepest"] == 1

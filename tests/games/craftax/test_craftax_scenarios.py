@@ -23,7 +23,7 @@ def test_scenario_compiles_and_pays_within_bounds(name):
     s = SCENARIOS[name]
     task = registry.make(f"glyphbench/craftax-{name}-v0")
     task.reset(seed=0)
-    s.check(Tally(task.state))
+    s.check(Tally(task.packed))
     top = sum(t.unit * t.cap for t in s.terms)
     assert top <= 1 + 1e-9, f"{name} can pay {top}"
     assert s.death <= 0 and top + s.death >= -1 - 1e-9
@@ -34,7 +34,7 @@ def test_a_bad_counter_is_named():
     task = registry.make("glyphbench/craftax-choptrees-v0")
     task.reset(seed=0)
     with pytest.raises(KeyError, match="holds.unobtainium"):
-        Tally(task.state).getter("holds.unobtainium")
+        Tally(task.packed).getter("holds.unobtainium")
 
 
 @pytest.mark.parametrize("name", IDS)
