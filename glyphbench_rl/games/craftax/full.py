@@ -15,7 +15,6 @@ import numpy as np
 
 from ...core import register_variants
 from ...core.task import NoParams
-from . import hud
 from .packed import ACH, HEALTH
 from .scenarios import Scenario
 from .state import Settings
@@ -64,9 +63,9 @@ class CraftaxFull(CraftaxTask):
             self.finish(won=False)
 
     def _hud(self) -> str:
-        self._take_edits()
+        line = self._line()
         earned = int(np.count_nonzero(self.packed.ints[ACH:ACH + len(Achievement)]))
-        return f"{hud.packed_hud(self.packed)} | Achievements {earned}/{len(Achievement)}"
+        return f"{line} | Achievements {earned}/{len(Achievement)}"
 
 
 register_variants(CraftaxFull, "FullCraftax", {"glyphbench/craftaxfull-v0": {"max_turns": HORIZON}}, tier="extended")

@@ -9,8 +9,8 @@ from __future__ import annotations
 import numpy as np
 
 from .packed import (ARMOUR, ARMOUR_ENCH, BOW_ENCH, COL, DEX, DIRECTION, DRINK, ENERGY, FOOD,
-                     HEALTH, INT, INV, INVENTORY, KILLED, LEVEL, LIGHT, MANA, POTIONS, RESTING,
-                     ROW, SLEEPING, STR, SWORD_ENCH, XP, Packed)
+                     HEALTH, HUD_RANGES, INT, INV, INVENTORY, KILLED, LEVEL, LIGHT, MANA,
+                     POTIONS, RESTING, ROW, SLEEPING, STR, SWORD_ENCH, XP, Packed)
 from .packed import SPELLS as _SPELLS      # (``SPELLS`` here: the spells' names)
 from .state import NUM_LEVELS, Settings, State
 from .tables import (DARK_LEVELS, LEVEL_NAMES, NIGHT_LIGHT, POTION_COLOURS, Action, max_drink,
@@ -123,22 +123,22 @@ def _keep(memo: dict, key: tuple, value):
 
 # ---- the same line from the packed state (``packed``) ------------------------------------
 #
-# ``packed_hud`` reads ``p.ints`` as one byte string (one numpy call) and keys the line on
-# three slices of it: the scalars up to the enchantments (floor, facing, food ... mana,
-# sleeping, resting, XP, attributes, enchantments), the inventory's counts up to the spells
-# (counts, armour, potions, armour enchantments, the potion mapping, which the line does not
-# show but which never changes in an episode, spells) and the floors' kills; with the health
-# and the daylight. The same key as last call's gives last call's text around the position
-# (the same position, the same line); a key not seen before makes it from the same part
-# builders as ``hud``, each part remembered by its own values.
+# ``Line.update`` reads ``p.ints`` as one byte string (one numpy call) and keys the line on the
+# slices of it the line reads (``packed.HUD_RANGES``: the scalars up to the enchantments, the
+# inventory's counts up to the spells, which hold the potion mapping too, never changed in an
+# episode, the floors' kills), with the health and the daylight. A key not seen before makes the
+# text from the same part builders as ``hud``, each part remembered by its own values; the
+# position is written between the text before and after it. ``Line.moved`` writes only the
+# position again, for a step that changed none of the key's values (the compiled step says so:
+# ``kernel.CHANGED_HUD``).
 _WORD = np.dtype(np.int64).itemsize
-_HEAD = slice(0, (BOW_ENCH + 1) * _WORD)                    # LEVEL ... BOW_ENCH
-_KIT = slice(INV * _WORD, (_SPELLS + 2) * _WORD)            # the counts ... the spells
-_KILLS = slice(KILLED * _WORD, (KILLED + NUM_LEVELS) * _WORD)
-_POSITION = slice(ROW * _WORD, (COL + 1) * _WORD)
+_KEY_SLICES = tuple(slice(a * _WORD, b * _WORD) for a, b in HUD_RANGES)
+_HEAD, _KIT, _KILLS = _KEY_SLICES
 _COUNTED_AT = tuple(INV + INVENTORY.index(name) for name in COUNTED)      # COUNTED in p.ints
 _PICKAXE, _SWORD, _BOW = (INV + INVENTORY.index(name) for name in ("pickaxe", "sword", "bow"))
 # (the key's slices hold every int the line reads)
+assert HUD_RANGES[0] == (0, BOW_ENCH + 1) and HUD_RANGES[1] == (INV, _SPELLS + 2) \
+    and HUD_RANGES[2] == (KILLED, KILLED + NUM_LEVELS)
 assert max(LEVEL, DIRECTION, FOOD, DRINK, ENERGY, MANA, SLEEPING, RESTING, XP, DEX, STR, INT,
            SWORD_ENCH) < BOW_ENCH + 1 <= INV
 assert INV <= min(_COUNTED_AT) and ARMOUR + 4 <= _SPELLS and POTIONS + 6 <= _SPELLS \
@@ -147,26 +147,40 @@ _PACKED_TEXT: dict[tuple, tuple[str, str]] = {}   # the key -> text before and a
 _PACKED_VITALS: dict[tuple, str] = {}
 _PACKED_KITS: dict[tuple, str] = {}
 _PACKED_PLACES: dict[tuple, tuple[str, str]] = {}
-# last call's key, its text around the position, the position's bytes, the line
-_packed_last: list = [None, ("", ""), None, ""]
+
+
+class Line:
+    """One task's HUD line from its packed state: ``update`` makes it from the state, ``moved``
+    writes the position again into the text ``update`` made last (the rest unchanged);
+    ``line`` is the line made last."""
+
+    __slots__ = ("key", "text", "line")
+
+    def __init__(self) -> None:
+        self.key, self.text, self.line = None, ("", ""), ""
+
+    def update(self, p: Packed) -> str:
+        ints = p.ints
+        b = ints.tobytes()
+        key = (b[_HEAD], b[_KIT], b[_KILLS], p.floats.item(HEALTH),
+               p.floats.item(LIGHT) >= NIGHT_LIGHT)
+        if key != self.key:
+            text = _PACKED_TEXT.get(key)
+            if text is None:
+                text = _packed_text(ints, key)
+            self.key, self.text = key, text
+        return self.moved(p)
+
+    def moved(self, p: Packed) -> str:
+        ints = p.ints
+        before, after = self.text
+        self.line = line = f"{before}{ints.item(ROW)},{ints.item(COL)}{after}"
+        return line
 
 
 def packed_hud(p: Packed) -> str:
     """``hud`` of the state ``p`` packs, read from ``p.ints`` and ``p.floats``."""
-    ints, last = p.ints, _packed_last
-    b = ints.tobytes()
-    key = (b[_HEAD], b[_KIT], b[_KILLS], p.floats.item(HEALTH),
-           p.floats.item(LIGHT) >= NIGHT_LIGHT)
-    if key != last[0]:
-        text = _PACKED_TEXT.get(key)
-        if text is None:
-            text = _packed_text(ints, key)
-        last[0], last[1], last[2] = key, text, None
-    position = b[_POSITION]
-    if position != last[2]:
-        before, after = last[1]
-        last[2], last[3] = position, f"{before}{ints.item(ROW)},{ints.item(COL)}{after}"
-    return last[3]
+    return Line().update(p)
 
 
 def _packed_text(ints: np.ndarray, key: tuple) -> tuple[str, str]:

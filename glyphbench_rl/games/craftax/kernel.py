@@ -10,12 +10,17 @@ find the same state after every step. The task plays the kernel (``task.CraftaxT
 reference stays the readable rules, the one the fidelity tests hold against upstream Craftax.
 
 The step also writes ``ints[STEP_FLAGS]``: which of the things the task's tally counts changed
-(the ``CHANGED_*`` bits, so that a step that changed none costs the tally nothing), and
-``REFILL`` when fewer than ``DRAWS_RESERVE`` draws are left for the next step.
+(the ``CHANGED_*`` bits, so that a step that changed none costs the tally nothing), whether the
+HUD line's values (``CHANGED_HUD``: ``packed.HUD_RANGES``, the health, day or night) or the
+player's position (``MOVED``) changed, and ``REFILL`` when fewer than ``DRAWS_RESERVE`` draws are
+left for the next step; ``ints[FREE]``, the mob classes with a free slot on the player's floor;
+and it draws the window of the state it leaves (``kernel_view``: the codes, the rows' bytes and
+the legend's bits, into a ``kernel_view.Window``'s buffers), so that a task's step is one call.
 
-The compiled step is called through its entry point for the packed arrays' types (``_entry``):
-numba's dispatcher works out the types of a call's twelve arguments every time, which costs more
-than the step itself; ``pack`` checks that the maps have those types.
+The compiled step is called through its entry point for the arrays' types (``entry``): numba's
+dispatcher works out the types of a call's arguments every time, which costs more than the step
+itself; ``pack`` checks that the maps have those types. A task binds the arguments once
+(``arguments``: the arrays are refilled in place, never replaced, while it plays).
 """
 
 from __future__ import annotations
@@ -25,10 +30,12 @@ import math
 import numpy as np
 from numba import njit, typeof
 
-from . import kernel_mobs, kernel_rules
-from .packed import (ACH, BOOKS, DRAW_AT, DRAWS_RESERVE, DRINK, FOOD, HEALTH, INV, LEVEL, LIGHT,
-                     MANA, POTIONS, SET_DAY_LENGTH, SET_DAYLIGHT, SET_SPAWNING, STEP_FLAGS,
-                     TIMESTEP, TORCHES, Packed)
+from . import kernel_mobs, kernel_rules, kernel_view
+from .packed import (ACH, ALIVE, BOOKS, CLASS_SLOTS, COL, DRAW_AT, DRAWS_RESERVE, DRINK, FOOD,
+                     FREE, HEALTH, HUD_RANGES, INV, LEVEL, LIGHT, MANA, POTIONS, ROW,
+                     SET_DAY_LENGTH, SET_DAYLIGHT, SET_SPAWNING, STEP_FLAGS, TIMESTEP, TORCHES,
+                     Packed)
+from .state import Settings
 from .tables import ACHIEVEMENT_REWARD, NIGHT_LIGHT
 
 _WEIGHTS = np.array(ACHIEVEMENT_REWARD, np.float64)
@@ -36,7 +43,9 @@ _ACHIEVEMENTS = len(ACHIEVEMENT_REWARD)
 
 # ``ints[STEP_FLAGS]``'s bits: what the step changed
 (CHANGED_INVENTORY, ATE, DRANK, SPENT_MANA, USED_TORCH, DRANK_POTION, KILLED_MOB, CHANGED_LEVEL,
- CHANGED_ACHIEVEMENTS, NIGHT_ON_SURFACE, REFILL) = (1 << i for i in range(11))
+ CHANGED_ACHIEVEMENTS, NIGHT_ON_SURFACE, REFILL, CHANGED_HUD, MOVED) = (1 << i for i in range(13))
+_HUD_RANGES = np.array(HUD_RANGES, np.int64)
+_CLASS_SLOTS = np.array(CLASS_SLOTS, np.int64)
 
 
 @njit(cache=True)
@@ -55,7 +64,7 @@ def _changed(before, ints, start, stop):
 
 
 @njit(cache=True)
-def _flags(before, ints, floats, kills_before, kills, draws):
+def _flags(before, ints, floats, health_before, light_before, kills_before, kills, draws):
     flags = 0
     if _changed(before, ints, INV, BOOKS + 1):
         flags |= CHANGED_INVENTORY
@@ -80,15 +89,37 @@ def _flags(before, ints, floats, kills_before, kills, draws):
         flags |= NIGHT_ON_SURFACE
     if len(draws) - ints[DRAW_AT] < DRAWS_RESERVE:
         flags |= REFILL
+    if ints[ROW] != before[ROW] or ints[COL] != before[COL]:
+        flags |= MOVED
+    hud = (floats[HEALTH] != health_before
+           or (floats[LIGHT] >= NIGHT_LIGHT) != (light_before >= NIGHT_LIGHT))
+    for k in range(len(_HUD_RANGES)):
+        if hud:
+            break
+        hud = _changed(before, ints, _HUD_RANGES[k, 0], _HUD_RANGES[k, 1])
+    if hud:
+        flags |= CHANGED_HUD
     return flags
 
 
 @njit(cache=True)
+def _free(ints, mobs):
+    """``packed.free_classes``: bit k, class k has a free slot on the player's floor."""
+    level, bits = ints[LEVEL], 0
+    for k in range(len(_CLASS_SLOTS)):
+        for slot in range(_CLASS_SLOTS[k]):
+            if not mobs[k, level, slot, ALIVE]:
+                bits |= 1 << k
+                break
+    return bits
+
+
+@njit(cache=True)
 def _step(map, item_map, mob_map, light_map, ints, floats, mobs, health, kills, draws, settings,
-          action):
+          codes, lines, words, action):
     before = ints.copy()
     kills_before = kills.sum()
-    start_health = floats[HEALTH]
+    start_health, light_before = floats[HEALTH], floats[LIGHT]
     played = kernel_rules.act(map, item_map, mob_map, light_map, ints, floats, mobs, health,
                               kills, draws, settings, action)
     kernel_mobs.update(map, mob_map, ints, floats, mobs, health, kills, draws, settings)
@@ -103,20 +134,47 @@ def _step(map, item_map, mob_map, light_map, ints, floats, mobs, health, kills, 
     ints[TIMESTEP] += 1
     floats[LIGHT] = light_level(ints[TIMESTEP], settings[SET_DAY_LENGTH]) \
         if settings[SET_DAYLIGHT] else 1.0
-    ints[STEP_FLAGS] = _flags(before, ints, floats, kills_before, kills, draws)
+    ints[STEP_FLAGS] = _flags(before, ints, floats, start_health, light_before, kills_before,
+                              kills, draws)
+    ints[FREE] = _free(ints, mobs)
+    kernel_view.draw_window(map, item_map, light_map, ints, mobs, codes, lines, words)
     return reward
+
+
+def arguments(p: Packed, window: kernel_view.Window) -> tuple:
+    """The compiled step's arguments but the action, for ``p`` and ``window``: to be made again
+    whenever one of ``p``'s arrays is replaced (``pack`` into it sets its maps)."""
+    return (p.map, p.item_map, p.mob_map, p.light_map, p.ints, p.floats, p.mobs, p.health,
+            p.kills, p.draws, p.settings, window.codes, window.lines, window.words)
 
 
 _entry = None       # the compiled step's entry point for the packed arrays' types
 
 
-def step(p: Packed, action: int) -> float:
-    """One step of the packed state; returns upstream's reward. ``p.draws`` must hold enough
-    floats (``packed.KernelDraws.top_up``; the step sets ``REFILL`` when it no longer does)."""
+def entry():
+    """The compiled step, called as ``entry()(*arguments(p, window), action)``: it plays the
+    action on the state ``p`` packs and returns upstream's reward (``p.draws`` must hold enough
+    floats: ``packed.KernelDraws.top_up``; the step sets ``REFILL`` when it no longer does)."""
     global _entry
     if _entry is None:
-        _entry = _step.compile(tuple(typeof(a) for a in (
-            p.map, p.item_map, p.mob_map, p.light_map, p.ints, p.floats, p.mobs, p.health,
-            p.kills, p.draws, p.settings, 0)))
-    return _entry(p.map, p.item_map, p.mob_map, p.light_map, p.ints, p.floats, p.mobs, p.health,
-                  p.kills, p.draws, p.settings, action)
+        _entry = _step.compile(_SIGNATURE)
+    return _entry
+
+
+_SCRATCH = kernel_view.Window()
+
+
+def step(p: Packed, action: int, window: kernel_view.Window | None = None) -> float:
+    """One step of the packed state (its window drawn into ``window``, or a scratch one);
+    returns upstream's reward."""
+    return entry()(*arguments(p, window or _SCRATCH), action)
+
+
+def _signature():
+    p = Packed(Settings())
+    p.map = p.item_map = np.zeros((1, 1, 1), np.int32)
+    p.mob_map, p.light_map = np.zeros((1, 1, 1), np.bool_), np.zeros((1, 1, 1), np.float32)
+    return tuple(typeof(a) for a in arguments(p, _SCRATCH)) + (typeof(0),)
+
+
+_SIGNATURE = _signature()

@@ -67,6 +67,8 @@ _DAMAGE_NECROMANCER = int(Achievement.DAMAGE_NECROMANCER)
 def random(ints, draws):
     """The next float of the draws (``Draws.random``)."""
     at = ints[DRAW_AT]
+    if at >= len(draws):        # (never with ``KernelDraws``: a step draws far fewer)
+        raise IndexError("Craftax kernel: the draws ran out (KernelDraws.top_up before a step)")
     ints[DRAW_AT] = at + 1
     return draws[at]
 

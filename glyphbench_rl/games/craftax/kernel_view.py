@@ -109,7 +109,7 @@ assert len(ENTRIES) <= 128      # (two 64-bit words of entry bits)
 
 
 @njit(cache=True)
-def _codes_and_lines(map, item_map, light_map, ints, mobs, out, lines, words):
+def draw_window(map, item_map, light_map, ints, mobs, out, lines, words):
     """``codes`` into ``out``, and copied into ``lines`` (uint8, ROWS * (COLS + 1) - 1): the
     rows one after another, each but the last followed by view's row end (``_NEWLINE``); the
     legend entries on show as bits of ``words`` (uint64: entries 0-63, 64-127, and 1 when a code
@@ -134,25 +134,31 @@ def _codes_and_lines(map, item_map, light_map, ints, mobs, out, lines, words):
 
 class Window:
     """A task's window: the buffers the compiled drawing writes (``codes``: the cell codes,
-    uint8 ROWS x COLS; the rows' bytes; the legend's bits) and the rows last decoded (decoded
-    anew unless the window is the last one: remembering more windows measured slower, as the
-    player or a mob moves on most steps)."""
+    uint8 ROWS x COLS; ``lines``: the rows' bytes; ``words``: the legend's bits) and the rows
+    last decoded (decoded anew unless the codes are the last ones: remembering more windows
+    measured slower, as the player or a mob moves on most steps). ``rows`` draws and decodes;
+    ``shown`` decodes what was drawn last (by ``rows``, or by the compiled step, which draws
+    the window it leaves)."""
 
-    __slots__ = ("codes", "_lines", "_words", "_key", "_shown")
+    __slots__ = ("codes", "lines", "words", "_key", "_shown")
 
     def __init__(self) -> None:
         self.codes = np.zeros((ROWS, COLS), np.uint8)
-        self._lines = np.full(ROWS * (COLS + 1) - 1, _NEWLINE, np.uint8)
-        self._words = np.zeros(3, np.uint64)
+        self.lines = np.full(ROWS * (COLS + 1) - 1, _NEWLINE, np.uint8)
+        self.words = np.zeros(3, np.uint64)
         self._key = self._shown = None
 
     def rows(self, p: Packed) -> tuple[str, ...]:
         """``view.rows``: the 9 rows of 11 glyphs around the player, from ``codes`` decoded with
         ``view``'s table (a code with no glyph raises ``UnicodeDecodeError``, as ``view.rows``
         does)."""
-        draw = _entry or _compile(p, self)
-        draw(p.map, p.item_map, p.light_map, p.ints, p.mobs, self.codes, self._lines, self._words)
-        key = self._lines.tobytes()
+        draw = _entry or _compile()
+        draw(p.map, p.item_map, p.light_map, p.ints, p.mobs, self.codes, self.lines, self.words)
+        return self.shown()
+
+    def shown(self) -> tuple[str, ...]:
+        """The rows of the window drawn last."""
+        key = self.lines.tobytes()
         if key != self._key:
             shown = tuple(charmap_decode(key, "strict", _DECODING)[0].split("\n"))
             if len(shown) != ROWS:      # (a cell's code is the row end's: cut the rows by place)
@@ -162,20 +168,23 @@ class Window:
         return self._shown
 
     def glyph_bits(self) -> int | None:
-        """The legend bits (``ENTRIES``' order) of the window ``rows`` drew last; None when one of
-        its codes has no entry."""
-        low, high, unknown = self._words.tolist()
+        """The legend bits (``ENTRIES``' order) of the window drawn last; None when one of its
+        codes has no entry."""
+        low, high, unknown = self.words.tolist()
         return None if unknown else low | high << 64
 
 
-_entry = None       # ``_codes_and_lines``' entry point for the packed arrays' types (as kernel's)
+_entry = None       # ``draw_window``'s entry point for the packed arrays' types (as kernel's)
 
 
-def _compile(p: Packed, window: Window):
+def _compile():
     global _entry
-    _entry = _codes_and_lines.compile(tuple(typeof(a) for a in (
-        p.map, p.item_map, p.light_map, p.ints, p.mobs, window.codes, window._lines,
-        window._words)))
+    window = Window()
+    maps = (np.zeros((1, 1, 1), np.int32), np.zeros((1, 1, 1), np.int32),
+            np.zeros((1, 1, 1), np.float32))
+    _entry = draw_window.compile(tuple(typeof(a) for a in (
+        *maps, np.zeros(1, np.int64), np.zeros((1, 1, 1, 1), np.int64), window.codes,
+        window.lines, window.words)))
     return _entry
 
 

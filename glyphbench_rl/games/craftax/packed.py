@@ -18,6 +18,8 @@ object, so ``Packed`` holds the same values in arrays a compiled function can:
 - ``draws`` (float64) and ``ints[DRAW_AT]``: the uniform floats the step draws, in the order
   ``common.lanes.Draws`` gives them from the same stream (``KernelDraws`` keeps it filled);
 - ``ints[STEP_FLAGS]``: what the last compiled step changed (``kernel``'s flags);
+- ``ints[FREE]``: which mob classes have a free slot on the player's floor (kept by ``pack`` and
+  the step);
 - ``settings`` (int64): ``Settings`` at the ``SET_*`` offsets.
 
 ``pack(state, settings)`` makes one, ``unpack(packed, state)`` writes the values back into a
@@ -30,7 +32,8 @@ from dataclasses import fields
 
 import numpy as np
 
-from .state import MAP_SIZE, MAX_GROWING_PLANTS, NUM_LEVELS, Inventory, Mobs, Settings, State
+from .state import (MAP_SIZE, MAX_GROWING_PLANTS, MAX_MELEE, MAX_PASSIVE, MAX_RANGED, NUM_LEVELS,
+                    Inventory, Mobs, Settings, State)
 
 # ---- ints: scalar fields
 _SCALARS = ("player_level", "player_direction", "player_food", "player_drink", "player_energy",
@@ -70,7 +73,11 @@ DOWN_LADDERS, UP_LADDERS, CHESTS, KILLED, ACH = (_OFFSET[n] for n in (
 PLANT_POS, PLANT_AGE, PLANT_MASK = (_OFFSET[n] for n in ("plant_pos", "plant_age", "plant_mask"))
 DRAW_AT = _at          # the next float of ``draws``
 STEP_FLAGS = _at + 1   # what the last step changed (``kernel``'s flags)
-NUM_INTS = _at + 2
+FREE = _at + 2         # the mob classes with a free slot on the player's floor (bit k: class k)
+NUM_INTS = _at + 3
+# the ints the HUD line reads besides the position (``hud``), as (start, stop) ranges: the
+# scalars up to the enchantments, the inventory's counts up to the spells, the floors' kills
+HUD_RANGES = ((0, BOW_ENCH + 1), (INV, SPELLS + 2), (KILLED, KILLED + NUM_LEVELS))
 
 # ---- floats
 _FLOATS = ("player_health", "player_recover", "player_hunger", "player_thirst", "player_fatigue",
@@ -86,6 +93,7 @@ SLOTS = 3
 MOB_ROW, MOB_COL, ALIVE, COOLDOWN, TYPE, DROW, DCOL = range(7)
 MOB_FIELDS = 7
 KILL_TYPES = 8
+CLASS_SLOTS = (MAX_PASSIVE, MAX_MELEE, MAX_RANGED)     # the mob classes' slots in use
 _DIRECTIONS = {MOB_SHOTS: "mob_projectile_directions", PLAYER_SHOTS: "player_projectile_directions"}
 
 # ---- settings
@@ -162,7 +170,13 @@ def pack(state: State, settings: Settings, into: Packed | None = None) -> Packed
             block[:, :slots, DROW:DCOL + 1] = getattr(state, _DIRECTIONS[g])
         p.health[g] = 0.0
         p.health[g, :, :slots] = group.health
+    ints[FREE] = free_classes(p.mobs, ints.item(LEVEL))
     return p
+
+
+def free_classes(mobs: np.ndarray, level: int) -> int:
+    """Bit k set: mob class k (passive, melee, ranged) has a free slot on ``level``."""
+    return sum(1 << k for k, slots in enumerate(CLASS_SLOTS) if not mobs[k, level, :slots, ALIVE].all())
 
 
 def unpack(p: Packed, state: State) -> State:
@@ -196,24 +210,37 @@ def unpack(p: Packed, state: State) -> State:
 
 
 DRAWS_RESERVE = 128     # floats kept ahead of a step: more than one step draws (about 40 at most)
+DRAWS_BLOCK = 256
 
 
 class KernelDraws:
-    """The uniform floats of a numpy stream, in ``common.lanes.Draws``' order (blocks of
-    ``block`` floats), kept in ``packed.draws`` from ``packed.ints[DRAW_AT]`` on: ``top_up``
-    (before each step) makes sure at least ``reserve`` are there, more than a step draws."""
+    """The uniform floats of a numpy stream, in ``common.lanes.Draws``' order, kept in
+    ``packed.draws`` from ``packed.ints[DRAW_AT]`` on: ``top_up`` (before a step, or when the
+    step flags ``REFILL``) makes sure at least ``reserve`` are there, more than a step draws.
+
+    ``packed.draws`` is one buffer of ``reserve + block`` floats, made by the first ``top_up``
+    and refilled in place (the compiled step is bound to the array): the floats not yet taken
+    move to its front and the stream's next ones fill the rest. Every float of the buffer is
+    the stream's next one in turn, as ``Draws`` gives them (``Draws`` draws ``block`` at a time,
+    which leaves the stream at another place between refills but gives the same sequence)."""
 
     __slots__ = ("stream", "block", "reserve")
 
-    def __init__(self, stream: np.random.Generator, block: int = 256,
+    def __init__(self, stream: np.random.Generator, block: int = DRAWS_BLOCK,
                  reserve: int = DRAWS_RESERVE) -> None:
         self.stream, self.block, self.reserve = stream, block, reserve
 
     def top_up(self, p: Packed) -> None:
-        at = p.ints.item(DRAW_AT)
-        if len(p.draws) - at < self.reserve:
-            left = p.draws[at:]
-            while len(left) < self.reserve:
-                left = np.concatenate([left, self.stream.random(self.block)])
-            p.draws = left
-            p.ints[DRAW_AT] = 0
+        buffer, at = p.draws, p.ints.item(DRAW_AT)
+        size = self.reserve + self.block
+        if len(buffer) != size:
+            left = buffer[at:]
+            p.draws = buffer = np.empty(size, np.float64)
+            buffer[:len(left)] = left
+        else:
+            left = buffer[at:]
+            if len(left) >= self.reserve:
+                return
+            buffer[:len(left)] = left.copy()
+        buffer[len(left):] = self.stream.random(size - len(left))
+        p.ints[DRAW_AT] = 0

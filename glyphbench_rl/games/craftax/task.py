@@ -21,10 +21,10 @@ from ...core.params import param
 from . import hud, kernel, kernel_view, view
 from .bestiary import MOB_NAMES
 from .scenarios import SCENARIOS, Scenario, parse_test
-from .packed import (ACH, ALIVE, ARMOUR, BOSS_PROGRESS, COL, DEX, DIRECTION, HEALTH, INT, INV,
+from .packed import (ACH, ARMOUR, BOSS_PROGRESS, COL, DEX, DIRECTION, FREE, HEALTH, INT, INV,
                      INVENTORY, KILLED, LEVEL, POTION_MAP, ROW, SPELLS, STEP_FLAGS, STR, SWORD_ENCH,
                      XP, KernelDraws, Packed, pack, unpack)
-from .state import MAP_SIZE, MAX_MELEE, MAX_PASSIVE, MAX_RANGED, State
+from .state import MAP_SIZE, State
 from .tables import DIRECTIONS, Achievement, Action, BlockType
 from .upkeep import COUNTS
 
@@ -74,7 +74,11 @@ _NIGHT = kernel.NIGHT_ON_SURFACE
 # what an edit of the state between steps may have changed that the tally compares with what it
 # saw last (its holdings, level, achievements): the next step looks at them whatever it changed
 _EDITED = kernel.CHANGED_INVENTORY | kernel.CHANGED_LEVEL | kernel.CHANGED_ACHIEVEMENTS
-SLOT_COUNTS = (MAX_PASSIVE, MAX_MELEE, MAX_RANGED)     # the mob classes' slots (packed order)
+# what the next frame makes anew (``CraftaxTask._stale``): the window (the step draws it; an
+# edit or a reset does not), the HUD line's text (``CHANGED_HUD``), its position (``MOVED``)
+_WINDOW = 1 << 20
+_HUD_STALE = kernel.CHANGED_HUD | kernel.MOVED
+_ALL_STALE = _WINDOW | _HUD_STALE
 
 
 class Tally:
@@ -294,6 +298,9 @@ class CraftaxTask(GlyphTask):
         self._lent = False      # the State was handed out (``state``): it is kept in step
         self._edited = 0        # what edits between steps may have changed (``_EDITED``)
         self.window = kernel_view.Window()     # (the compiled view's buffers)
+        self.line = hud.Line()
+        self._play = kernel.entry()
+        self._bind()
         self.play_rng = self.stream("scenario")
         self.tally = Tally(self.packed)
         tally, scenario = self.tally, self.scenario
@@ -331,22 +338,38 @@ class CraftaxTask(GlyphTask):
             unpack(self.packed, state)
         change(state)
         if not self._lent:
-            pack(state, self.settings, into=self.packed)
+            self._repack()
         self._edited = _EDITED
 
     def _take_edits(self) -> None:
         """The State handed out may have been edited since: play (and show) what it holds."""
         if self._lent:
-            pack(self._state, self.settings, into=self.packed)
+            self._repack()
             self._edited = _EDITED
+
+    def _repack(self) -> None:
+        pack(self._state, self.settings, into=self.packed)
+        self._bind()
+
+    def _bind(self) -> None:
+        """The compiled step's arguments (``kernel.arguments``), made again when an array of the
+        packed state may have been replaced; everything on show is made anew."""
+        self._args = kernel.arguments(self.packed, self.window)
+        self._stale = _ALL_STALE
 
     def _act(self, action: int) -> None:
         p, tally = self.packed, self.tally
-        self._take_edits()
+        if self._lent:
+            self._take_edits()
         ahead = tally.facing_block() if action in _PLACED else None
-        native = kernel.step(p, action)
-        flags = p.ints.item(STEP_FLAGS) | self._edited
-        self._edited = 0
+        native = self._play(*self._args, action)
+        flags = p.ints.item(STEP_FLAGS)
+        if self._edited:
+            flags |= self._edited
+            self._edited = 0
+            self._stale = _HUD_STALE      # (the HUD was made before the edits: all of it anew)
+        else:
+            self._stale = flags & _HUD_STALE       # (the step drew the window it leaves)
         if flags & kernel.REFILL:
             self.kernel_draws.top_up(p)
         if self._lent:
@@ -364,10 +387,13 @@ class CraftaxTask(GlyphTask):
         ctx = self.ctx
         waited, classes = ctx.waited
         if ctx.reserve == waited and classes:
-            mobs, level = self.packed.mobs, self.packed.ints.item(LEVEL)
-            if all(mobs[k, level, :SLOT_COUNTS[k], ALIVE].all() for k in classes):
+            if classes != self._admit_classes:
+                self._admit_classes, self._admit_bits = classes, sum(1 << k for k in classes)
+            if not self.packed.ints.item(FREE) & self._admit_bits:   # (the step keeps FREE)
                 return
         self.edit(lambda state: ctx.admit(state, self.play_rng))
+
+    _admit_classes, _admit_bits = None, 0     # the classes ``admit`` last waited for, as bits
 
     def _score(self, tally: Tally, native: float) -> None:
         """Pay the scenario's terms (``native``, upstream's reward for the step, is not paid
@@ -396,8 +422,12 @@ class CraftaxTask(GlyphTask):
             self.finish(won=True)
 
     def _grid(self) -> tuple[str, ...]:
-        self._take_edits()
-        return self.window.rows(self.packed)
+        if self._lent:
+            self._take_edits()
+        if self._stale & _WINDOW:
+            self._stale &= ~_WINDOW
+            return self.window.rows(self.packed)
+        return self.window.shown()
 
     _legends = None     # the Legends whose entries were found to be the window's
 
@@ -414,6 +444,19 @@ class CraftaxTask(GlyphTask):
         if goal is None or goal[0] != tally.changes or not self._goal_steady:
             goal = self._goal = (tally.changes, self.scenario.progress(tally))  # (a few counters)
         goal = goal[1]
-        self._take_edits()
-        line = hud.packed_hud(self.packed)
+        line = self._line()
         return f"{line} | {goal}" if goal else line
+
+    def _line(self) -> str:
+        """The HUD line of the packed state (``hud.Line``), made anew as far as ``_stale`` says."""
+        if self._lent:
+            self._take_edits()
+        stale = self._stale
+        if stale & kernel.CHANGED_HUD:
+            line = self.line.update(self.packed)
+        elif stale & kernel.MOVED:
+            line = self.line.moved(self.packed)
+        else:
+            return self.line.line
+        self._stale = stale & _WINDOW
+        return line
