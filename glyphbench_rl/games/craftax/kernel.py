@@ -15,12 +15,12 @@ HUD line's values (``CHANGED_HUD``: ``packed.HUD_RANGES``, the health, day or ni
 player's position (``MOVED``) changed, and ``REFILL`` when fewer than ``DRAWS_RESERVE`` draws are
 left for the next step; ``ints[FREE]``, the mob classes with a free slot on the player's floor;
 and it draws the window of the state it leaves (``kernel_view``: the codes, the rows' bytes and
-the legend's bits, into a ``kernel_view.Window``'s buffers), so that a task's step is one call.
+the legend's bits), so that a task's step is one call.
 
-The compiled step is called through its entry point for the arrays' types (``entry``): numba's
-dispatcher works out the types of a call's arguments every time, which costs more than the step
-itself; ``pack`` checks that the maps have those types. A task binds the arguments once
-(``arguments``: the arrays are refilled in place, never replaced, while it plays).
+That call takes one argument, the packed state's ``arena`` (``packed``: every array is a view of
+it, and the step makes the same views): each array argument would cost the call an allocation
+and about 0.1 us. It is made through the entry point for the arena's type (``entry``): numba's
+dispatcher works out the types of a call's arguments every time, which costs more than the step.
 """
 
 from __future__ import annotations
@@ -31,11 +31,10 @@ import numpy as np
 from numba import njit, typeof
 
 from . import kernel_mobs, kernel_rules, kernel_view
-from .packed import (ACH, ALIVE, BOOKS, CLASS_SLOTS, COL, DRAW_AT, DRAWS_RESERVE, DRINK, FOOD,
-                     FREE, HEALTH, HUD_RANGES, INV, LEVEL, LIGHT, MANA, POTIONS, ROW,
-                     SET_DAY_LENGTH, SET_DAYLIGHT, SET_SPAWNING, STEP_FLAGS, TIMESTEP, TORCHES,
-                     Packed)
-from .state import Settings
+from .packed import (ACH, ALIVE, ARRAYS, BOOKS, CLASS_SLOTS, COL, DRAW_AT, DRAWS_RESERVE, DRINK,
+                     FOOD, FREE, HEALTH, HUD_RANGES, INV, LEVEL, LIGHT, MANA, POTIONS, ROW,
+                     SET_DAY_LENGTH, SET_DAYLIGHT, SET_SPAWNING, SPANS, STEP_FLAGS, TIMESTEP,
+                     TORCHES, Packed)
 from .tables import ACHIEVEMENT_REWARD, NIGHT_LIGHT
 
 _WEIGHTS = np.array(ACHIEVEMENT_REWARD, np.float64)
@@ -114,9 +113,44 @@ def _free(ints, mobs):
     return bits
 
 
+# the arena's views (``packed.ARRAYS``) as the compiled step makes them: (first byte, end, shape)
+_SPAN = {name: (*SPANS[name], shape) for name, _, shape in ARRAYS}
+_MAP0, _MAP1, _MAP_SHAPE = _SPAN["map"]
+_ITEM0, _ITEM1, _ = _SPAN["item_map"]
+_LIGHT0, _LIGHT1, _ = _SPAN["light_map"]
+_MOB0, _MOB1, _ = _SPAN["mob_map"]
+_INTS0, _INTS1, _ = _SPAN["ints"]
+_FLOATS0, _FLOATS1, _ = _SPAN["floats"]
+_MOBS0, _MOBS1, _MOBS_SHAPE = _SPAN["mobs"]
+_HEALTH0, _HEALTH1, _HEALTH_SHAPE = _SPAN["health"]
+_KILLS0, _KILLS1, _KILLS_SHAPE = _SPAN["kills"]
+_SETTINGS0, _SETTINGS1, _ = _SPAN["settings"]
+_DRAWS0, _DRAWS1, _ = _SPAN["draws"]
+_CODES0, _CODES1, _CODES_SHAPE = _SPAN["codes"]
+_LINES0, _LINES1, _ = _SPAN["lines"]
+_WORDS0, _WORDS1, _ = _SPAN["words"]
+assert [name for name, _, _ in ARRAYS] == ["map", "item_map", "light_map", "mob_map", "ints",
+                                           "floats", "mobs", "health", "kills", "settings",
+                                           "draws", "codes", "lines", "words"]
+
+
 @njit(cache=True)
-def _step(map, item_map, mob_map, light_map, ints, floats, mobs, health, kills, draws, settings,
-          codes, lines, words, action):
+def _step(arena, action):
+    map = arena[_MAP0:_MAP1].view(np.int32).reshape(_MAP_SHAPE)
+    item_map = arena[_ITEM0:_ITEM1].view(np.int32).reshape(_MAP_SHAPE)
+    light_map = arena[_LIGHT0:_LIGHT1].view(np.float32).reshape(_MAP_SHAPE)
+    mob_map = arena[_MOB0:_MOB1].view(np.bool_).reshape(_MAP_SHAPE)
+    ints = arena[_INTS0:_INTS1].view(np.int64)
+    floats = arena[_FLOATS0:_FLOATS1].view(np.float64)
+    mobs = arena[_MOBS0:_MOBS1].view(np.int64).reshape(_MOBS_SHAPE)
+    health = arena[_HEALTH0:_HEALTH1].view(np.float64).reshape(_HEALTH_SHAPE)
+    kills = arena[_KILLS0:_KILLS1].view(np.int64).reshape(_KILLS_SHAPE)
+    settings = arena[_SETTINGS0:_SETTINGS1].view(np.int64)
+    draws = arena[_DRAWS0:_DRAWS1].view(np.float64)
+    codes = arena[_CODES0:_CODES1].reshape(_CODES_SHAPE)
+    lines = arena[_LINES0:_LINES1]
+    words = arena[_WORDS0:_WORDS1].view(np.uint64)
+
     before = ints.copy()
     kills_before = kills.sum()
     start_health, light_before = floats[HEALTH], floats[LIGHT]
@@ -141,40 +175,23 @@ def _step(map, item_map, mob_map, light_map, ints, floats, mobs, health, kills, 
     return reward
 
 
-def arguments(p: Packed, window: kernel_view.Window) -> tuple:
-    """The compiled step's arguments but the action, for ``p`` and ``window``: to be made again
-    whenever one of ``p``'s arrays is replaced (``pack`` into it sets its maps)."""
-    return (p.map, p.item_map, p.mob_map, p.light_map, p.ints, p.floats, p.mobs, p.health,
-            p.kills, p.draws, p.settings, window.codes, window.lines, window.words)
-
-
-_entry = None       # the compiled step's entry point for the packed arrays' types
+_entry = None       # the compiled step's entry point for the arena's type
 
 
 def entry():
-    """The compiled step, called as ``entry()(*arguments(p, window), action)``: it plays the
-    action on the state ``p`` packs and returns upstream's reward (``p.draws`` must hold enough
-    floats: ``packed.KernelDraws.top_up``; the step sets ``REFILL`` when it no longer does)."""
+    """The compiled step, called as ``entry()(p.arena, action)``: it plays the action on the
+    state ``p`` packs, draws the window it leaves into ``p.codes``, ``p.lines`` and ``p.words``
+    and returns upstream's reward (``p.draws`` must hold enough floats:
+    ``packed.KernelDraws.top_up``; the step sets ``REFILL`` when it no longer does)."""
     global _entry
     if _entry is None:
-        _entry = _step.compile(_SIGNATURE)
+        _entry = _step.compile((typeof(np.zeros(8, np.uint8)), typeof(0)))
     return _entry
 
 
-_SCRATCH = kernel_view.Window()
-
-
-def step(p: Packed, action: int, window: kernel_view.Window | None = None) -> float:
-    """One step of the packed state (its window drawn into ``window``, or a scratch one);
-    returns upstream's reward."""
-    return entry()(*arguments(p, window or _SCRATCH), action)
-
-
-def _signature():
-    p = Packed(Settings())
-    p.map = p.item_map = np.zeros((1, 1, 1), np.int32)
-    p.mob_map, p.light_map = np.zeros((1, 1, 1), np.bool_), np.zeros((1, 1, 1), np.float32)
-    return tuple(typeof(a) for a in arguments(p, _SCRATCH)) + (typeof(0),)
-
-
-_SIGNATURE = _signature()
+def step(p: Packed, action: int) -> float:
+    """One step of the packed state; returns upstream's reward."""
+    if not p.in_arena():
+        raise ValueError("Craftax kernel: an array of the packed state was replaced; the "
+                         "compiled step plays the arena's (write into the arrays instead)")
+    return entry()(p.arena, action)

@@ -24,6 +24,7 @@ from ...core.frame import vocab_entries
 from .kernel_mobs import is_boss_vulnerable
 from .packed import (ALIVE, COL, DIRECTION, KILLED, LEVEL, MELEE, MOB_COL, MOB_ROW, MOB_SHOTS,
                      PASSIVE, PLAYER_SHOTS, RANGED, ROW, SLEEPING, SLOTS, TYPE, Packed)
+from .state import Settings
 from .tables import BOSS_LEVEL, BlockType, ItemType
 from .view import (_DARK, _DECODING, _ITEM0, _MOB0, _NEWLINE, _PLAYER0, _ROW_STARTS,
                    _VISIBLE_LIGHT32, COLS, HALF_C, HALF_R, KILLS_TO_OPEN_LADDER, ROWS, VOCAB)
@@ -133,20 +134,19 @@ def draw_window(map, item_map, light_map, ints, mobs, out, lines, words):
 
 
 class Window:
-    """A task's window: the buffers the compiled drawing writes (``codes``: the cell codes,
-    uint8 ROWS x COLS; ``lines``: the rows' bytes; ``words``: the legend's bits) and the rows
-    last decoded (decoded anew unless the codes are the last ones: remembering more windows
-    measured slower, as the player or a mob moves on most steps). ``rows`` draws and decodes;
-    ``shown`` decodes what was drawn last (by ``rows``, or by the compiled step, which draws
-    the window it leaves)."""
+    """A task's window: the buffers the compiled drawing writes, the packed state's (``codes``:
+    the cell codes, uint8 ROWS x COLS; ``lines``: the rows' bytes; ``words``: the legend's bits)
+    and the rows last decoded (decoded anew unless the codes are the last ones: remembering more
+    windows measured slower, as the player or a mob moves on most steps). ``rows`` draws and
+    decodes; ``shown`` decodes what was drawn last (by ``rows``, or by the compiled step, which
+    draws the window it leaves)."""
 
-    __slots__ = ("codes", "lines", "words", "_key", "_shown")
+    __slots__ = ("codes", "lines", "words", "_key", "_shown", "_bits")
 
-    def __init__(self) -> None:
-        self.codes = np.zeros((ROWS, COLS), np.uint8)
-        self.lines = np.full(ROWS * (COLS + 1) - 1, _NEWLINE, np.uint8)
-        self.words = np.zeros(3, np.uint64)
-        self._key = self._shown = None
+    def __init__(self, p: Packed) -> None:
+        self.codes, self.lines, self.words = p.codes, p.lines, p.words
+        self.lines[:] = _NEWLINE
+        self._key = self._shown = self._bits = None
 
     def rows(self, p: Packed) -> tuple[str, ...]:
         """``view.rows``: the 9 rows of 11 glyphs around the player, from ``codes`` decoded with
@@ -164,14 +164,15 @@ class Window:
             if len(shown) != ROWS:      # (a cell's code is the row end's: cut the rows by place)
                 text = charmap_decode(self.codes.tobytes(), "strict", _DECODING)[0]
                 shown = tuple([text[i:i + COLS] for i in _ROW_STARTS])
+            low, high, unknown = self.words.tolist()
             self._key, self._shown = key, shown
+            self._bits = None if unknown else low | high << 64
         return self._shown
 
     def glyph_bits(self) -> int | None:
-        """The legend bits (``ENTRIES``' order) of the window drawn last; None when one of its
-        codes has no entry."""
-        low, high, unknown = self.words.tolist()
-        return None if unknown else low | high << 64
+        """The legend bits (``ENTRIES``' order) of the rows ``shown`` gave last (they follow from
+        the codes); None when one of its codes has no entry."""
+        return self._bits
 
 
 _entry = None       # ``draw_window``'s entry point for the packed arrays' types (as kernel's)
@@ -179,19 +180,16 @@ _entry = None       # ``draw_window``'s entry point for the packed arrays' types
 
 def _compile():
     global _entry
-    window = Window()
-    maps = (np.zeros((1, 1, 1), np.int32), np.zeros((1, 1, 1), np.int32),
-            np.zeros((1, 1, 1), np.float32))
+    p = Packed(Settings())
     _entry = draw_window.compile(tuple(typeof(a) for a in (
-        *maps, np.zeros(1, np.int64), np.zeros((1, 1, 1, 1), np.int64), window.codes,
-        window.lines, window.words)))
+        p.map, p.item_map, p.light_map, p.ints, p.mobs, p.codes, p.lines, p.words)))
     return _entry
 
 
 def rows(p: Packed, out: np.ndarray | None = None) -> tuple[str, ...]:
-    """``view.rows`` of the packed state (a new ``Window``'s; ``out``, if given, gets the cell
-    codes)."""
-    window = Window()
+    """``view.rows`` of the packed state (drawn into its window's buffers; ``out``, if given,
+    gets the cell codes)."""
+    window = Window(p)
     shown = window.rows(p)
     if out is not None:
         out[...] = window.codes

@@ -1,11 +1,12 @@
-"""The Craftax state packed into a few flat numpy arrays, for the compiled step (``kernel``).
+"""The Craftax state packed into flat numpy arrays, views of one buffer, for the compiled step
+(``kernel``).
 
 ``State`` (``state.py``) is upstream's ``EnvState`` field for field, with Python numbers and
 lists where the rules read and write single values. A compiled function cannot take that
 object, so ``Packed`` holds the same values in arrays a compiled function can:
 
-- the four maps (``map``, ``item_map``, ``mob_map``, ``light_map``): the state's own arrays,
-  shared, not copied;
+- the four maps (``map``, ``item_map``, ``mob_map``, ``light_map``), shared with the state
+  (``pack`` makes the state's maps the packed state's);
 - ``ints`` (int64): every integer and boolean field and small array, at the offsets below;
 - ``floats`` (float64): the seven float fields (``HEALTH`` ... ``LIGHT``);
 - ``mobs`` (int64, ``(GROUPS, levels, SLOTS, MOB_FIELDS)``) and ``health`` (float64,
@@ -20,7 +21,11 @@ object, so ``Packed`` holds the same values in arrays a compiled function can:
 - ``ints[STEP_FLAGS]``: what the last compiled step changed (``kernel``'s flags);
 - ``ints[FREE]``: which mob classes have a free slot on the player's floor (kept by ``pack`` and
   the step);
-- ``settings`` (int64): ``Settings`` at the ``SET_*`` offsets.
+- ``settings`` (int64): ``Settings`` at the ``SET_*`` offsets;
+- ``codes``, ``lines``, ``words``: the window the step draws (``kernel_view``).
+
+All of them are views of one byte buffer, ``arena`` (``ARRAYS``, ``SPANS``): the compiled step
+takes that one argument.
 
 ``pack(state, settings)`` makes one, ``unpack(packed, state)`` writes the values back into a
 ``State`` (in place: a reference to it sees them).
@@ -33,7 +38,7 @@ from dataclasses import fields
 import numpy as np
 
 from .state import (MAP_SIZE, MAX_GROWING_PLANTS, MAX_MELEE, MAX_PASSIVE, MAX_RANGED, NUM_LEVELS,
-                    Inventory, Mobs, Settings, State)
+                    OBS_DIM, Inventory, Mobs, Settings, State)
 
 # ---- ints: scalar fields
 _SCALARS = ("player_level", "player_direction", "player_food", "player_drink", "player_energy",
@@ -107,24 +112,58 @@ def settings_vector(settings: Settings) -> np.ndarray:
     return np.array([int(getattr(settings, name)) for name in _SETTINGS], np.int64)
 
 
-class Packed:
-    """The arrays of one state (see the module docstring)."""
+# ---- the arena: every array of a packed state is a view of one byte buffer, so that the
+# compiled step takes one argument (each array a compiled function takes costs its call an
+# allocation and about 0.1 us). (name, dtype, shape), laid out in this order, each at a
+# multiple of 8 bytes; ``kernel`` makes the same views inside the compiled step.
+DRAWS_RESERVE = 128     # floats kept ahead of a step: more than one step draws (about 40 at most)
+DRAWS_SIZE = 384        # the draws' buffer (``KernelDraws``)
+LINE_BYTES = OBS_DIM[0] * (OBS_DIM[1] + 1) - 1      # the window's rows, each but the last ended
+_MAP_SHAPE = (NUM_LEVELS, *MAP_SIZE)
+ARRAYS = (("map", np.int32, _MAP_SHAPE), ("item_map", np.int32, _MAP_SHAPE),
+          ("light_map", np.float32, _MAP_SHAPE), ("mob_map", np.bool_, _MAP_SHAPE),
+          ("ints", np.int64, (NUM_INTS,)), ("floats", np.float64, (NUM_FLOATS,)),
+          ("mobs", np.int64, (GROUPS, NUM_LEVELS, SLOTS, MOB_FIELDS)),
+          ("health", np.float64, (GROUPS, NUM_LEVELS, SLOTS)), ("kills", np.int64, (3, KILL_TYPES)),
+          ("settings", np.int64, (len(_SETTINGS),)), ("draws", np.float64, (DRAWS_SIZE,)),
+          ("codes", np.uint8, OBS_DIM), ("lines", np.uint8, (LINE_BYTES,)),
+          ("words", np.uint64, (3,)))
 
-    __slots__ = ("map", "item_map", "mob_map", "light_map", "ints", "floats", "mobs", "health",
-                 "kills", "draws", "settings")
+
+def _layout() -> tuple[dict[str, tuple[int, int]], int]:
+    at, spans = 0, {}
+    for name, dtype, shape in ARRAYS:
+        size = int(np.prod(shape)) * np.dtype(dtype).itemsize
+        spans[name] = (at, at + size)
+        at += -(-size // 8) * 8
+    return spans, at
+
+
+SPANS, ARENA_BYTES = _layout()      # name -> (first byte, end); the arena's size
+
+
+class Packed:
+    """The arrays of one state (see the module docstring), views of one buffer (``arena``):
+    ``map`` ... ``settings`` as above, ``draws`` (``KernelDraws``), and the window the step
+    draws (``codes``, ``lines``, ``words``: ``kernel_view``). Write into them; an array put in
+    place of one is not the arena's, and the compiled step (``kernel``) would not see it."""
+
+    __slots__ = ("arena", *(name for name, _, _ in ARRAYS))
 
     def __init__(self, settings: Settings) -> None:
-        self.ints = np.zeros(NUM_INTS, np.int64)
-        self.floats = np.zeros(NUM_FLOATS, np.float64)
-        self.mobs = np.zeros((GROUPS, NUM_LEVELS, SLOTS, MOB_FIELDS), np.int64)
-        self.health = np.zeros((GROUPS, NUM_LEVELS, SLOTS), np.float64)
-        self.kills = np.zeros((3, KILL_TYPES), np.int64)
-        self.draws = np.zeros(0, np.float64)
-        self.settings = settings_vector(settings)
+        self.arena = arena = np.zeros(ARENA_BYTES, np.uint8)
+        for name, dtype, shape in ARRAYS:
+            start, end = SPANS[name]
+            setattr(self, name, arena[start:end].view(dtype).reshape(shape))
+        self.settings[:] = settings_vector(settings)
+        self.ints[DRAW_AT] = DRAWS_SIZE       # (none drawn yet: ``KernelDraws.top_up`` fills them)
+
+    def in_arena(self) -> bool:
+        """Every array is still the arena's."""
+        return all(getattr(self, name).base is self.arena for name, _, _ in ARRAYS)
 
 
-# the maps the packed state shares with the State, and their types (the compiled step is
-# called for these types only: ``kernel``)
+# the maps the packed state shares with the State, and their types
 _MAPS = (("map", np.int32), ("item_map", np.int32), ("mob_map", np.bool_), ("light_map", np.float32))
 
 
@@ -136,16 +175,21 @@ def _get(state: State, where: str):
 
 
 def pack(state: State, settings: Settings, into: Packed | None = None) -> Packed:
-    """The state's values in arrays (``into``'s, when given: its kills and draws are kept)."""
+    """The state's values in arrays (``into``'s, when given: its kills, draws and window are
+    kept). The state's maps become the packed state's (their values copied into the arena the
+    first time): the two share them from then on."""
     p = into if into is not None else Packed(settings)
     for name, dtype in _MAPS:
-        array = getattr(state, name)
+        array, mine = getattr(state, name), getattr(p, name)
+        if array is mine:
+            continue
         if array.dtype != dtype or array.shape != (NUM_LEVELS, *MAP_SIZE) or not array.flags.c_contiguous:
             order = "C-contiguous" if array.flags.c_contiguous else "not C-contiguous"
             raise ValueError(f"Craftax state's {name} must be a C-contiguous {np.dtype(dtype)} "
                              f"array of shape {(NUM_LEVELS, *MAP_SIZE)}, not a {order} "
                              f"{array.dtype} array of shape {array.shape}")
-        setattr(p, name, array)
+        mine[...] = array
+        setattr(state, name, mine)
     ints = p.ints
     for i, name in enumerate(_SCALARS):
         ints[i] = int(getattr(state, name))
@@ -209,38 +253,27 @@ def unpack(p: Packed, state: State) -> State:
     return state
 
 
-DRAWS_RESERVE = 128     # floats kept ahead of a step: more than one step draws (about 40 at most)
-DRAWS_BLOCK = 256
-
-
 class KernelDraws:
     """The uniform floats of a numpy stream, in ``common.lanes.Draws``' order, kept in
     ``packed.draws`` from ``packed.ints[DRAW_AT]`` on: ``top_up`` (before a step, or when the
     step flags ``REFILL``) makes sure at least ``reserve`` are there, more than a step draws.
 
-    ``packed.draws`` is one buffer of ``reserve + block`` floats, made by the first ``top_up``
-    and refilled in place (the compiled step is bound to the array): the floats not yet taken
-    move to its front and the stream's next ones fill the rest. Every float of the buffer is
-    the stream's next one in turn, as ``Draws`` gives them (``Draws`` draws ``block`` at a time,
-    which leaves the stream at another place between refills but gives the same sequence)."""
+    ``packed.draws`` is a buffer of the arena (``DRAWS_SIZE`` floats) refilled in place: the
+    floats not yet taken move to its front and the stream's next ones fill the rest. Every float
+    of the buffer is the stream's next one in turn, as ``Draws`` gives them (``Draws`` draws a
+    block at a time, which leaves the stream at another place between refills but gives the
+    same sequence)."""
 
-    __slots__ = ("stream", "block", "reserve")
+    __slots__ = ("stream", "reserve")
 
-    def __init__(self, stream: np.random.Generator, block: int = DRAWS_BLOCK,
-                 reserve: int = DRAWS_RESERVE) -> None:
-        self.stream, self.block, self.reserve = stream, block, reserve
+    def __init__(self, stream: np.random.Generator, reserve: int = DRAWS_RESERVE) -> None:
+        self.stream, self.reserve = stream, reserve
 
     def top_up(self, p: Packed) -> None:
         buffer, at = p.draws, p.ints.item(DRAW_AT)
-        size = self.reserve + self.block
-        if len(buffer) != size:
-            left = buffer[at:]
-            p.draws = buffer = np.empty(size, np.float64)
-            buffer[:len(left)] = left
-        else:
-            left = buffer[at:]
-            if len(left) >= self.reserve:
-                return
-            buffer[:len(left)] = left.copy()
-        buffer[len(left):] = self.stream.random(size - len(left))
+        left = len(buffer) - at
+        if left >= self.reserve:
+            return
+        buffer[:left] = buffer[at:].copy()
+        buffer[left:] = self.stream.random(len(buffer) - left)
         p.ints[DRAW_AT] = 0

@@ -21,6 +21,7 @@ import numpy as np
 
 NUM_LEVELS = 9
 MAP_SIZE = (48, 48)
+OBS_DIM = (9, 11)      # upstream's OBS_DIM: the rows and columns of the player's view
 MAX_MELEE, MAX_PASSIVE, MAX_RANGED = 3, 3, 2
 MAX_MOB_PROJECTILES, MAX_PLAYER_PROJECTILES, MAX_GROWING_PLANTS = 3, 3, 10
 # the State fields of the three mob classes, in upstream's class order (MobType 0, 1, 2)

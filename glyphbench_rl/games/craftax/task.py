@@ -297,10 +297,10 @@ class CraftaxTask(GlyphTask):
         self.kernel_draws.top_up(self.packed)
         self._lent = False      # the State was handed out (``state``): it is kept in step
         self._edited = 0        # what edits between steps may have changed (``_EDITED``)
-        self.window = kernel_view.Window()     # (the compiled view's buffers)
+        self.window = kernel_view.Window(self.packed)     # (the window the step draws)
         self.line = hud.Line()
-        self._play = kernel.entry()
-        self._bind()
+        self._play, self._arena = kernel.entry(), self.packed.arena
+        self._stale = _ALL_STALE
         self.play_rng = self.stream("scenario")
         self.tally = Tally(self.packed)
         tally, scenario = self.tally, self.scenario
@@ -348,13 +348,8 @@ class CraftaxTask(GlyphTask):
             self._edited = _EDITED
 
     def _repack(self) -> None:
+        """The State into the packed state; everything on show is made anew."""
         pack(self._state, self.settings, into=self.packed)
-        self._bind()
-
-    def _bind(self) -> None:
-        """The compiled step's arguments (``kernel.arguments``), made again when an array of the
-        packed state may have been replaced; everything on show is made anew."""
-        self._args = kernel.arguments(self.packed, self.window)
         self._stale = _ALL_STALE
 
     def _act(self, action: int) -> None:
@@ -362,7 +357,7 @@ class CraftaxTask(GlyphTask):
         if self._lent:
             self._take_edits()
         ahead = tally.facing_block() if action in _PLACED else None
-        native = self._play(*self._args, action)
+        native = self._play(self._arena, action)
         flags = p.ints.item(STEP_FLAGS)
         if self._edited:
             flags |= self._edited

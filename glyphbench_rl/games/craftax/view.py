@@ -27,12 +27,12 @@ import numpy as np
 
 from .hud import TIERS
 from .mobs import is_boss_vulnerable
-from .state import State
+from .state import OBS_DIM, State
 from .tables import (BOSS_LEVEL, LIGHT_VISIBLE, MINING, PLACING, RECIPES as CRAFTING, Action,
                      BlockType, ItemType, ProjectileType)
 from .tables import MONSTERS_KILLED_TO_CLEAR_LEVEL as KILLS_TO_OPEN_LADDER
 
-ROWS, COLS = 9, 11                       # upstream's OBS_DIM
+ROWS, COLS = OBS_DIM                     # upstream's OBS_DIM
 HALF_R, HALF_C = ROWS // 2, COLS // 2
 # (the level names, dark levels, the kills that open a ladder and the light a cell needs to be
 # seen are tables.py's)
