@@ -12,9 +12,11 @@ reference stays the readable rules, the one the fidelity tests hold against upst
 The step also writes ``ints[STEP_FLAGS]``: which of the things the task's tally counts changed
 (the ``CHANGED_*`` bits, so that a step that changed none costs the tally nothing), whether the
 HUD line's values (``CHANGED_HUD``: ``packed.HUD_RANGES``, the health, day or night) or the
-player's position (``MOVED``) changed, and ``REFILL`` when fewer than ``DRAWS_RESERVE`` draws are
+player's position (``MOVED``) or the window (``CHANGED_WINDOW``) changed, whether the player died
+(``DEAD``), and ``REFILL`` when fewer than ``DRAWS_RESERVE`` draws are
 left for the next step; ``ints[FREE]``, the mob classes with a free slot on the player's floor;
-and it draws the window of the state it leaves (``kernel_view``: the codes, the rows' bytes and
+it counts the steps and those that ended on the surface at night (``STEPS``, ``NIGHTS``, the
+task's ``turn`` and ``night``); and it draws the window of the state it leaves (``kernel_view``: the codes, the rows' bytes and
 the legend's bits), so that a task's step is one call.
 
 That call takes one argument, the packed state's ``arena`` (``packed``: every array is a view of
@@ -32,8 +34,8 @@ from numba import njit, typeof
 
 from . import kernel_mobs, kernel_rules, kernel_view
 from .packed import (ACH, ALIVE, ARRAYS, BOOKS, CLASS_SLOTS, COL, DRAW_AT, DRAWS_RESERVE, DRINK,
-                     FOOD, FREE, HEALTH, HUD_RANGES, INV, LEVEL, LIGHT, MANA, POTIONS, ROW,
-                     SET_DAY_LENGTH, SET_DAYLIGHT, SET_SPAWNING, SPANS, STEP_FLAGS, TIMESTEP,
+                     FOOD, FREE, HEALTH, HUD_RANGES, INV, LEVEL, LIGHT, MANA, NIGHTS, POTIONS, ROW,
+                     SET_DAY_LENGTH, SET_DAYLIGHT, SET_SPAWNING, SPANS, STEP_FLAGS, STEPS, TIMESTEP,
                      TORCHES, Packed)
 from .tables import ACHIEVEMENT_REWARD, NIGHT_LIGHT
 
@@ -42,7 +44,8 @@ _ACHIEVEMENTS = len(ACHIEVEMENT_REWARD)
 
 # ``ints[STEP_FLAGS]``'s bits: what the step changed
 (CHANGED_INVENTORY, ATE, DRANK, SPENT_MANA, USED_TORCH, DRANK_POTION, KILLED_MOB, CHANGED_LEVEL,
- CHANGED_ACHIEVEMENTS, NIGHT_ON_SURFACE, REFILL, CHANGED_HUD, MOVED) = (1 << i for i in range(13))
+ CHANGED_ACHIEVEMENTS, NIGHT_ON_SURFACE, REFILL, CHANGED_HUD, MOVED, CHANGED_WINDOW,
+ DEAD) = (1 << i for i in range(15))
 _HUD_RANGES = np.array(HUD_RANGES, np.int64)
 _CLASS_SLOTS = np.array(CLASS_SLOTS, np.int64)
 
@@ -171,7 +174,15 @@ def _step(arena, action):
     ints[STEP_FLAGS] = _flags(before, ints, floats, start_health, light_before, kills_before,
                               kills, draws)
     ints[FREE] = _free(ints, mobs)
-    kernel_view.draw_window(map, item_map, light_map, ints, mobs, codes, lines, words)
+    ints[STEPS] += 1
+    flags = ints[STEP_FLAGS]
+    if flags & NIGHT_ON_SURFACE:
+        ints[NIGHTS] += 1
+    if floats[HEALTH] <= 0:
+        flags |= DEAD
+    if kernel_view.draw_window(map, item_map, light_map, ints, mobs, codes, lines, words):
+        flags |= CHANGED_WINDOW
+    ints[STEP_FLAGS] = flags
     return reward
 
 

@@ -114,15 +114,19 @@ def draw_window(map, item_map, light_map, ints, mobs, out, lines, words):
     """``codes`` into ``out``, and copied into ``lines`` (uint8, ROWS * (COLS + 1) - 1): the
     rows one after another, each but the last followed by view's row end (``_NEWLINE``); the
     legend entries on show as bits of ``words`` (uint64: entries 0-63, 64-127, and 1 when a code
-    has no entry)."""
+    has no entry). Returns whether ``lines`` changed."""
     _draw(map, item_map, light_map, ints, mobs, out)
     low = high = np.uint64(0)
     unknown = 0
     one = np.uint64(1)
+    changed = False
     for r in range(ROWS):
         for c in range(COLS):
             code = out[r, c]
-            lines[r * (COLS + 1) + c] = code
+            at = r * (COLS + 1) + c
+            if lines[at] != code:
+                lines[at] = code
+                changed = True
             entry = _ENTRY_OF[code]
             if entry < 0:
                 unknown = 1
@@ -131,6 +135,7 @@ def draw_window(map, item_map, light_map, ints, mobs, out, lines, words):
             else:
                 high |= one << np.uint64(entry - 64)
     words[0], words[1], words[2] = low, high, unknown
+    return changed
 
 
 class Window:
@@ -147,6 +152,11 @@ class Window:
         self.codes, self.lines, self.words = p.codes, p.lines, p.words
         self.lines[:] = _NEWLINE
         self._key = self._shown = self._bits = None
+
+    @property
+    def last(self) -> tuple[str, ...]:
+        """The rows ``shown`` or ``rows`` gave last (for a window drawn again the same)."""
+        return self._shown
 
     def rows(self, p: Packed) -> tuple[str, ...]:
         """``view.rows``: the 9 rows of 11 glyphs around the player, from ``codes`` decoded with

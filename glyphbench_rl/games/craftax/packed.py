@@ -20,7 +20,8 @@ object, so ``Packed`` holds the same values in arrays a compiled function can:
   ``common.lanes.Draws`` gives them from the same stream (``KernelDraws`` keeps it filled);
 - ``ints[STEP_FLAGS]``: what the last compiled step changed (``kernel``'s flags);
 - ``ints[FREE]``: which mob classes have a free slot on the player's floor (kept by ``pack`` and
-  the step);
+  the step); ``ints[STEPS]``, ``ints[NIGHTS]``: the steps played, and those that ended on the
+  surface at night (counted by the step, for the task's tally);
 - ``settings`` (int64): ``Settings`` at the ``SET_*`` offsets;
 - ``codes``, ``lines``, ``words``: the window the step draws (``kernel_view``).
 
@@ -79,7 +80,9 @@ PLANT_POS, PLANT_AGE, PLANT_MASK = (_OFFSET[n] for n in ("plant_pos", "plant_age
 DRAW_AT = _at          # the next float of ``draws``
 STEP_FLAGS = _at + 1   # what the last step changed (``kernel``'s flags)
 FREE = _at + 2         # the mob classes with a free slot on the player's floor (bit k: class k)
-NUM_INTS = _at + 3
+STEPS = _at + 3        # the steps played since the state was packed first
+NIGHTS = _at + 4       # those of them that ended on the surface at night (``kernel``)
+NUM_INTS = _at + 5
 # the ints the HUD line reads besides the position (``hud``), as (start, stop) ranges: the
 # scalars up to the enchantments, the inventory's counts up to the spells, the floors' kills
 HUD_RANGES = ((0, BOW_ENCH + 1), (INV, SPELLS + 2), (KILLED, KILLED + NUM_LEVELS))

@@ -608,8 +608,8 @@ class Planner:
         ``shelter``, wait walled in by stone at night (the walls mined open after). Monsters:
         one beside the player is fought off (``guard``); with ``keep_away`` the player keeps
         away from them instead (``evade``), hitting only a lone one beside it on cooldown."""
-        end = self.task.tally.counts["turn"] + turns
-        while self.task.tally.counts["turn"] < end and not self.done and self.budget > 0:
+        end = self.task.tally.value("turn") + turns
+        while self.task.tally.value("turn") < end and not self.done and self.budget > 0:
             s, before = self.state, self.budget
             if keep_away:
                 mobs = live_mobs(s)

@@ -22,8 +22,8 @@ from . import hud, kernel, kernel_view, view
 from .bestiary import MOB_NAMES
 from .scenarios import SCENARIOS, Scenario, parse_test
 from .packed import (ACH, ARMOUR, BOSS_PROGRESS, COL, DEX, DIRECTION, FREE, HEALTH, INT, INV,
-                     INVENTORY, KILLED, LEVEL, POTION_MAP, ROW, SPELLS, STEP_FLAGS, STR, SWORD_ENCH,
-                     XP, KernelDraws, Packed, pack, unpack)
+                     INVENTORY, KILLED, LEVEL, NIGHTS, POTION_MAP, ROW, SPELLS, STEP_FLAGS, STEPS,
+                     STR, SWORD_ENCH, XP, KernelDraws, Packed, pack, unpack)
 from .state import MAP_SIZE, State
 from .tables import DIRECTIONS, Achievement, Action, BlockType
 from .upkeep import COUNTS
@@ -70,15 +70,16 @@ _FACING = {int(a): d for a, d in DIRECTIONS.items()}
 _COUNTED = (kernel.CHANGED_INVENTORY | kernel.ATE | kernel.DRANK | kernel.SPENT_MANA
             | kernel.USED_TORCH | kernel.DRANK_POTION | kernel.KILLED_MOB | kernel.CHANGED_LEVEL
             | kernel.CHANGED_ACHIEVEMENTS)
-_NIGHT = kernel.NIGHT_ON_SURFACE
 # what an edit of the state between steps may have changed that the tally compares with what it
 # saw last (its holdings, level, achievements): the next step looks at them whatever it changed
 _EDITED = kernel.CHANGED_INVENTORY | kernel.CHANGED_LEVEL | kernel.CHANGED_ACHIEVEMENTS
 # what the next frame makes anew (``CraftaxTask._stale``): the window (the step draws it; an
 # edit or a reset does not), the HUD line's text (``CHANGED_HUD``), its position (``MOVED``)
+# and whether the step changed the window it drew (``CHANGED_WINDOW``: its rows decoded anew)
 _WINDOW = 1 << 20
 _HUD_STALE = kernel.CHANGED_HUD | kernel.MOVED
-_ALL_STALE = _WINDOW | _HUD_STALE
+_SHOWN = _HUD_STALE | kernel.CHANGED_WINDOW      # (the step's flags for what is on show)
+_ALL_STALE = _WINDOW | _SHOWN
 
 
 class Tally:
@@ -108,8 +109,8 @@ class Tally:
         self.got = dict.fromkeys(ITEMS, 0)
         self.kills: dict[str, int] = {"monsters": 0, "all": 0}
         self.placed = {b.name.lower(): 0 for b in PLACED.values()} | {"torch": 0}
-        self.counts = {"turn": 0, "night": 0, "ate": 0, "drank": 0, "cast": 0,
-                       "deepest": self.ints.item(LEVEL)}
+        # (``turn`` and ``night`` are the step's counts: ``STEPS``, ``NIGHTS``)
+        self.counts = {"ate": 0, "drank": 0, "cast": 0, "deepest": self.ints.item(LEVEL)}
         self.potions = dict.fromkeys(POTION_EFFECTS, 0)
         self._held = self._holdings()
         self._killed = self.kill_counts.copy()       # the kill counts counted
@@ -128,7 +129,8 @@ class Tally:
                   "int": lambda t: t.ints.item(INT), "xp": lambda t: t.ints.item(XP),
                   "spells": lambda t: t.ints.item(SPELLS) + t.ints.item(SPELLS + 1),
                   "gate": lambda t: t.ints.item(KILLED + t.ints.item(LEVEL)),
-                  "boss": lambda t: t.ints.item(BOSS_PROGRESS)}
+                  "boss": lambda t: t.ints.item(BOSS_PROGRESS),
+                  "turn": lambda t: t.ints.item(STEPS), "night": lambda t: t.ints.item(NIGHTS)}
         if key in simple:
             return simple[key]
         if key in self.counts:
@@ -202,14 +204,10 @@ class Tally:
         self._killed = now.copy()
 
     def after_step(self, action: int, flags: int, ahead: int | None) -> None:
-        """Count the step the kernel just played: ``flags``, what it changed (``kernel``'s
-        bits); ``ahead``, the block the player faced before it, for a placing action."""
+        """Count the step the kernel just played, called when ``flags`` (what it changed:
+        ``kernel``'s bits) has one of ``_COUNTED`` (the step counts the turns and the nights
+        itself); ``ahead``, the block the player faced before it, for a placing action."""
         counts = self.counts
-        counts["turn"] += 1
-        if flags & _NIGHT:
-            counts["night"] += 1
-        if not flags & _COUNTED:
-            return
         changed = False          # a steady counter changed (``changes``)
         ints = self.ints
         if flags & kernel.CHANGED_INVENTORY:
@@ -358,18 +356,19 @@ class CraftaxTask(GlyphTask):
             self._take_edits()
         ahead = tally.facing_block() if action in _PLACED else None
         native = self._play(self._arena, action)
-        flags = p.ints.item(STEP_FLAGS)
+        self._flags = flags = p.ints.item(STEP_FLAGS)
         if self._edited:
             flags |= self._edited
             self._edited = 0
-            self._stale = _HUD_STALE      # (the HUD was made before the edits: all of it anew)
+            self._stale = _SHOWN      # (the frame was made before the edits: all of it anew)
         else:
-            self._stale = flags & _HUD_STALE       # (the step drew the window it leaves)
+            self._stale = flags & _SHOWN       # (the step drew the window it leaves)
         if flags & kernel.REFILL:
             self.kernel_draws.top_up(p)
         if self._lent:
             unpack(p, self._state)
-        tally.after_step(action, flags, ahead)
+        if flags & _COUNTED:
+            tally.after_step(action, flags, ahead)
         if self.events:     # (most scenarios have no events and no waiting mobs)
             self.scenario.run_events(self, tally)
         elif self.ctx.reserve:      # (all run_events does without events)
@@ -388,6 +387,7 @@ class CraftaxTask(GlyphTask):
                 return
         self.edit(lambda state: ctx.admit(state, self.play_rng))
 
+    _flags = 0      # the last step's flags (``kernel``)
     _admit_classes, _admit_bits = None, 0     # the classes ``admit`` last waited for, as bits
 
     def _score(self, tally: Tally, native: float) -> None:
@@ -408,7 +408,8 @@ class CraftaxTask(GlyphTask):
         if finished:
             self._open = [e for e in self._open if e[2] < e[0].cap]
             self._live = [e for e in self._live if e[2] < e[0].cap]
-        if self.packed.floats.item(HEALTH) <= 0:
+        # (the step flags a death; an edit after it, a scenario event, may have changed it)
+        if (self.packed.floats.item(HEALTH) <= 0 if self._edited else self._flags & kernel.DEAD):
             self.reward(self.scenario.death)
             self.say("You died.")
             self.finish(won=False)
@@ -419,10 +420,14 @@ class CraftaxTask(GlyphTask):
     def _grid(self) -> tuple[str, ...]:
         if self._lent:
             self._take_edits()
-        if self._stale & _WINDOW:
-            self._stale &= ~_WINDOW
+        stale = self._stale
+        if stale & _WINDOW:
+            self._stale = stale & ~(_WINDOW | kernel.CHANGED_WINDOW)
             return self.window.rows(self.packed)
-        return self.window.shown()
+        if stale & kernel.CHANGED_WINDOW:
+            self._stale = stale & ~kernel.CHANGED_WINDOW
+            return self.window.shown()
+        return self.window.last      # (the window shown last, drawn again the same)
 
     _legends = None     # the Legends whose entries were found to be the window's
 
@@ -440,7 +445,11 @@ class CraftaxTask(GlyphTask):
             goal = self._goal = (tally.changes, self.scenario.progress(tally))  # (a few counters)
         goal = goal[1]
         line = self._line()
-        return f"{line} | {goal}" if goal else line
+        if line is not self._hud_parts[0] or goal != self._hud_parts[1]:
+            self._hud_parts = (line, goal, f"{line} | {goal}" if goal else line)
+        return self._hud_parts[2]
+
+    _hud_parts = (None, None, "")     # the line, the goal and the HUD made of them, last made
 
     def _line(self) -> str:
         """The HUD line of the packed state (``hud.Line``), made anew as far as ``_stale`` says."""
@@ -453,5 +462,5 @@ class CraftaxTask(GlyphTask):
             line = self.line.moved(self.packed)
         else:
             return self.line.line
-        self._stale = stale & _WINDOW
+        self._stale = stale & ~_HUD_STALE
         return line
