@@ -128,3 +128,17 @@ def test_the_legend_memo_is_shared_not_copied():
     assert twin._legend_memo is task._legend_memo
     assert pickle.loads(pickle.dumps(task))._legend_memo is task._legend_memo   # (same process)
     assert Counter(tier="extended")._legend_memo is not None
+
+
+def test_a_steps_info_is_info_written_out():
+    """``_finish_step`` writes ``_info`` out: the same keys and values."""
+    from glyphbench_rl import make
+    for task_id in ("glyphbench/classics-snake-easy-v0", "glyphbench/craftax-firstday-v0",
+                    "glyphbench/minigrid-empty-5x5-v0"):
+        task = make(task_id)
+        task.reset(seed=0)
+        for action in (0, 1, 2):
+            info = task.step(action)[4]
+            assert info == task._info(forfeit=False)
+        info = task.forfeit("no_tag")[4]
+        assert info == task._info(forfeit=True) | {"forfeit_reason": "no_tag"}

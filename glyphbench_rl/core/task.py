@@ -305,7 +305,9 @@ class GlyphTask(gym.Env[str, int]):
         if self.turn >= self.max_turns and not self._terminated:
             self._truncated = self.done = True
         frame = self._frame = self._build_frame()
-        info = self._info(forfeit=forfeit)
+        # (``_info``, written out: a step makes one)
+        info = {"frame": frame, "turn": self.turn, "return": self.episode_return, "won": self.won,
+                "forfeit": forfeit, "clamped": self._clamped}
         if forfeit:
             info["forfeit_reason"] = reason
         # (the base ``_build_frame`` has just rendered its frame; a game's own has not)

@@ -132,9 +132,10 @@ _DRAWS0, _DRAWS1, _ = _SPAN["draws"]
 _CODES0, _CODES1, _CODES_SHAPE = _SPAN["codes"]
 _LINES0, _LINES1, _ = _SPAN["lines"]
 _WORDS0, _WORDS1, _ = _SPAN["words"]
+_BEFORE0, _BEFORE1, _ = _SPAN["before"]
 assert [name for name, _, _ in ARRAYS] == ["map", "item_map", "light_map", "mob_map", "ints",
                                            "floats", "mobs", "health", "kills", "settings",
-                                           "draws", "codes", "lines", "words"]
+                                           "draws", "codes", "lines", "words", "before"]
 
 
 @njit(cache=True)
@@ -153,8 +154,9 @@ def _step(arena, action):
     codes = arena[_CODES0:_CODES1].reshape(_CODES_SHAPE)
     lines = arena[_LINES0:_LINES1]
     words = arena[_WORDS0:_WORDS1].view(np.uint64)
+    before = arena[_BEFORE0:_BEFORE1].view(np.int64)
 
-    before = ints.copy()
+    before[:] = ints
     kills_before = kills.sum()
     start_health, light_before = floats[HEALTH], floats[LIGHT]
     played = kernel_rules.act(map, item_map, mob_map, light_map, ints, floats, mobs, health,

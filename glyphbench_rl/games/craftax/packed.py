@@ -23,7 +23,8 @@ object, so ``Packed`` holds the same values in arrays a compiled function can:
   the step); ``ints[STEPS]``, ``ints[NIGHTS]``: the steps played, and those that ended on the
   surface at night (counted by the step, for the task's tally);
 - ``settings`` (int64): ``Settings`` at the ``SET_*`` offsets;
-- ``codes``, ``lines``, ``words``: the window the step draws (``kernel_view``).
+- ``codes``, ``lines``, ``words``: the window the step draws (``kernel_view``);
+- ``before``: the step's copy of ``ints`` as they were before it (scratch).
 
 All of them are views of one byte buffer, ``arena`` (``ARRAYS``, ``SPANS``): the compiled step
 takes that one argument.
@@ -130,7 +131,7 @@ ARRAYS = (("map", np.int32, _MAP_SHAPE), ("item_map", np.int32, _MAP_SHAPE),
           ("health", np.float64, (GROUPS, NUM_LEVELS, SLOTS)), ("kills", np.int64, (3, KILL_TYPES)),
           ("settings", np.int64, (len(_SETTINGS),)), ("draws", np.float64, (DRAWS_SIZE,)),
           ("codes", np.uint8, OBS_DIM), ("lines", np.uint8, (LINE_BYTES,)),
-          ("words", np.uint64, (3,)))
+          ("words", np.uint64, (3,)), ("before", np.int64, (NUM_INTS,)))
 
 
 def _layout() -> tuple[dict[str, tuple[int, int]], int]:

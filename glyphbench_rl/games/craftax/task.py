@@ -80,6 +80,9 @@ _WINDOW = 1 << 20
 _HUD_STALE = kernel.CHANGED_HUD | kernel.MOVED
 _SHOWN = _HUD_STALE | kernel.CHANGED_WINDOW      # (the step's flags for what is on show)
 _ALL_STALE = _WINDOW | _SHOWN
+# (the step's bits read every step, as module ints)
+_REFILL, _DEAD, _CHANGED_HUD, _MOVED, _CHANGED_WINDOW = (
+    kernel.REFILL, kernel.DEAD, kernel.CHANGED_HUD, kernel.MOVED, kernel.CHANGED_WINDOW)
 
 
 class Tally:
@@ -363,7 +366,7 @@ class CraftaxTask(GlyphTask):
             self._stale = _SHOWN      # (the frame was made before the edits: all of it anew)
         else:
             self._stale = flags & _SHOWN       # (the step drew the window it leaves)
-        if flags & kernel.REFILL:
+        if flags & _REFILL:
             self.kernel_draws.top_up(p)
         if self._lent:
             unpack(p, self._state)
@@ -395,21 +398,25 @@ class CraftaxTask(GlyphTask):
         here) and end the episode on death or success. Unless a steady counter changed since
         the last step (``tally.changes``), only the terms and success test that read other
         counters are asked: the others give what they gave."""
-        fresh = tally.changes != self._scored_at
-        self._scored_at = tally.changes
-        finished = False
-        for entry in self._open if fresh else self._live:
-            term, count, paid = entry
-            units = count(tally)
-            if units > paid:
-                entry[2] = units
-                self.reward(term.unit * (units - paid))
-                finished = finished or units >= term.cap
-        if finished:
-            self._open = [e for e in self._open if e[2] < e[0].cap]
-            self._live = [e for e in self._live if e[2] < e[0].cap]
+        changes = tally.changes
+        fresh = changes != self._scored_at
+        if fresh:
+            self._scored_at = changes
+        entries = self._open if fresh else self._live
+        if entries:
+            finished = False
+            for entry in entries:
+                term, count, paid = entry
+                units = count(tally)
+                if units > paid:
+                    entry[2] = units
+                    self.reward(term.unit * (units - paid))
+                    finished = finished or units >= term.cap
+            if finished:
+                self._open = [e for e in self._open if e[2] < e[0].cap]
+                self._live = [e for e in self._live if e[2] < e[0].cap]
         # (the step flags a death; an edit after it, a scenario event, may have changed it)
-        if (self.packed.floats.item(HEALTH) <= 0 if self._edited else self._flags & kernel.DEAD):
+        if (self.packed.floats.item(HEALTH) <= 0 if self._edited else self._flags & _DEAD):
             self.reward(self.scenario.death)
             self.say("You died.")
             self.finish(won=False)
@@ -422,10 +429,10 @@ class CraftaxTask(GlyphTask):
             self._take_edits()
         stale = self._stale
         if stale & _WINDOW:
-            self._stale = stale & ~(_WINDOW | kernel.CHANGED_WINDOW)
+            self._stale = stale & ~(_WINDOW | _CHANGED_WINDOW)
             return self.window.rows(self.packed)
-        if stale & kernel.CHANGED_WINDOW:
-            self._stale = stale & ~kernel.CHANGED_WINDOW
+        if stale & _CHANGED_WINDOW:
+            self._stale = stale & ~_CHANGED_WINDOW
             return self.window.shown()
         return self.window.last      # (the window shown last, drawn again the same)
 
@@ -456,9 +463,9 @@ class CraftaxTask(GlyphTask):
         if self._lent:
             self._take_edits()
         stale = self._stale
-        if stale & kernel.CHANGED_HUD:
+        if stale & _CHANGED_HUD:
             line = self.line.update(self.packed)
-        elif stale & kernel.MOVED:
+        elif stale & _MOVED:
             line = self.line.moved(self.packed)
         else:
             return self.line.line
