@@ -12,7 +12,8 @@ reference stays the readable rules, the one the fidelity tests hold against upst
 The step also writes ``ints[STEP_FLAGS]``: which of the things the task's tally counts changed
 (the ``CHANGED_*`` bits, so that a step that changed none costs the tally nothing), whether the
 HUD line's values (``CHANGED_HUD``: ``packed.HUD_RANGES``, the health, day or night) or the
-player's position (``MOVED``) or the window (``CHANGED_WINDOW``) changed, whether the player died
+player's position (``MOVED``), the window (``CHANGED_WINDOW``) or the glyphs on it
+(``CHANGED_LEGEND``) changed, whether the player died
 (``DEAD``), and ``REFILL`` when fewer than ``DRAWS_RESERVE`` draws are
 left for the next step; ``ints[FREE]``, the mob classes with a free slot on the player's floor;
 it counts the steps and those that ended on the surface at night (``STEPS``, ``NIGHTS``, the
@@ -45,7 +46,7 @@ _ACHIEVEMENTS = len(ACHIEVEMENT_REWARD)
 # ``ints[STEP_FLAGS]``'s bits: what the step changed
 (CHANGED_INVENTORY, ATE, DRANK, SPENT_MANA, USED_TORCH, DRANK_POTION, KILLED_MOB, CHANGED_LEVEL,
  CHANGED_ACHIEVEMENTS, NIGHT_ON_SURFACE, REFILL, CHANGED_HUD, MOVED, CHANGED_WINDOW,
- DEAD) = (1 << i for i in range(15))
+ DEAD, CHANGED_LEGEND) = (1 << i for i in range(16))
 _HUD_RANGES = np.array(HUD_RANGES, np.int64)
 _CLASS_SLOTS = np.array(CLASS_SLOTS, np.int64)
 
@@ -182,8 +183,11 @@ def _step(arena, action):
         ints[NIGHTS] += 1
     if floats[HEALTH] <= 0:
         flags |= DEAD
-    if kernel_view.draw_window(map, item_map, light_map, ints, mobs, codes, lines, words):
+    drawn = kernel_view.draw_window(map, item_map, light_map, ints, mobs, codes, lines, words)
+    if drawn & kernel_view.LINES_CHANGED:
         flags |= CHANGED_WINDOW
+    if drawn & kernel_view.WORDS_CHANGED:
+        flags |= CHANGED_LEGEND
     ints[STEP_FLAGS] = flags
     return reward
 

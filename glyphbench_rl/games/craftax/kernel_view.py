@@ -102,11 +102,17 @@ def _draw(map, item_map, light_map, ints, mobs, out):
 
 
 # the legend's entries (``core.frame.vocab_entries`` of view's vocabulary) and each code's entry
-# (-1: a code with no glyph, or the row end)
+# (-1: a code with no glyph, or the row end), as its bit in the legend's two words (``_LOW``,
+# ``_HIGH``) and whether it has none (``_UNKNOWN``)
 ENTRIES = vocab_entries(VOCAB)
 _ENTRY_OF = np.array([next((i for i, (g, _) in enumerate(ENTRIES) if g == _DECODING[code]), -1)
                       for code in range(256)], np.int64)
 assert len(ENTRIES) <= 128      # (two 64-bit words of entry bits)
+_LOW = np.array([1 << e if 0 <= e < 64 else 0 for e in _ENTRY_OF.tolist()], np.uint64)
+_HIGH = np.array([1 << (e - 64) if e >= 64 else 0 for e in _ENTRY_OF.tolist()], np.uint64)
+_UNKNOWN = np.array([e < 0 for e in _ENTRY_OF.tolist()], np.uint64)
+# ``draw_window``'s answer: what changed since the window drawn before
+LINES_CHANGED, WORDS_CHANGED = 1, 2
 
 
 @njit(cache=True)
@@ -114,27 +120,23 @@ def draw_window(map, item_map, light_map, ints, mobs, out, lines, words):
     """``codes`` into ``out``, and copied into ``lines`` (uint8, ROWS * (COLS + 1) - 1): the
     rows one after another, each but the last followed by view's row end (``_NEWLINE``); the
     legend entries on show as bits of ``words`` (uint64: entries 0-63, 64-127, and 1 when a code
-    has no entry). Returns whether ``lines`` changed."""
+    has no entry). Returns what changed: ``LINES_CHANGED``, ``WORDS_CHANGED`` (bits)."""
     _draw(map, item_map, light_map, ints, mobs, out)
-    low = high = np.uint64(0)
-    unknown = 0
-    one = np.uint64(1)
-    changed = False
+    low = high = unknown = np.uint64(0)
+    changed = 0
     for r in range(ROWS):
+        at = r * (COLS + 1)
         for c in range(COLS):
             code = out[r, c]
-            at = r * (COLS + 1) + c
-            if lines[at] != code:
-                lines[at] = code
-                changed = True
-            entry = _ENTRY_OF[code]
-            if entry < 0:
-                unknown = 1
-            elif entry < 64:
-                low |= one << np.uint64(entry)
-            else:
-                high |= one << np.uint64(entry - 64)
-    words[0], words[1], words[2] = low, high, unknown
+            if lines[at + c] != code:
+                lines[at + c] = code
+                changed = LINES_CHANGED
+            low |= _LOW[code]
+            high |= _HIGH[code]
+            unknown |= _UNKNOWN[code]
+    if words[0] != low or words[1] != high or words[2] != unknown:
+        words[0], words[1], words[2] = low, high, unknown
+        changed |= WORDS_CHANGED
     return changed
 
 
@@ -146,12 +148,15 @@ class Window:
     decodes; ``shown`` decodes what was drawn last (by ``rows``, or by the compiled step, which
     draws the window it leaves)."""
 
-    __slots__ = ("codes", "lines", "words", "_key", "_shown", "_bits")
+    __slots__ = ("codes", "lines", "words", "_key", "_shown", "bits")
 
     def __init__(self, p: Packed) -> None:
         self.codes, self.lines, self.words = p.codes, p.lines, p.words
         self.lines[:] = _NEWLINE
-        self._key = self._shown = self._bits = None
+        self._key = self._shown = None
+        # the legend bits (``ENTRIES``' order) of the rows ``shown`` gave last (they follow from
+        # the codes); None when one of its codes has no entry
+        self.bits: int | None = None
 
     @property
     def last(self) -> tuple[str, ...]:
@@ -166,23 +171,20 @@ class Window:
         draw(p.map, p.item_map, p.light_map, p.ints, p.mobs, self.codes, self.lines, self.words)
         return self.shown()
 
-    def shown(self) -> tuple[str, ...]:
-        """The rows of the window drawn last."""
+    def shown(self, legend: bool = True) -> tuple[str, ...]:
+        """The rows of the window drawn last (``legend`` False: its legend's bits are those of
+        the window decoded before, as the drawing found)."""
         key = self.lines.tobytes()
         if key != self._key:
             shown = tuple(charmap_decode(key, "strict", _DECODING)[0].split("\n"))
             if len(shown) != ROWS:      # (a cell's code is the row end's: cut the rows by place)
                 text = charmap_decode(self.codes.tobytes(), "strict", _DECODING)[0]
                 shown = tuple([text[i:i + COLS] for i in _ROW_STARTS])
-            low, high, unknown = self.words.tolist()
             self._key, self._shown = key, shown
-            self._bits = None if unknown else low | high << 64
+            if legend:
+                low, high, unknown = self.words.tolist()
+                self.bits = None if unknown else low | high << 64
         return self._shown
-
-    def glyph_bits(self) -> int | None:
-        """The legend bits (``ENTRIES``' order) of the rows ``shown`` gave last (they follow from
-        the codes); None when one of its codes has no entry."""
-        return self._bits
 
 
 _entry = None       # ``draw_window``'s entry point for the packed arrays' types (as kernel's)

@@ -78,11 +78,13 @@ _EDITED = kernel.CHANGED_INVENTORY | kernel.CHANGED_LEVEL | kernel.CHANGED_ACHIE
 # and whether the step changed the window it drew (``CHANGED_WINDOW``: its rows decoded anew)
 _WINDOW = 1 << 20
 _HUD_STALE = kernel.CHANGED_HUD | kernel.MOVED
-_SHOWN = _HUD_STALE | kernel.CHANGED_WINDOW      # (the step's flags for what is on show)
+_SHOWN = _HUD_STALE | kernel.CHANGED_WINDOW | kernel.CHANGED_LEGEND   # (the step's flags for what is on show)
 _ALL_STALE = _WINDOW | _SHOWN
 # (the step's bits read every step, as module ints)
-_REFILL, _DEAD, _CHANGED_HUD, _MOVED, _CHANGED_WINDOW = (
-    kernel.REFILL, kernel.DEAD, kernel.CHANGED_HUD, kernel.MOVED, kernel.CHANGED_WINDOW)
+_REFILL, _DEAD, _CHANGED_HUD, _MOVED, _CHANGED_WINDOW, _CHANGED_LEGEND = (
+    kernel.REFILL, kernel.DEAD, kernel.CHANGED_HUD, kernel.MOVED, kernel.CHANGED_WINDOW,
+    kernel.CHANGED_LEGEND)
+_WINDOW_STALE = _WINDOW | _CHANGED_WINDOW | _CHANGED_LEGEND
 
 
 class Tally:
@@ -429,11 +431,11 @@ class CraftaxTask(GlyphTask):
             self._take_edits()
         stale = self._stale
         if stale & _WINDOW:
-            self._stale = stale & ~(_WINDOW | _CHANGED_WINDOW)
+            self._stale = stale & ~_WINDOW_STALE
             return self.window.rows(self.packed)
         if stale & _CHANGED_WINDOW:
-            self._stale = stale & ~_CHANGED_WINDOW
-            return self.window.shown()
+            self._stale = stale & ~_WINDOW_STALE
+            return self.window.shown(stale & _CHANGED_LEGEND)
         return self.window.last      # (the window shown last, drawn again the same)
 
     _legends = None     # the Legends whose entries were found to be the window's
@@ -444,7 +446,7 @@ class CraftaxTask(GlyphTask):
             if legends.entries != kernel_view.ENTRIES:
                 return None
             self._legends = legends
-        return self.window.glyph_bits()
+        return self.window.bits
 
     def _hud(self) -> str:
         tally, goal = self.tally, self._goal

@@ -97,7 +97,7 @@ def win_survive(p):
 
 
 def win_night_horde(p):
-    p.skirmish(None, 4, rest_below=4, rest_to=4, until=lambda: p.task.tally.counts["turn"] >= 150)
+    p.skirmish(None, 4, rest_below=4, rest_to=4, until=lambda: p.task.tally.value("turn") >= 150)
     p.survive(200, keep_away=True)
 
 
@@ -186,7 +186,7 @@ def die(p, limit: int = 600) -> float:
     for _ in range(limit):
         if p.done:
             break
-        before, turn = p.total, p.task.tally.counts["turn"]
+        before, turn = p.total, p.task.tally.value("turn")
         monsters = [m for m in live_mobs(p.state) if m.kind > 0]
         if monsters:
             m = min(monsters, key=lambda m: abs(m.cell[0] - p.pos[0]) + abs(m.cell[1] - p.pos[1]))
@@ -194,7 +194,7 @@ def die(p, limit: int = 600) -> float:
             in_line = m.cell[0] == p.pos[0] or m.cell[1] == p.pos[1]
             if not (m.kind == 2 and in_line and near <= 5):
                 p.go([m.cell], limit=1)
-        if p.task.tally.counts["turn"] == turn:
+        if p.task.tally.value("turn") == turn:
             p.act(A.NOOP)
         last = p.total - before
     return last
