@@ -21,8 +21,8 @@ task's ``turn`` and ``night``); and it draws the window of the state it leaves (
 the legend's bits), so that a task's step is one call.
 
 That call takes one argument, the packed state's ``arena`` (``packed``: every array is a view of
-it, and the step makes the same views): each array argument would cost the call an allocation
-and about 0.1 us. It is made through the entry point for the arena's type (``entry``): numba's
+it, and the step makes the same views, as plain pointers into it: ``_at``): each array argument
+would cost the call an allocation and about 0.1 us. It is made through the entry point for the arena's type (``entry``): numba's
 dispatcher works out the types of a call's arguments every time, which costs more than the step.
 """
 
@@ -31,7 +31,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit, typeof
+from numba import carray, njit, typeof, types
+from numba.extending import intrinsic
 
 from . import kernel_mobs, kernel_rules, kernel_view
 from .packed import (ACH, ALIVE, ARRAYS, BOOKS, CLASS_SLOTS, COL, DRAW_AT, DRAWS_RESERVE, DRINK,
@@ -117,23 +118,39 @@ def _free(ints, mobs):
     return bits
 
 
-# the arena's views (``packed.ARRAYS``) as the compiled step makes them: (first byte, end, shape)
-_SPAN = {name: (*SPANS[name], shape) for name, _, shape in ARRAYS}
-_MAP0, _MAP1, _MAP_SHAPE = _SPAN["map"]
-_ITEM0, _ITEM1, _ = _SPAN["item_map"]
-_LIGHT0, _LIGHT1, _ = _SPAN["light_map"]
-_MOB0, _MOB1, _ = _SPAN["mob_map"]
-_INTS0, _INTS1, _ = _SPAN["ints"]
-_FLOATS0, _FLOATS1, _ = _SPAN["floats"]
-_MOBS0, _MOBS1, _MOBS_SHAPE = _SPAN["mobs"]
-_HEALTH0, _HEALTH1, _HEALTH_SHAPE = _SPAN["health"]
-_KILLS0, _KILLS1, _KILLS_SHAPE = _SPAN["kills"]
-_SETTINGS0, _SETTINGS1, _ = _SPAN["settings"]
-_DRAWS0, _DRAWS1, _ = _SPAN["draws"]
-_CODES0, _CODES1, _CODES_SHAPE = _SPAN["codes"]
-_LINES0, _LINES1, _ = _SPAN["lines"]
-_WORDS0, _WORDS1, _ = _SPAN["words"]
-_BEFORE0, _BEFORE1, _ = _SPAN["before"]
+# the arena's views (``packed.ARRAYS``) as the compiled step makes them: (first byte, shape)
+_SPAN = {name: (SPANS[name][0], shape) for name, _, shape in ARRAYS}
+_MAP0, _MAP_SHAPE = _SPAN["map"]
+_ITEM0, _ = _SPAN["item_map"]
+_LIGHT0, _ = _SPAN["light_map"]
+_MOB0, _ = _SPAN["mob_map"]
+_INTS0, _INTS_SHAPE = _SPAN["ints"]
+_FLOATS0, _FLOATS_SHAPE = _SPAN["floats"]
+_MOBS0, _MOBS_SHAPE = _SPAN["mobs"]
+_HEALTH0, _HEALTH_SHAPE = _SPAN["health"]
+_KILLS0, _KILLS_SHAPE = _SPAN["kills"]
+_SETTINGS0, _SETTINGS_SHAPE = _SPAN["settings"]
+_DRAWS0, _DRAWS_SHAPE = _SPAN["draws"]
+_CODES0, _CODES_SHAPE = _SPAN["codes"]
+_LINES0, _LINES_SHAPE = _SPAN["lines"]
+_WORDS0, _WORDS_SHAPE = _SPAN["words"]
+_BEFORE0, _ = _SPAN["before"]
+assert all(start % 8 == 0 for start, _ in _SPAN.values())    # (every view aligned)
+
+
+@intrinsic
+def _at(typingctx, arena, offset, dtype):
+    """A pointer to ``dtype`` values at byte ``offset`` of ``arena`` (uint8, C): with
+    ``numba.carray`` it makes a view of the arena that, unlike ``arena[a:b].view(...)``, is not
+    reference-counted (the step's fifteen views cost it about 1 us that way; ``arena``, the
+    step's argument, outlives them)."""
+    sig = types.CPointer(dtype.dtype)(arena, offset, dtype)
+
+    def codegen(context, builder, signature, args):
+        data = context.make_array(signature.args[0])(context, builder, args[0]).data
+        return builder.bitcast(builder.gep(data, [args[1]]),
+                               context.get_value_type(signature.return_type))
+    return sig, codegen
 assert [name for name, _, _ in ARRAYS] == ["map", "item_map", "light_map", "mob_map", "ints",
                                            "floats", "mobs", "health", "kills", "settings",
                                            "draws", "codes", "lines", "words", "before"]
@@ -141,21 +158,21 @@ assert [name for name, _, _ in ARRAYS] == ["map", "item_map", "light_map", "mob_
 
 @njit(cache=True)
 def _step(arena, action):
-    map = arena[_MAP0:_MAP1].view(np.int32).reshape(_MAP_SHAPE)
-    item_map = arena[_ITEM0:_ITEM1].view(np.int32).reshape(_MAP_SHAPE)
-    light_map = arena[_LIGHT0:_LIGHT1].view(np.float32).reshape(_MAP_SHAPE)
-    mob_map = arena[_MOB0:_MOB1].view(np.bool_).reshape(_MAP_SHAPE)
-    ints = arena[_INTS0:_INTS1].view(np.int64)
-    floats = arena[_FLOATS0:_FLOATS1].view(np.float64)
-    mobs = arena[_MOBS0:_MOBS1].view(np.int64).reshape(_MOBS_SHAPE)
-    health = arena[_HEALTH0:_HEALTH1].view(np.float64).reshape(_HEALTH_SHAPE)
-    kills = arena[_KILLS0:_KILLS1].view(np.int64).reshape(_KILLS_SHAPE)
-    settings = arena[_SETTINGS0:_SETTINGS1].view(np.int64)
-    draws = arena[_DRAWS0:_DRAWS1].view(np.float64)
-    codes = arena[_CODES0:_CODES1].reshape(_CODES_SHAPE)
-    lines = arena[_LINES0:_LINES1]
-    words = arena[_WORDS0:_WORDS1].view(np.uint64)
-    before = arena[_BEFORE0:_BEFORE1].view(np.int64)
+    map = carray(_at(arena, _MAP0, np.int32), _MAP_SHAPE)
+    item_map = carray(_at(arena, _ITEM0, np.int32), _MAP_SHAPE)
+    light_map = carray(_at(arena, _LIGHT0, np.float32), _MAP_SHAPE)
+    mob_map = carray(_at(arena, _MOB0, np.bool_), _MAP_SHAPE)
+    ints = carray(_at(arena, _INTS0, np.int64), _INTS_SHAPE)
+    floats = carray(_at(arena, _FLOATS0, np.float64), _FLOATS_SHAPE)
+    mobs = carray(_at(arena, _MOBS0, np.int64), _MOBS_SHAPE)
+    health = carray(_at(arena, _HEALTH0, np.float64), _HEALTH_SHAPE)
+    kills = carray(_at(arena, _KILLS0, np.int64), _KILLS_SHAPE)
+    settings = carray(_at(arena, _SETTINGS0, np.int64), _SETTINGS_SHAPE)
+    draws = carray(_at(arena, _DRAWS0, np.float64), _DRAWS_SHAPE)
+    codes = carray(_at(arena, _CODES0, np.uint8), _CODES_SHAPE)
+    lines = carray(_at(arena, _LINES0, np.uint8), _LINES_SHAPE)
+    words = carray(_at(arena, _WORDS0, np.uint64), _WORDS_SHAPE)
+    before = carray(_at(arena, _BEFORE0, np.int64), _INTS_SHAPE)
 
     before[:] = ints
     kills_before = kills.sum()
