@@ -2,7 +2,7 @@
 
 A scenario is data (``scenarios.Scenario``): how the world is made and edited, the start kit, the
 engine switches, the objective and the reward terms. The task builds the world at reset, steps
-the engine (``rules.step``), keeps the ``Tally`` of what happened (``Tally.counters``: items got
+the compiled engine (``kernel``: ``rules.step`` on the packed state, one call a step), keeps the ``Tally`` of what happened (``Tally.counters``: items got
 and held, kills by mob, blocks placed, floors reached, achievements ...), pays the scenario's
 reward terms from it and ends the episode on the scenario's success test or on death. Nothing here
 changes a rule of the game: upstream's native reward is not paid; the scenario's terms are.
